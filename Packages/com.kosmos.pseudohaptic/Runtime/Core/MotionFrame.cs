@@ -1,0 +1,54 @@
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// What one step knows, passed by reference through the stages: input → estimator → effects → object.
+    /// Lives on the stack; nothing here is kept between frames (that is <see cref="HoldState"/>).
+    /// </summary>
+    public struct MotionFrame
+    {
+        /// <summary>Frame time, s, sanitised: finite and ≥ 0.</summary>
+        public double Dt;
+
+        /// <summary>The pose's height, m; meaningful only when <see cref="Usable"/>.</summary>
+        public double PoseY;
+        public double PoseTime;
+        public bool IsHighConfidence;
+
+        /// <summary>The pose can be followed this frame (tracked, finite; input effects may clear it).</summary>
+        public bool Usable;
+
+        /// <summary>Set by input effects to make the estimator re-anchor on this pose instead of following it.</summary>
+        public bool ForceReanchor;
+
+        /// <summary>Set by the estimator when it re-anchored this frame (the hand moved, the object did not).</summary>
+        public bool Reanchored;
+
+        /// <summary>The hand's height as followed, before and after this frame, m.</summary>
+        public double HandBefore;
+        public double HandAfter;
+
+        /// <summary>Hand displacement to follow this frame, m (after the hand-motion effects).</summary>
+        public double HandDelta;
+
+        /// <summary>The hand's displacement this frame before any effect, m: its direction is the hand's.</summary>
+        public double RawHandDelta;
+
+        /// <summary>Hand speed measured against the pose's own timestamps, m/s (0 when no new pose).</summary>
+        public double HandSpeed;
+
+        /// <summary>The time the displacement took, s (one pose interval, or the gap it bridges); 0 when none.</summary>
+        public double MotionInterval;
+
+        /// <summary>The object's height before this frame, m.</summary>
+        public double ObjectY;
+
+        /// <summary>The object's proposed displacement this frame, m.</summary>
+        public double ObjectDelta;
+
+        /// <summary>The object's height after the speed limit, m: what position effects constrain.</summary>
+        public double NewObjectY;
+
+        /// <summary>hand − object before this frame's motion, m: positive when the object is below the hand.</summary>
+        public double OffsetBefore => HandBefore - ObjectY;
+    }
+}

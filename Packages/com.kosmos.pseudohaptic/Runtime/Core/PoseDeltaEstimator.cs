@@ -1,0 +1,112 @@
+using System;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// The default estimator of the hand's vertical motion: it follows each new pose's exact displacement in
+    /// the frame the pose arrives and measures speed against the pose's own timestamps (design note §6).
+    /// Repeated poses (30 Hz tracking under 72–120 Hz frames) move nothing and never read as a stop
+    /// followed by a spike. Total displacement is conserved, so any frame clock ends in the same place (P7).
+    /// It re-anchors (follows the hand from where it is now, without moving the object) after a loss or a
+    /// hitch longer than <see cref="SolverLimits.MaxCatchUpGap"/>, on a pose clock that steps back, and on a
+    /// pose that would need an impossible hand speed (P8).
+    /// </summary>
+    public struct PoseDeltaEstimator
+    {
+        double _poseY;
+        double _poseTime;       // NaN when the source gives no pose timestamps
+        double _sincePose;      // frame time since the last new pose, s
+        double _lostFor;        // frame time since tracking was lost, s
+        double _speed;          // the last pose-to-pose speed, m/s
+        bool _hasPose;
+        bool _lost;
+
+        /// <summary>A hand that has shown no new pose for this long is taken as still, s.</summary>
+        const double StillAfter = 0.1;
+
+        /// <summary>The hand's height as followed, m.</summary>
+        public double HandY => _poseY;
+
+        public bool HasPose => _hasPose;
+
+        /// <summary>The hand's last pose-to-pose speed, m/s, kept over repeated poses; 0 once no new pose came for 0.1 s.</summary>
+        public double Speed => _sincePose > StillAfter || _lost ? 0 : _speed;
+
+        public void Reset(double handY, double poseTime)
+        {
+            _hasPose = IsFinite(handY);
+            _poseY = _hasPose ? handY : 0;
+            _poseTime = poseTime;
+            _sincePose = _lostFor = _speed = 0;
+            _lost = !_hasPose;
+        }
+
+        /// <summary>Fills HandBefore/After, RawHandDelta, HandDelta, HandSpeed, MotionInterval and Reanchored.</summary>
+        public void Update(ref MotionFrame f, SolverLimits limits)
+        {
+            _sincePose += f.Dt;
+            f.HandBefore = _poseY;
+            f.HandDelta = f.RawHandDelta = f.HandSpeed = f.MotionInterval = 0;
+
+            if (!f.Usable)
+            {
+                _lost = true;
+                _lostFor += f.Dt;
+                f.HandAfter = _poseY;
+                return;
+            }
+
+            bool hasTime = IsFinite(f.PoseTime);
+            bool hadTime = IsFinite(_poseTime);
+            bool newPose = hasTime ? !(hadTime && f.PoseTime == _poseTime) : f.PoseY != _poseY;
+            bool clockBack = hasTime && hadTime && f.PoseTime < _poseTime;
+            bool gap = f.Dt > limits.MaxCatchUpGap || (_lost && _lostFor > limits.MaxCatchUpGap);
+
+            if (!_hasPose || f.ForceReanchor || clockBack || gap)
+            {
+                Reanchor(ref f);
+                return;
+            }
+            if (!newPose)
+            {
+                _lost = false;
+                _lostFor = 0;
+                f.HandAfter = _poseY;
+                return;
+            }
+
+            double interval = hasTime && hadTime ? f.PoseTime - _poseTime : _sincePose;
+            if (interval < 1e-4) interval = Math.Max(_sincePose, 1e-4);
+            double delta = f.PoseY - _poseY;
+            if (Math.Abs(delta) > limits.MaxHandSpeed * Math.Min(interval, SolverLimits.JumpWindow))
+            {
+                Reanchor(ref f);
+                return;
+            }
+
+            f.RawHandDelta = f.HandDelta = delta;
+            f.HandSpeed = _speed = delta / interval;
+            f.MotionInterval = interval;
+            Accept(ref f);
+        }
+
+        void Reanchor(ref MotionFrame f)
+        {
+            f.Reanchored = true;
+            _speed = 0;
+            Accept(ref f);
+        }
+
+        void Accept(ref MotionFrame f)
+        {
+            _poseY = f.PoseY;
+            _poseTime = f.PoseTime;
+            _sincePose = _lostFor = 0;
+            _hasPose = true;
+            _lost = false;
+            f.HandAfter = _poseY;
+        }
+
+        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
+    }
+}

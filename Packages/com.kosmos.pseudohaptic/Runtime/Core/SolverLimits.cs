@@ -1,0 +1,43 @@
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// Safety limits that hold in every profile: they keep bad frame data (lost tracking, glitches, hitches)
+    /// from ever becoming a jump, and cap the gain of very light objects (property P3).
+    /// </summary>
+    public sealed class SolverLimits
+    {
+        public static readonly SolverLimits Default = new SolverLimits();
+
+        /// <summary>Largest gain on the hand's motion. Eq. 4 alone would move a 1 g object 45× as far as the hand.</summary>
+        public double MaxGain { get; }
+
+        /// <summary>The object never moves faster than this, m/s; faster motion is carried over to the next frames.</summary>
+        public double MaxObjectSpeed { get; }
+
+        /// <summary>A frame counts for at most this long when the speed limit is applied, s, so a hitch is never a jump.</summary>
+        public double MaxFrameTime { get; }
+
+        /// <summary>A pose that implies a faster hand is a tracking glitch: the solver re-anchors instead of following.</summary>
+        public double MaxHandSpeed { get; }
+
+        /// <summary>After a loss or a hitch up to this long the object catches up with the hand; after a longer one it re-anchors, s.</summary>
+        public double MaxCatchUpGap { get; }
+
+        /// <summary>Displacement carried over by the speed limit is bounded by this, m.</summary>
+        public double MaxCarry { get; }
+
+        public SolverLimits(double maxGain = 3.0, double maxObjectSpeed = 4.0, double maxFrameTime = 0.025,
+            double maxHandSpeed = 6.0, double maxCatchUpGap = 0.25, double maxCarry = 0.25)
+        {
+            MaxGain = ConfigurationGuard.InRange(maxGain, 1.0, 100.0, nameof(maxGain));
+            MaxObjectSpeed = ConfigurationGuard.Positive(maxObjectSpeed, nameof(maxObjectSpeed));
+            MaxFrameTime = ConfigurationGuard.Positive(maxFrameTime, nameof(maxFrameTime));
+            MaxHandSpeed = ConfigurationGuard.Positive(maxHandSpeed, nameof(maxHandSpeed));
+            MaxCatchUpGap = ConfigurationGuard.Positive(maxCatchUpGap, nameof(maxCatchUpGap));
+            MaxCarry = ConfigurationGuard.NonNegative(maxCarry, nameof(maxCarry));
+        }
+
+        /// <summary>Pose-to-pose motion is judged over at most this window, s, so a long still spell does not license a teleport.</summary>
+        internal const double JumpWindow = 0.05;
+    }
+}

@@ -1,0 +1,143 @@
+using System;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// The pseudo-haptic weight solver of Son et al. 2022 for one held object: given the tracked hand each
+    /// frame, it returns the object's new height so that a heavier object lags behind the hand and a lighter
+    /// one leads it. Per frame: pose → input effects → estimator → hand-motion effects → gain → object-motion
+    /// effects → speed limit → position effects. Configuration validates and throws; <see cref="Step"/> never
+    /// throws, never allocates, and always returns a finite height.
+    /// </summary>
+    public sealed class WeightSolver
+    {
+        /// <summary>v_std used when the user has not calibrated, m/s (ALGORITHM.md says why).</summary>
+        public const double DefaultStandardSpeed = 0.5;
+        public const double MinStandardSpeed = 0.05;
+        public const double MaxStandardSpeed = 5.0;
+
+        /// <summary>Hand heights beyond this magnitude, m, are treated as garbage, like NaN.</summary>
+        public const double MaxCoordinate = 1e5;
+
+        HoldState _state;
+        SolverConstants _constants;
+
+        public WeightModel Model { get; private set; }
+        public WeightProfile Profile { get; private set; }
+        public double StandardSpeed => _constants.StandardSpeed;
+        public double Gain => _constants.Gain;
+        public SolverConstants Constants => _constants;
+
+        /// <summary>A copy of the hold's state.</summary>
+        public HoldState State => _state;
+        public bool IsHolding => _state.IsHolding;
+        public double ObjectY => _state.ObjectY;
+
+        /// <summary>The hand height the solver follows, m.</summary>
+        public double HandY => _state.Estimator.HandY;
+
+        /// <summary>hand − object, m: positive when the object hangs below the hand.</summary>
+        public double Offset => _state.Offset;
+
+        public WeightSolver(WeightModel model, WeightProfile profile = null, double standardSpeed = DefaultStandardSpeed)
+        {
+            Configure(model, profile ?? NamedProfiles.Paper, standardSpeed);
+        }
+
+        /// <summary>Changes object, profile or user; allowed during a hold (the object continues from where it is).</summary>
+        public void Configure(WeightModel model, WeightProfile profile, double standardSpeed)
+        {
+            if (model == null) throw new ArgumentNullException(nameof(model));
+            if (profile == null) throw new ArgumentNullException(nameof(profile));
+            ConfigurationGuard.InRange(standardSpeed, MinStandardSpeed, MaxStandardSpeed, nameof(standardSpeed));
+            var limits = profile.Limits;
+            double gain = model.Gain(profile.Has<WeightGain>(), profile.Has<ExperimentalBlend>(), limits.MaxGain);
+            var cap = profile.Find<SpeedCap>();
+            var deadband = profile.Find<MotionDeadband>();
+            Model = model;
+            Profile = profile;
+            _constants = new SolverConstants(gain, standardSpeed,
+                cap != null ? cap.CapFor(model, standardSpeed) : double.PositiveInfinity,
+                deadband != null ? deadband.WidthFor(standardSpeed) : 0, limits);
+        }
+
+        /// <summary>Starts a hold: the hand is at <paramref name="handY"/> (may be NaN if not yet tracked), the object at <paramref name="objectY"/>.</summary>
+        public void BeginHold(double handY, double objectY, double poseTime = double.NaN)
+        {
+            ConfigurationGuard.InRange(objectY, -MaxCoordinate, MaxCoordinate, nameof(objectY));
+            bool handOk = !double.IsNaN(handY) && Math.Abs(handY) < MaxCoordinate;
+            _state = default;
+            _state.IsHolding = true;
+            _state.ObjectY = objectY;
+            _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime);
+            ResetEffects(handOk ? handY : objectY);
+        }
+
+        /// <summary>Ends the hold; further steps return the object's last height.</summary>
+        public void EndHold() => _state.IsHolding = false;
+
+        /// <summary>Advances one rendered frame of <paramref name="dt"/> seconds and returns the object's new height.</summary>
+        public double Step(in HandSample sample, double dt)
+        {
+            if (!_state.IsHolding) return _state.ObjectY;
+            var limits = _constants.Limits;
+
+            // Bad frame times are absorbed: NaN or negative count as no time, infinity as a very long hitch.
+            if (double.IsPositiveInfinity(dt)) dt = 3600;
+            else if (!(dt > 0)) dt = 0;
+            _state.Time += dt;
+
+            var f = new MotionFrame
+            {
+                Dt = dt,
+                PoseY = sample.Y,
+                PoseTime = IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
+                IsHighConfidence = sample.IsHighConfidence,
+                Usable = sample.IsTracked && !double.IsNaN(sample.Y) && Math.Abs(sample.Y) < MaxCoordinate,
+                ObjectY = _state.ObjectY,
+            };
+
+            var effects = Profile.InputEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            _state.Estimator.Update(ref f, limits);
+            if (f.Reanchored)
+            {
+                _state.Carry = 0;
+                ResetEffects(f.HandAfter);
+            }
+
+            effects = Profile.HandEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            f.ObjectDelta = _constants.Gain * f.HandDelta;
+
+            effects = Profile.ObjectEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            // Speed limit: motion beyond it is carried to the next frames, never dropped as a jump.
+            double carry = _state.Carry + f.ObjectDelta;
+            double maxStep = limits.MaxObjectSpeed * (dt < limits.MaxFrameTime ? dt : limits.MaxFrameTime);
+            double step = carry > maxStep ? maxStep : (carry < -maxStep ? -maxStep : carry);
+            carry -= step;
+            _state.Carry = carry > limits.MaxCarry ? limits.MaxCarry : (carry < -limits.MaxCarry ? -limits.MaxCarry : carry);
+            f.NewObjectY = _state.ObjectY + step;
+
+            effects = Profile.PositionEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            if (IsFinite(f.NewObjectY)) _state.ObjectY = f.NewObjectY;
+            else _state.Carry = 0; // unreachable with the built-in effects; a custom one must not poison the transform
+            if (!IsFinite(_state.Carry)) _state.Carry = 0;
+            return _state.ObjectY;
+        }
+
+        void ResetEffects(double handY)
+        {
+            var all = Profile._all;
+            for (int i = 0; i < all.Length; i++) all[i].Reset(ref _state, handY);
+        }
+
+        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
+    }
+}
