@@ -26,6 +26,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
 
+        /// <summary><see cref="OffsetCorrection"/>: the correction's current strength, 0 to 1.</summary>
+        public double CorrectionLevel;
+
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => Estimator.HandY - ObjectY;
     }

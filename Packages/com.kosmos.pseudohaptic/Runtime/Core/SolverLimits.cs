@@ -14,7 +14,8 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The object never moves faster than this, m/s; faster motion is carried over to the next frames.</summary>
         public double MaxObjectSpeed { get; }
 
-        /// <summary>A frame counts for at most this long when the speed limit is applied, s, so a hitch is never a jump.</summary>
+        /// <summary>A frame (or the pose interval it brings) counts for at most this long when the speed limit is applied, s,
+        /// so no step moves the object more than MaxObjectSpeed × MaxFrameTime (10 cm by default), whatever the hitch.</summary>
         public double MaxFrameTime { get; }
 
         /// <summary>A pose that implies a faster hand is a tracking glitch: the solver re-anchors instead of following.</summary>

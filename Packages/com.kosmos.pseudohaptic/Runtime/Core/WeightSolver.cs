@@ -68,7 +68,8 @@ namespace Kosmos.PseudoHaptic
             bool handOk = !double.IsNaN(handY) && Math.Abs(handY) < MaxCoordinate;
             _state = default;
             _state.IsHolding = true;
-            _state.ObjectY = objectY;
+            var floor = Profile.Find<FloorClamp>();
+            _state.ObjectY = floor != null && objectY < floor.Floor ? floor.Floor : objectY;
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime);
             ResetEffects(handOk ? handY : objectY);
         }
@@ -117,7 +118,9 @@ namespace Kosmos.PseudoHaptic
 
             // Speed limit: motion beyond it is carried to the next frames, never dropped as a jump.
             double carry = _state.Carry + f.ObjectDelta;
-            double maxStep = limits.MaxObjectSpeed * (dt < limits.MaxFrameTime ? dt : limits.MaxFrameTime);
+            // Judged over the pose's interval when a pose arrived, so a 30 Hz pose under 120 Hz frames is not a spike.
+            double window = f.MotionInterval > dt ? f.MotionInterval : dt;
+            double maxStep = limits.MaxObjectSpeed * (window < limits.MaxFrameTime ? window : limits.MaxFrameTime);
             double step = carry > maxStep ? maxStep : (carry < -maxStep ? -maxStep : carry);
             carry -= step;
             _state.Carry = carry > limits.MaxCarry ? limits.MaxCarry : (carry < -limits.MaxCarry ? -limits.MaxCarry : carry);

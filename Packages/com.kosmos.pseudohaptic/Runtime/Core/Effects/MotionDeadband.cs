@@ -15,7 +15,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Lag the deadband may cost at the user's standard speed, s.</summary>
         public double LagTime { get; }
 
-        public MotionDeadband(double lagTime = 0.008)
+        public MotionDeadband(double lagTime = 0.006)
         {
             LagTime = ConfigurationGuard.InRange(lagTime, 0, 0.1, nameof(lagTime));
         }

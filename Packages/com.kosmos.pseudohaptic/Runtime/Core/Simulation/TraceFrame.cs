@@ -1,0 +1,27 @@
+namespace Kosmos.PseudoHaptic.Simulation
+{
+    /// <summary>One rendered frame of a hand trace: the columns of the replay file format.</summary>
+    public struct TraceFrame
+    {
+        /// <summary>Frame time, s.</summary>
+        public double Time;
+
+        /// <summary>Tracked hand height, m (NaN or infinite when garbage).</summary>
+        public double HandY;
+
+        public bool Tracked;
+
+        /// <summary>When the pose was sampled, s; NaN when unknown.</summary>
+        public double PoseTime;
+
+        public TraceFrame(double time, double handY, bool tracked = true, double poseTime = double.NaN)
+        {
+            Time = time;
+            HandY = handY;
+            Tracked = tracked;
+            PoseTime = poseTime;
+        }
+
+        public HandSample ToSample() => new HandSample(HandY, Tracked, Tracked, PoseTime);
+    }
+}

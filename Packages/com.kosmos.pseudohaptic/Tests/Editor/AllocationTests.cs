@@ -1,0 +1,39 @@
+using System;
+using NUnit.Framework;
+#if UNITY_5_3_OR_NEWER
+using UnityEngine.TestTools.Constraints;
+using Is = UnityEngine.TestTools.Constraints.Is;
+#endif
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>P10: steady-state updates allocate nothing.</summary>
+    public class AllocationTests
+    {
+        static void Steps(WeightSolver solver, int count)
+        {
+            for (int i = 0; i < count; i++)
+            {
+                double t = i / 90.0, poseT = Math.Floor(t * 30) / 30;
+                var sample = i % 97 == 0 ? HandSample.Lost : new HandSample(1 + 0.2 * Math.Sin(poseT), true, i % 13 != 0, poseT);
+                solver.Step(sample, 1 / 90.0);
+            }
+        }
+
+        [TestCase("paper"), TestCase("paper-experiment"), TestCase("gain")]
+        public void StepAllocatesNothing(string profile)
+        {
+            var solver = new WeightSolver(WeightModel.FromMass(0.7), NamedProfiles.Get(profile).With(new OffsetRelaxation(), "all"));
+            solver.BeginHold(1, 1, 0);
+            Steps(solver, 1000); // warm up: JIT, static initialisers
+#if UNITY_5_3_OR_NEWER
+            Assert.That(() => Steps(solver, 10000), Is.Not.AllocatingGCMemory());
+#else
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            Steps(solver, 100000);
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(allocated, NUnit.Framework.Is.EqualTo(0), "bytes allocated over 100 000 steps");
+#endif
+        }
+    }
+}
