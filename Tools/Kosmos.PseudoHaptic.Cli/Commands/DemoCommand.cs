@@ -1,0 +1,164 @@
+using Kosmos.PseudoHaptic.Cli.Plotting;
+using Kosmos.PseudoHaptic.Cli.Traces;
+using Kosmos.PseudoHaptic.Simulation;
+
+namespace Kosmos.PseudoHaptic.Cli.Commands;
+
+/// <summary>
+/// <c>pseudohaptic demo [--out DIR] [--trace FILE]</c>: the paper's scenes without a headset. Calibrates a
+/// standard speed from synthetic golf-ball lifts, then lifts Experiment 1's boxes and Experiment 2's water
+/// bottles with a simulated Quest 2 hand (30 Hz poses, 45 ms late, 1 mm jitter, 90 Hz frames); with
+/// --trace, also replays a recorded hand degraded the same way. Writes a CSV per run and a PNG per scene,
+/// and prints a summary.
+/// </summary>
+public static class DemoCommand
+{
+    public const string DefaultOut = "out/demo";
+
+    sealed record Item(string Name, double MassKg, string Note);
+    sealed record Scene(string Slug, string Title, WeightProfile Profile, IReadOnlyList<Item> Items, TraceFrame[] Frames);
+    sealed record Result(Scene Scene, Item Item, double Gain, double MaxOffset, double EndOffset, double[] ObjectY);
+
+    public static int Run(string[] args)
+    {
+        var o = new Options(args, "--out", "--trace");
+        string outDir = o.Get("--out") ?? DefaultOut;
+        string? tracePath = o.Get("--trace");
+        List<TraceFrame>? recorded = tracePath != null ? TraceCsvReader.ReadAll(tracePath) : null;
+        Directory.CreateDirectory(outDir);
+
+        double standardSpeed = Calibrate();
+        var scenes = Scenes(recorded, tracePath);
+        int total = scenes.Sum(s => s.Items.Count), done = 0;
+        var results = new List<Result>();
+        foreach (var scene in scenes)
+        {
+            string dir = Path.Combine(outDir, scene.Slug);
+            Directory.CreateDirectory(dir);
+            var sceneResults = new List<Result>();
+            foreach (var item in scene.Items)
+            {
+                Console.Error.WriteLine($"[{++done}/{total}] {scene.Title}: {item.Name}");
+                var solver = new WeightSolver(WeightModel.FromMass(item.MassKg), scene.Profile, standardSpeed);
+                var y = TraceReplay.Run(solver, scene.Frames);
+                var result = Measure(scene, item, solver.Gain, y);
+                sceneResults.Add(result);
+                WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y);
+            }
+            Plot(Path.Combine(outDir, scene.Slug + ".png"), scene, sceneResults);
+            results.AddRange(sceneResults);
+        }
+        PrintSummary(results, standardSpeed, outDir);
+        return 0;
+    }
+
+    /// <summary>Five golf-ball lifts of a simulated user (30 Hz poses, 1.5 mm jitter) through the core's calibration.</summary>
+    static double Calibrate()
+    {
+        Console.Error.WriteLine("Calibration: five lifts of a golf ball");
+        var times = new List<double[]>();
+        var heights = new List<double[]>();
+        double[] rises = { 0.32, 0.36, 0.30, 0.38, 0.34 }, durations = { 0.70, 0.78, 0.66, 0.80, 0.74 };
+        for (int k = 0; k < rises.Length; k++)
+        {
+            var path = HandPath.StartAt(0.85).Hold(0.5).MoveTo(0.85 + rises[k], durations[k]).Hold(0.5);
+            var frames = new HeadsetSimulator { FrameRate = 30, PoseRate = 30, JitterSd = 0.0015, Seed = 100 + k }.Render(path);
+            times.Add(frames.Select(f => f.Time).ToArray());
+            heights.Add(frames.Select(f => f.HandY).ToArray());
+            var lift = StandardSpeedCalibration.MeasureLift(times[k], heights[k]);
+            Console.Error.WriteLine($"  lift {k + 1}: {lift}");
+        }
+        var result = StandardSpeedCalibration.FromLifts(times, heights);
+        Console.Error.WriteLine($"  {result}");
+        return result.IsAccepted ? result.StandardSpeed : WeightSolver.DefaultStandardSpeed;
+    }
+
+    static List<Scene> Scenes(List<TraceFrame>? recorded, string? tracePath)
+    {
+        var headset = new HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.001, Seed = 2022 };
+        // Lift 0.35 m, hold, put it back down: the same hand for every object, so only the weight differs.
+        var liftAndPlace = headset.Render(HandPath.StartAt(0.80).Hold(0.5).MoveTo(1.15, 0.9).Hold(1.0).MoveTo(0.80, 0.9).Hold(0.7));
+        var highLift = headset.Render(HandPath.StartAt(0.75).Hold(0.5).MoveTo(1.45, 1.4).Hold(1.5));
+
+        // Experiment 1: three boxes of the same size (20 cm cube, 8 L), different densities; B heaviest.
+        const double boxVolume = 0.2 * 0.2 * 0.2;
+        var boxes = new List<Item>
+        {
+            new("golf ball", PhysicalConstants.StandardMassKg, "the standard weight"),
+            new("box A", 75 * boxVolume, "75 kg/m³"),
+            new("box B", 250 * boxVolume, "250 kg/m³"),
+            new("box C", 125 * boxVolume, "125 kg/m³"),
+        };
+        // Experiment 2: water bottles by size (water plus the bottle).
+        var bottles = new List<Item>
+        {
+            new("bottle 0.33 L", 0.330 + 0.015, "330 ml"),
+            new("bottle 0.5 L", 0.500 + 0.020, "500 ml"),
+            new("bottle 1 L", 1.000 + 0.035, "1 l"),
+            new("bottle 2 L", 2.000 + 0.045, "2 l"),
+        };
+        var scenes = new List<Scene>
+        {
+            new("experiment-1-boxes", "Experiment 1: boxes A, B, C (paper-experiment)", NamedProfiles.PaperExperiment, boxes, liftAndPlace),
+            new("experiment-2-bottles", "Experiment 2: water bottles (paper-experiment)", NamedProfiles.PaperExperiment, bottles, liftAndPlace),
+            new("offset-correction", "A high lift with the offset correction (paper)", NamedProfiles.Paper,
+                new List<Item> { boxes[0], boxes[2], new("box B, 5 kg", 5, "625 kg/m³") }, highLift),
+        };
+        if (recorded != null)
+        {
+            var usable = recorded.Where(f => f.Tracked && double.IsFinite(f.HandY) && double.IsFinite(f.Time)).ToList();
+            var times = new List<double>();
+            var ys = new List<double>();
+            foreach (var f in usable)
+                if (times.Count == 0 || f.Time > times[^1]) { times.Add(f.Time); ys.Add(f.HandY); }
+            if (times.Count < 2) throw new CliException($"{tracePath}: fewer than two usable rows with increasing t");
+            var frames = new HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.0, Seed = 7 }
+                .Render(HandPath.FromSamples(times, ys));
+            scenes.Add(new("recorded-hand", $"Recorded hand ({Path.GetFileName(tracePath)}), as 30 Hz poses (paper)", NamedProfiles.Paper, boxes, frames));
+        }
+        return scenes;
+    }
+
+    static Result Measure(Scene scene, Item item, double gain, double[] y)
+    {
+        double max = 0, end = 0;
+        for (int i = 0; i < y.Length; i++)
+        {
+            if (!scene.Frames[i].Tracked || !double.IsFinite(scene.Frames[i].HandY)) continue;
+            double off = scene.Frames[i].HandY - y[i];
+            if (Math.Abs(off) > Math.Abs(max)) max = off;
+            end = off;
+        }
+        return new Result(scene, item, gain, max, end, y);
+    }
+
+    static void WriteCsv(string path, TraceFrame[] frames, double[] y) => AtomicFile.Write(path, w =>
+    {
+        w.WriteLine("t,hand_y,object_y,offset");
+        for (int i = 0; i < frames.Length; i++)
+            w.WriteLine($"{NumberText.Format(frames[i].Time)},{NumberText.Format(frames[i].HandY)},{NumberText.Format(y[i])},{NumberText.Format(frames[i].HandY - y[i])}");
+    });
+
+    static void Plot(string path, Scene scene, List<Result> results)
+    {
+        var chart = new LineChart(1000, 560) { Title = scene.Title, XLabel = "time (s)", YLabel = "height (m)" };
+        var t = scene.Frames.Select(f => f.Time).ToArray();
+        chart.AddLine(t, scene.Frames.Select(f => f.HandY).ToArray(), Rgb.Black, "hand (30 Hz poses)", dashed: true);
+        for (int i = 0; i < results.Count; i++)
+            chart.AddLine(t, results[i].ObjectY, Palette.Get(i), $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg");
+        chart.Save(path);
+    }
+
+    static void PrintSummary(List<Result> results, double standardSpeed, string outDir)
+    {
+        Console.WriteLine($"standard speed v_std = {NumberText.Fixed(standardSpeed, 3)} m/s (calibrated from five synthetic golf-ball lifts)");
+        Console.WriteLine();
+        Console.WriteLine($"{"scene",-22} {"object",-14} {"mass kg",8} {"gain",6} {"max offset m",13} {"end offset m",13}");
+        foreach (var r in results)
+            Console.WriteLine($"{r.Scene.Slug,-22} {r.Item.Name,-14} {NumberText.Fixed(r.Item.MassKg, 3),8} {NumberText.Fixed(r.Gain, 3),6} {NumberText.Fixed(r.MaxOffset, 3),13} {NumberText.Fixed(r.EndOffset, 3),13}");
+        Console.WriteLine();
+        Console.WriteLine($"offset = hand − object (positive: the object lags below the hand). CSV and PNG files in {Path.GetFullPath(outDir)}");
+    }
+
+    static string Slug(string name) => new string(name.ToLowerInvariant().Select(c => char.IsLetterOrDigit(c) || c == '.' ? c : '-').ToArray()).Trim('-');
+}

@@ -1,0 +1,31 @@
+using System.Globalization;
+
+namespace Kosmos.PseudoHaptic.Cli;
+
+/// <summary>Invariant-culture number parsing and formatting for the tool's CSV files.</summary>
+public static class NumberText
+{
+    /// <summary>Parses a decimal number, or NaN / Infinity / inf written in any case with an optional sign.</summary>
+    public static bool TryParse(ReadOnlySpan<char> text, out double value)
+    {
+        text = text.Trim();
+        if (double.TryParse(text, NumberStyles.Float, CultureInfo.InvariantCulture, out value)) return true;
+        var t = text;
+        bool negative = false;
+        if (t.Length > 0 && (t[0] == '+' || t[0] == '-')) { negative = t[0] == '-'; t = t[1..]; }
+        if (t.Equals("nan", StringComparison.OrdinalIgnoreCase)) { value = double.NaN; return true; }
+        if (t.Equals("inf", StringComparison.OrdinalIgnoreCase) || t.Equals("infinity", StringComparison.OrdinalIgnoreCase))
+        {
+            value = negative ? double.NegativeInfinity : double.PositiveInfinity;
+            return true;
+        }
+        value = 0;
+        return false;
+    }
+
+    /// <summary>Round-trippable, invariant; NaN and ±Infinity spelled as .NET spells them.</summary>
+    public static string Format(double v) => v.ToString("R", CultureInfo.InvariantCulture);
+
+    /// <summary>Fixed decimals for tables.</summary>
+    public static string Fixed(double v, int decimals) => v.ToString("F" + decimals, CultureInfo.InvariantCulture);
+}

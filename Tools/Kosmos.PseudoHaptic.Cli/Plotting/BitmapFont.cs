@@ -1,0 +1,216 @@
+namespace Kosmos.PseudoHaptic.Cli.Plotting;
+
+/// <summary>
+/// A built-in 5x7 bitmap font for printable ASCII (32..126), drawn at an integer scale. Each glyph is five columns;
+/// bit 0 of a column is the top row, bit 6 the baseline row and bit 7 the one row of descender (g, j, p, q, y, comma,
+/// underscore), so a line of text is <see cref="GlyphHeight"/> = 8 rows. A few common non-ASCII characters are drawn
+/// as their nearest ASCII look-alike (minus sign and dashes as '-', '×' as 'x', 'µ' as 'u', ...); anything else as '?'.
+/// </summary>
+public static class BitmapFont
+{
+    /// <summary>Glyph width in font pixels.</summary>
+    public const int GlyphWidth = 5;
+
+    /// <summary>Height of a capital or digit in font pixels (rows 0..6).</summary>
+    public const int CapHeight = 7;
+
+    /// <summary>Height of a line of text in font pixels: the capital height plus one descender row.</summary>
+    public const int GlyphHeight = CapHeight + 1;
+
+    /// <summary>Horizontal pen advance per character in font pixels (glyph plus one pixel of spacing).</summary>
+    public const int Advance = GlyphWidth + 1;
+
+    private const char First = ' ';
+    private const char Last = '~';
+
+    private static readonly byte[] Columns =
+    {
+        0x00, 0x00, 0x00, 0x00, 0x00, // ' '
+        0x00, 0x00, 0x5F, 0x00, 0x00, // !
+        0x00, 0x07, 0x00, 0x07, 0x00, // "
+        0x14, 0x7F, 0x14, 0x7F, 0x14, // #
+        0x24, 0x2A, 0x7F, 0x2A, 0x12, // $
+        0x23, 0x13, 0x08, 0x64, 0x62, // %
+        0x36, 0x49, 0x55, 0x22, 0x50, // &
+        0x00, 0x00, 0x07, 0x00, 0x00, // '
+        0x00, 0x1C, 0x22, 0x41, 0x00, // (
+        0x00, 0x41, 0x22, 0x1C, 0x00, // )
+        0x14, 0x08, 0x3E, 0x08, 0x14, // *
+        0x08, 0x08, 0x3E, 0x08, 0x08, // +
+        0x00, 0xE0, 0x60, 0x00, 0x00, // ,
+        0x08, 0x08, 0x08, 0x08, 0x08, // -
+        0x00, 0x60, 0x60, 0x00, 0x00, // .
+        0x20, 0x10, 0x08, 0x04, 0x02, // /
+        0x3E, 0x51, 0x49, 0x45, 0x3E, // 0
+        0x00, 0x42, 0x7F, 0x40, 0x00, // 1
+        0x42, 0x61, 0x51, 0x49, 0x46, // 2
+        0x21, 0x41, 0x45, 0x4B, 0x31, // 3
+        0x18, 0x14, 0x12, 0x7F, 0x10, // 4
+        0x27, 0x45, 0x45, 0x45, 0x39, // 5
+        0x3C, 0x4A, 0x49, 0x49, 0x30, // 6
+        0x01, 0x71, 0x09, 0x05, 0x03, // 7
+        0x36, 0x49, 0x49, 0x49, 0x36, // 8
+        0x06, 0x49, 0x49, 0x29, 0x1E, // 9
+        0x00, 0x36, 0x36, 0x00, 0x00, // :
+        0x00, 0x56, 0x36, 0x00, 0x00, // ;
+        0x08, 0x14, 0x22, 0x41, 0x00, // <
+        0x14, 0x14, 0x14, 0x14, 0x14, // =
+        0x00, 0x41, 0x22, 0x14, 0x08, // >
+        0x02, 0x01, 0x51, 0x09, 0x06, // ?
+        0x32, 0x49, 0x79, 0x41, 0x3E, // @
+        0x7E, 0x11, 0x11, 0x11, 0x7E, // A
+        0x7F, 0x49, 0x49, 0x49, 0x36, // B
+        0x3E, 0x41, 0x41, 0x41, 0x22, // C
+        0x7F, 0x41, 0x41, 0x22, 0x1C, // D
+        0x7F, 0x49, 0x49, 0x49, 0x41, // E
+        0x7F, 0x09, 0x09, 0x09, 0x01, // F
+        0x3E, 0x41, 0x49, 0x49, 0x7A, // G
+        0x7F, 0x08, 0x08, 0x08, 0x7F, // H
+        0x00, 0x41, 0x7F, 0x41, 0x00, // I
+        0x20, 0x40, 0x41, 0x3F, 0x01, // J
+        0x7F, 0x08, 0x14, 0x22, 0x41, // K
+        0x7F, 0x40, 0x40, 0x40, 0x40, // L
+        0x7F, 0x02, 0x0C, 0x02, 0x7F, // M
+        0x7F, 0x04, 0x08, 0x10, 0x7F, // N
+        0x3E, 0x41, 0x41, 0x41, 0x3E, // O
+        0x7F, 0x09, 0x09, 0x09, 0x06, // P
+        0x3E, 0x41, 0x51, 0x21, 0x5E, // Q
+        0x7F, 0x09, 0x19, 0x29, 0x46, // R
+        0x46, 0x49, 0x49, 0x49, 0x31, // S
+        0x01, 0x01, 0x7F, 0x01, 0x01, // T
+        0x3F, 0x40, 0x40, 0x40, 0x3F, // U
+        0x1F, 0x20, 0x40, 0x20, 0x1F, // V
+        0x3F, 0x40, 0x38, 0x40, 0x3F, // W
+        0x63, 0x14, 0x08, 0x14, 0x63, // X
+        0x07, 0x08, 0x70, 0x08, 0x07, // Y
+        0x61, 0x51, 0x49, 0x45, 0x43, // Z
+        0x00, 0x7F, 0x41, 0x41, 0x00, // [
+        0x02, 0x04, 0x08, 0x10, 0x20, // \
+        0x00, 0x41, 0x41, 0x7F, 0x00, // ]
+        0x04, 0x02, 0x01, 0x02, 0x04, // ^
+        0x80, 0x80, 0x80, 0x80, 0x80, // _
+        0x00, 0x01, 0x02, 0x04, 0x00, // `
+        0x20, 0x54, 0x54, 0x54, 0x78, // a
+        0x7F, 0x48, 0x44, 0x44, 0x38, // b
+        0x38, 0x44, 0x44, 0x44, 0x20, // c
+        0x38, 0x44, 0x44, 0x48, 0x7F, // d
+        0x38, 0x54, 0x54, 0x54, 0x18, // e
+        0x08, 0x7E, 0x09, 0x01, 0x02, // f
+        0x18, 0xA4, 0xA4, 0xA4, 0x7C, // g
+        0x7F, 0x08, 0x04, 0x04, 0x78, // h
+        0x00, 0x44, 0x7D, 0x40, 0x00, // i
+        0x40, 0x80, 0x80, 0x7D, 0x00, // j
+        0x7F, 0x10, 0x28, 0x44, 0x00, // k
+        0x00, 0x41, 0x7F, 0x40, 0x00, // l
+        0x7C, 0x04, 0x18, 0x04, 0x78, // m
+        0x7C, 0x08, 0x04, 0x04, 0x78, // n
+        0x38, 0x44, 0x44, 0x44, 0x38, // o
+        0xFC, 0x24, 0x24, 0x24, 0x18, // p
+        0x18, 0x24, 0x24, 0x24, 0xFC, // q
+        0x7C, 0x08, 0x04, 0x04, 0x08, // r
+        0x48, 0x54, 0x54, 0x54, 0x20, // s
+        0x04, 0x3F, 0x44, 0x40, 0x20, // t
+        0x3C, 0x40, 0x40, 0x20, 0x7C, // u
+        0x1C, 0x20, 0x40, 0x20, 0x1C, // v
+        0x3C, 0x40, 0x30, 0x40, 0x3C, // w
+        0x44, 0x28, 0x10, 0x28, 0x44, // x
+        0x1C, 0xA0, 0xA0, 0xA0, 0x7C, // y
+        0x44, 0x64, 0x54, 0x4C, 0x44, // z
+        0x00, 0x08, 0x36, 0x41, 0x00, // {
+        0x00, 0x00, 0x7F, 0x00, 0x00, // |
+        0x00, 0x41, 0x36, 0x08, 0x00, // }
+        0x08, 0x04, 0x08, 0x10, 0x08, // ~
+    };
+
+    /// <summary>True if <paramref name="c"/> has its own glyph (printable ASCII).</summary>
+    public static bool HasGlyph(char c) => c >= First && c <= Last;
+
+    /// <summary>The ASCII character drawn for <paramref name="c"/>.</summary>
+    public static char Displayed(char c) => HasGlyph(c) ? c : c switch
+    {
+        '\u00A0' or '\u2007' or '\u2009' or '\u202F' => ' ', // no-break, figure, thin spaces
+        '\u2212' or '\u2010' or '\u2011' or '\u2012' or '\u2013' or '\u2014' => '-', // minus, hyphens, dashes
+        '\u00D7' => 'x',
+        '\u00B5' or '\u03BC' => 'u',
+        '\u00B7' or '\u2022' => '.',
+        '\u2018' or '\u2019' => '\'',
+        '\u201C' or '\u201D' => '"',
+        '\u00B2' => '2',
+        '\u00B3' => '3',
+        '\u00B0' => 'o',
+        '\u2026' => '.',
+        _ => '?',
+    };
+
+    /// <summary>Whether font pixel (column, row) of <paramref name="c"/>'s glyph is set; column 0..4, row 0..7.</summary>
+    public static bool IsSet(char c, int column, int row)
+    {
+        if ((uint)column >= GlyphWidth || (uint)row >= GlyphHeight) return false;
+        c = Displayed(c);
+        return (Columns[(c - First) * GlyphWidth + column] & (1 << row)) != 0;
+    }
+
+    /// <summary>Width in pixels of <paramref name="text"/> at <paramref name="scale"/> (no trailing spacing).</summary>
+    public static int MeasureWidth(string text, int scale = 1)
+    {
+        ArgumentNullException.ThrowIfNull(text);
+        return text.Length == 0 ? 0 : (text.Length * Advance - 1) * Math.Max(1, scale);
+    }
+
+    /// <summary>Height in pixels of a line of text at <paramref name="scale"/>, descenders included.</summary>
+    public static int MeasureHeight(int scale = 1) => GlyphHeight * Math.Max(1, scale);
+
+    /// <summary>Height in pixels of capitals and digits at <paramref name="scale"/> (for centring numbers on a tick).</summary>
+    public static int MeasureCapHeight(int scale = 1) => CapHeight * Math.Max(1, scale);
+
+    /// <summary>Draws <paramref name="text"/> left to right with its top-left corner at (x, y).</summary>
+    public static void DrawText(Raster raster, int x, int y, string text, Rgb colour, int scale = 1)
+    {
+        ArgumentNullException.ThrowIfNull(raster);
+        ArgumentNullException.ThrowIfNull(text);
+        scale = Math.Max(1, scale);
+        for (int i = 0; i < text.Length; i++)
+        {
+            int penX = x + i * Advance * scale;
+            for (int column = 0; column < GlyphWidth; column++)
+            {
+                for (int row = 0; row < GlyphHeight; row++)
+                {
+                    if (IsSet(text[i], column, row))
+                    {
+                        raster.FillRect(penX + column * scale, y + row * scale, scale, scale, colour);
+                    }
+                }
+            }
+        }
+    }
+
+    /// <summary>
+    /// Draws <paramref name="text"/> rotated a quarter turn anticlockwise (reading bottom to top, as a y-axis label).
+    /// (x, y) is the top-left of its bounding box, which is <see cref="MeasureHeight"/> wide and
+    /// <see cref="MeasureWidth"/> tall.
+    /// </summary>
+    public static void DrawTextVertical(Raster raster, int x, int y, string text, Rgb colour, int scale = 1)
+    {
+        ArgumentNullException.ThrowIfNull(raster);
+        ArgumentNullException.ThrowIfNull(text);
+        scale = Math.Max(1, scale);
+        int length = MeasureWidth(text, scale);
+        for (int i = 0; i < text.Length; i++)
+        {
+            int penX = i * Advance * scale;
+            for (int column = 0; column < GlyphWidth; column++)
+            {
+                for (int row = 0; row < GlyphHeight; row++)
+                {
+                    if (IsSet(text[i], column, row))
+                    {
+                        int hx = penX + column * scale; // position along the text
+                        int hy = row * scale;            // position across it, top of the glyph first
+                        raster.FillRect(x + hy, y + length - hx - scale, scale, scale, colour);
+                    }
+                }
+            }
+        }
+    }
+}

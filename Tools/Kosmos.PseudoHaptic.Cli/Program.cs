@@ -1,0 +1,55 @@
+using Kosmos.PseudoHaptic.Cli;
+using Kosmos.PseudoHaptic.Cli.Commands;
+
+// pseudohaptic: headless tools around the weight solver. Each command returns its exit code; contract
+// errors are one line on stderr and exit code 2.
+return Cli.Run(args);
+
+namespace Kosmos.PseudoHaptic.Cli
+{
+    public static class Cli
+    {
+        public const string Usage = """
+            pseudohaptic — pseudo-haptic weight (Son et al., Electronics 2022) without a headset
+
+              demo   [--out DIR] [--trace FILE]      simulate the paper's scenes, write CSV + PNG, print a summary
+              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain]
+              score  --responses R.csv --out S.csv   score questionnaire responses
+              report --scores S.csv --out DIR        tables, statistics and charts of scores
+            """;
+
+        public static int Run(string[] args)
+        {
+            if (args.Length == 0 || args[0] is "-h" or "--help" or "help")
+            {
+                Console.Out.WriteLine(Usage);
+                return args.Length == 0 ? 2 : 0;
+            }
+            var rest = args[1..];
+            try
+            {
+                return args[0] switch
+                {
+                    "demo" => DemoCommand.Run(rest),
+                    "replay" => ReplayCommand.Run(rest),
+                    _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score or report"),
+                };
+            }
+            catch (CliException e)
+            {
+                Console.Error.WriteLine("pseudohaptic: " + e.Message);
+                return e.ExitCode;
+            }
+            catch (IOException e)
+            {
+                Console.Error.WriteLine("pseudohaptic: " + e.Message.ReplaceLineEndings(" "));
+                return 1;
+            }
+            catch (UnauthorizedAccessException e)
+            {
+                Console.Error.WriteLine("pseudohaptic: " + e.Message.ReplaceLineEndings(" "));
+                return 1;
+            }
+        }
+    }
+}
