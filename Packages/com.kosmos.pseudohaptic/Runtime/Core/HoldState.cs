@@ -17,6 +17,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The estimator's memory: the last followed pose and when.</summary>
         public PoseDeltaEstimator Estimator;
 
+        /// <summary>The hand height the object follows, m: the last pose, or its filtered value when the profile has a filter.</summary>
+        public double HandY;
+
         /// <summary>Displacement the speed limit has not yet applied, m.</summary>
         public double Carry;
 
@@ -30,6 +33,6 @@ namespace Kosmos.PseudoHaptic
         public double CorrectionLevel;
 
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
-        public double Offset => Estimator.HandY - ObjectY;
+        public double Offset => HandY - ObjectY;
     }
 }

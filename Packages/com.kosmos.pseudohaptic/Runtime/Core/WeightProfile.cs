@@ -14,18 +14,22 @@ namespace Kosmos.PseudoHaptic
         public IReadOnlyList<WeightEffect> Effects => _all;
         public SolverLimits Limits { get; }
 
+        /// <summary>Optional smoother of the followed hand height (null: follow each pose exactly, the default).</summary>
+        public IHandFilter HandFilter { get; }
+
         internal readonly WeightEffect[] _all;
         internal readonly WeightEffect[] InputEffects;
         internal readonly WeightEffect[] HandEffects;
         internal readonly WeightEffect[] ObjectEffects;
         internal readonly WeightEffect[] PositionEffects;
 
-        public WeightProfile(string name, IEnumerable<WeightEffect> effects, SolverLimits limits = null)
+        public WeightProfile(string name, IEnumerable<WeightEffect> effects, SolverLimits limits = null, IHandFilter handFilter = null)
         {
             if (string.IsNullOrWhiteSpace(name)) throw new ArgumentException("name must not be empty.", nameof(name));
             if (effects == null) throw new ArgumentNullException(nameof(effects));
             Name = name;
             Limits = limits ?? SolverLimits.Default;
+            HandFilter = handFilter;
 
             var list = new List<WeightEffect>();
             foreach (var e in effects)
@@ -67,7 +71,7 @@ namespace Kosmos.PseudoHaptic
             var list = new List<WeightEffect>();
             foreach (var e in _all) if (e.GetType() != effect.GetType()) list.Add(e);
             list.Add(effect);
-            return new WeightProfile(name ?? Name + "+" + effect.Name, list, Limits);
+            return new WeightProfile(name ?? Name + "+" + effect.Name, list, Limits, HandFilter);
         }
 
         /// <summary>A copy without the effect of type T.</summary>
@@ -75,8 +79,16 @@ namespace Kosmos.PseudoHaptic
         {
             var list = new List<WeightEffect>();
             foreach (var e in _all) if (!(e is T)) list.Add(e);
-            return new WeightProfile(name ?? Name + "-" + typeof(T).Name, list, Limits);
+            return new WeightProfile(name ?? Name + "-" + typeof(T).Name, list, Limits, HandFilter);
         }
+
+        /// <summary>A copy that smooths the followed hand with <paramref name="filter"/> (null: none).</summary>
+        public WeightProfile WithHandFilter(IHandFilter filter, string name = null)
+            => new WeightProfile(name ?? Name + (filter != null ? "+" + filter.Name : ""), _all, Limits, filter);
+
+        /// <summary>A copy with other safety limits.</summary>
+        public WeightProfile WithLimits(SolverLimits limits, string name = null)
+            => new WeightProfile(name ?? Name, _all, limits ?? SolverLimits.Default, HandFilter);
 
         public override string ToString() => Name + " [" + string.Join(", ", Array.ConvertAll(_all, e => e.Name)) + "]";
     }

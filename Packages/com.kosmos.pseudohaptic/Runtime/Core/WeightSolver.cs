@@ -5,8 +5,8 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The pseudo-haptic weight solver of Son et al. 2022 for one held object: given the tracked hand each
     /// frame, it returns the object's new height so that a heavier object lags behind the hand and a lighter
-    /// one leads it. Per frame: pose → input effects → estimator → hand-motion effects → gain → object-motion
-    /// effects → speed limit → position effects. Configuration validates and throws; <see cref="Step"/> never
+    /// one leads it. Per frame: pose → input effects → estimator (→ hand filter, if the profile has one) →
+    /// hand-motion effects → gain → object-motion effects → speed limit → position effects. Configuration validates and throws; <see cref="Step"/> never
     /// throws, never allocates, and always returns a finite height.
     /// </summary>
     public sealed class WeightSolver
@@ -21,6 +21,7 @@ namespace Kosmos.PseudoHaptic
 
         HoldState _state;
         SolverConstants _constants;
+        IHandFilter _filter;
 
         public WeightModel Model { get; private set; }
         public WeightProfile Profile { get; private set; }
@@ -34,7 +35,7 @@ namespace Kosmos.PseudoHaptic
         public double ObjectY => _state.ObjectY;
 
         /// <summary>The hand height the solver follows, m.</summary>
-        public double HandY => _state.Estimator.HandY;
+        public double HandY => _state.HandY;
 
         /// <summary>hand − object, m: positive when the object hangs below the hand.</summary>
         public double Offset => _state.Offset;
@@ -55,6 +56,11 @@ namespace Kosmos.PseudoHaptic
             var cap = profile.Find<SpeedCap>();
             var deadband = profile.Find<MotionDeadband>();
             Model = model;
+            if (!ReferenceEquals(profile, Profile))
+            {
+                _filter = profile.HandFilter?.Create();
+                _filter?.Reset(_state.HandY);
+            }
             Profile = profile;
             _constants = new SolverConstants(gain, standardSpeed,
                 cap != null ? cap.CapFor(model, standardSpeed) : double.PositiveInfinity,
@@ -71,7 +77,9 @@ namespace Kosmos.PseudoHaptic
             var floor = Profile.Find<FloorClamp>();
             _state.ObjectY = floor != null && objectY < floor.Floor ? floor.Floor : objectY;
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime);
-            ResetEffects(handOk ? handY : objectY);
+            _state.HandY = handOk ? handY : objectY;
+            _filter?.Reset(_state.HandY);
+            ResetEffects(_state.HandY);
         }
 
         /// <summary>Ends the hold; further steps return the object's last height.</summary>
@@ -105,8 +113,23 @@ namespace Kosmos.PseudoHaptic
             if (f.Reanchored)
             {
                 _state.Carry = 0;
+                _filter?.Reset(f.HandAfter);
                 ResetEffects(f.HandAfter);
             }
+            else if (_filter != null)
+            {
+                // Effects see the filtered hand: its position, displacement and direction.
+                f.HandBefore = _state.HandY;
+                if (f.Usable && _state.Estimator.HasPose)
+                {
+                    double filtered = _filter.Filter(f.HandAfter, f.MotionInterval > 0, f.MotionInterval, dt);
+                    if (IsFinite(filtered)) f.HandAfter = filtered;
+                    else { _filter.Reset(f.HandAfter); }
+                }
+                else f.HandAfter = _state.HandY;
+                f.HandDelta = f.RawHandDelta = f.HandAfter - f.HandBefore;
+            }
+            _state.HandY = f.HandAfter;
 
             effects = Profile.HandEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);

@@ -173,5 +173,29 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(NamedProfiles.PaperExperiment.Has<OffsetCorrection>(), Is.False);
             Assert.That(NamedProfiles.Paper.Has<OffsetCorrection>(), Is.True);
         }
+
+        [Test]
+        public void AHandFilterSmoothsJitterAndEndsWhereTheHandEnds()
+        {
+            var frames = Run.Headset(frameRate: 90, jitterSd: 0.002, seed: 3).Render(Run.Lift(0.3, 1).Hold(1));
+            var raw = Run.Replay(new WeightSolver(WeightModel.FromMass(0.045), Only()), frames);
+            var smooth = Run.Replay(new WeightSolver(WeightModel.FromMass(0.045), Only().WithHandFilter(new ExponentialSmoothing(0.05))), frames);
+            double Roughness(double[] y) { double r = 0; for (int i = 2; i < y.Length; i++) r += Math.Abs(y[i] - 2 * y[i - 1] + y[i - 2]); return r; }
+            Assert.That(Roughness(smooth), Is.LessThan(0.5 * Roughness(raw)));
+            Assert.That(Run.Last(smooth), Is.EqualTo(Run.Last(raw)).Within(0.003), "the filter converges at rest");
+        }
+
+        [Test]
+        public void EachSolverGetsItsOwnFilterInstance()
+        {
+            var profile = NamedProfiles.Gain.WithHandFilter(new ExponentialSmoothing(0.05));
+            var a = new WeightSolver(WeightModel.FromMass(0.045), profile);
+            var b = new WeightSolver(WeightModel.FromMass(0.045), profile);
+            a.BeginHold(1, 1, 0);
+            b.BeginHold(0, 0, 0);
+            for (int i = 1; i < 50; i++) { a.Step(new HandSample(1.2, true, true, i / 30.0), 1 / 30.0); b.Step(new HandSample(0, true, true, i / 30.0), 1 / 30.0); }
+            Assert.That(a.ObjectY, Is.EqualTo(1.2).Within(0.01));
+            Assert.That(b.ObjectY, Is.EqualTo(0.0));
+        }
     }
 }
