@@ -14,8 +14,10 @@ namespace Kosmos.PseudoHaptic.Cli
 
               demo   [--out DIR] [--trace FILE]      simulate the paper's scenes, write CSV + PNG, print a summary
               replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain]
-              score  --responses R.csv --out S.csv   score questionnaire responses
-              report --scores S.csv --out DIR        tables, statistics and charts of scores
+              score  --responses R.csv --out S.csv [--questionnaires DIR]
+                                                     score questionnaire responses
+              report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]
+                                                     tables, statistics and charts of scores
             """;
 
         public static int Run(string[] args)
@@ -32,6 +34,8 @@ namespace Kosmos.PseudoHaptic.Cli
                 {
                     "demo" => DemoCommand.Run(rest),
                     "replay" => ReplayCommand.Run(rest),
+                    "score" => ScoreCommand.Run(rest),
+                    "report" => ReportCommand.Run(rest),
                     _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score or report"),
                 };
             }

@@ -1,0 +1,90 @@
+using System.Reflection;
+using System.Text;
+using Kosmos.PseudoHaptic.Evaluation;
+
+namespace Kosmos.PseudoHaptic.Cli;
+
+/// <summary>
+/// What <c>score</c> and <c>report</c> share: the questionnaire definitions (the package's JSON files, built
+/// into the tool, or a folder given with --questionnaires), reading input files, writing outputs by
+/// write-then-rename, and the error contract — one line on stderr, exit code 2, nothing written.
+/// </summary>
+static class EvaluationInputs
+{
+    /// <summary>Exit code of a contract error: malformed input, bad option, unreadable file.</summary>
+    public const int ContractError = 2;
+
+    /// <summary>The package's definitions as built in, or those of <paramref name="directory"/> when given.</summary>
+    public static QuestionnaireCatalog Catalog(string? directory)
+    {
+        if (directory != null)
+        {
+            if (!Directory.Exists(directory)) throw new CliException($"option --questionnaires: folder '{directory}' not found");
+            return QuestionnaireJson.LoadDirectory(directory);
+        }
+        var assembly = typeof(EvaluationInputs).Assembly;
+        var named = new List<KeyValuePair<string, string>>();
+        foreach (string file in QuestionnaireCatalog.DefaultFileNames)
+        {
+            using Stream? stream = assembly.GetManifestResourceStream("Questionnaires/" + file)
+                ?? throw new InvalidOperationException($"built-in questionnaire {file} is missing from the tool");
+            using var reader = new StreamReader(stream, Encoding.UTF8);
+            named.Add(new KeyValuePair<string, string>(file, reader.ReadToEnd()));
+        }
+        return QuestionnaireJson.ParseAll(named);
+    }
+
+    /// <summary>The whole text of an input file; a missing or unreadable one is a contract error naming it.</summary>
+    public static string ReadText(string path)
+    {
+        if (Directory.Exists(path)) throw new CliException($"{path}: is a folder, not a file");
+        if (!File.Exists(path)) throw new CliException($"{path}: file not found");
+        try { return File.ReadAllText(path, Encoding.UTF8); }
+        catch (IOException e) { throw new CliException($"{path}: cannot read: {OneLine(e.Message)}"); }
+        catch (UnauthorizedAccessException e) { throw new CliException($"{path}: cannot read: {OneLine(e.Message)}"); }
+    }
+
+    /// <summary>Writes through a temporary file beside <paramref name="path"/>, creating its folder if needed.</summary>
+    public static void WriteText(string path, string text) => Write(path, temp => File.WriteAllText(temp, text, new UTF8Encoding(false)));
+
+    public static void WriteBytes(string path, byte[] bytes) => Write(path, temp => File.WriteAllBytes(temp, bytes));
+
+    static void Write(string path, Action<string> write)
+    {
+        string? folder = Path.GetDirectoryName(Path.GetFullPath(path));
+        if (!string.IsNullOrEmpty(folder)) Directory.CreateDirectory(folder);
+        Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(path, write);
+    }
+
+    /// <summary>
+    /// Runs a command body under the error contract: a malformed file prints "FILE:LINE: reason", a usage
+    /// error "pseudohaptic COMMAND: reason (usage: …)", each one line on stderr, exit code 2. Output is only
+    /// written at the end of a body, after everything was read and checked, so an error leaves nothing.
+    /// </summary>
+    public static int Guard(string command, string usage, Func<int> body)
+    {
+        try
+        {
+            return body();
+        }
+        catch (EvaluationFormatException e)
+        {
+            Console.Error.WriteLine(e.Message);
+            return ContractError;
+        }
+        catch (CliException e)
+        {
+            string hint = e.Message.StartsWith("option", StringComparison.Ordinal) || e.Message.StartsWith("unknown option", StringComparison.Ordinal)
+                ? $" (usage: {usage})" : "";
+            Console.Error.WriteLine($"pseudohaptic {command}: {OneLine(e.Message)}{hint}");
+            return e.ExitCode;
+        }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            Console.Error.WriteLine($"pseudohaptic {command}: {OneLine(e.Message)}");
+            return 1;
+        }
+    }
+
+    public static string OneLine(string text) => text.ReplaceLineEndings(" ");
+}

@@ -1,0 +1,57 @@
+using Kosmos.PseudoHaptic.Evaluation;
+
+namespace Kosmos.PseudoHaptic.Cli;
+
+/// <summary>
+/// <c>pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]</c>: the paper's
+/// per-participant Tables 1–3, summary statistics per part (n, mean, SD, median, min, max, 95 % CI, and
+/// Cronbach's α when item-level responses are given) and a chart per part. Writes DIR/report.md,
+/// DIR/summary.csv, DIR/tableN-ID.csv and DIR/chartN-ID.png. A malformed S.csv (or R.csv) exits 2 with one
+/// line "FILE:LINE: reason" on stderr and writes nothing.
+/// </summary>
+public static class ReportCommand
+{
+    public const string Usage = "pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]";
+
+    public static int Run(string[] args) => EvaluationInputs.Guard("report", Usage, () =>
+    {
+        var o = new Options(args, "--scores", "--out", "--responses", "--questionnaires");
+        string scoresPath = o.Require("--scores");
+        string outDir = o.Require("--out");
+        string? responsesPath = o.Get("--responses");
+        if (File.Exists(outDir)) throw new CliException($"option --out: '{outDir}' is a file, not a folder");
+        var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
+
+        // Everything is read, checked and rendered before the first file is written.
+        var scores = ScoresCsv.Parse(EvaluationInputs.ReadText(scoresPath), scoresPath, catalog);
+        ResponseSet? responses = responsesPath != null
+            ? ResponsesCsv.Parse(EvaluationInputs.ReadText(responsesPath), responsesPath, catalog)
+            : null;
+        var report = EvaluationReport.Build(catalog, scores, scoresPath, responses, responsesPath);
+
+        var files = new List<(string Name, byte[] Bytes)>();
+        var utf8 = new System.Text.UTF8Encoding(false);
+        files.Add(("report.md", utf8.GetBytes(report.Markdown())));
+        files.Add(("summary.csv", utf8.GetBytes(report.SummaryCsv())));
+        foreach (var part in report.Parts)
+        {
+            if (part.Scores.Count == 0) continue;
+            files.Add((part.TableFile, utf8.GetBytes(EvaluationReport.TableCsv(part))));
+            files.Add((part.ChartFile, EvaluationCharts.Png(part)));
+        }
+
+        foreach (var (name, bytes) in files) EvaluationInputs.WriteBytes(Path.Combine(outDir, name), bytes);
+
+        if (report.Disagreements.Count > 0)
+            Console.Error.WriteLine($"pseudohaptic report: warning: {report.Disagreements.Count} scores in {scoresPath} differ from {responsesPath} scored again (first: {report.Disagreements[0]})");
+        Console.Out.WriteLine($"{Path.Combine(outDir, "report.md")}: {files.Count} files");
+        foreach (var part in report.Parts)
+        {
+            var st = part.Statistics;
+            Console.Out.WriteLine($"  {part.Questionnaire.Id}: n = {st.N}, mean {Fixed(st.Mean)}, SD {Fixed(st.StandardDeviation)}, 95% CI [{Fixed(st.ConfidenceLow)}, {Fixed(st.ConfidenceHigh)}]{(part.Incomplete > 0 ? $", {part.Incomplete} incomplete" : "")}");
+        }
+        return 0;
+    });
+
+    static string Fixed(double v) => double.IsFinite(v) ? NumberText.Fixed(v, 2) : "-";
+}
