@@ -14,6 +14,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Frame time since the hold began, s (double: it never loses the millisecond in hours).</summary>
         public double Time;
 
+        /// <summary>The rounding error <see cref="Time"/> still owes (compensated summation).</summary>
+        public double TimeCompensation;
+
         /// <summary>The estimator's memory: the last followed pose and when.</summary>
         public PoseDeltaEstimator Estimator;
 
@@ -28,9 +31,6 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
-
-        /// <summary><see cref="OffsetCorrection"/>: the correction's current strength, 0 to 1.</summary>
-        public double CorrectionLevel;
 
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => HandY - ObjectY;

@@ -30,9 +30,6 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Hand displacement to follow this frame, m (after the hand-motion effects).</summary>
         public double HandDelta;
 
-        /// <summary>The hand's displacement this frame before any effect, m: its direction is the hand's.</summary>
-        public double RawHandDelta;
-
         /// <summary>Hand speed measured against the pose's own timestamps, m/s (0 when no new pose).</summary>
         public double HandSpeed;
 
@@ -42,8 +39,20 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The object's height before this frame, m.</summary>
         public double ObjectY;
 
-        /// <summary>The object's proposed displacement this frame, m.</summary>
+        /// <summary>The object's proposed displacement this frame, m: G × the hand's (then shaped by effects).</summary>
         public double ObjectDelta;
+
+        /// <summary>Displacement the speed limit carried over from earlier frames, m; it joins
+        /// <see cref="ObjectDelta"/> at the speed limit. A cap on this frame's speed ignores it; a constraint on
+        /// where the object may go (<see cref="TotalDelta"/>) includes it.</summary>
+        public double Carry;
+
+        /// <summary>Where the object is headed this frame: its own displacement plus the carried one, m.</summary>
+        public double TotalDelta
+        {
+            get => ObjectDelta + Carry;
+            set => ObjectDelta = value - Carry;
+        }
 
         /// <summary>The object's height after the speed limit, m: what position effects constrain.</summary>
         public double NewObjectY;

@@ -23,8 +23,11 @@ namespace Kosmos.PseudoHaptic
         /// <summary>As the paper's Experiments 1 and 2 ran: everything in <see cref="Paper"/> but the offset correction.</summary>
         public static readonly WeightProfile PaperExperiment = Paper.Without<OffsetCorrection>(PaperExperimentName);
 
-        /// <summary>Eq. 4 alone, within the scene's floor (P5) and the safety limits every profile keeps.</summary>
-        public static readonly WeightProfile Gain = new WeightProfile(GainName, new WeightEffect[] { new WeightGain(), new FloorClamp() });
+        /// <summary>
+        /// Eq. 4 alone, within what every reading must keep: the floor (P5) and the deadband that keeps tracking
+        /// jitter, multiplied by a light object's gain, from moving it at rest (P4); and the safety limits.
+        /// </summary>
+        public static readonly WeightProfile Gain = new WeightProfile(GainName, new WeightEffect[] { new MotionDeadband(), new WeightGain(), new FloorClamp() });
 
         public static IReadOnlyList<string> Names { get; } = new[] { PaperName, PaperExperimentName, GainName };
 

@@ -24,11 +24,12 @@ namespace Kosmos.PseudoHaptic
         /// <summary>After a loss or a hitch up to this long the object catches up with the hand; after a longer one it re-anchors, s.</summary>
         public double MaxCatchUpGap { get; }
 
-        /// <summary>Displacement carried over by the speed limit is bounded by this, m.</summary>
+        /// <summary>Displacement carried over by the speed limit is bounded by this, m (at most 0.125 s of gliding
+        /// at the speed limit after the hand stops).</summary>
         public double MaxCarry { get; }
 
         public SolverLimits(double maxGain = 3.0, double maxObjectSpeed = 4.0, double maxFrameTime = 0.025,
-            double maxHandSpeed = 6.0, double maxCatchUpGap = 0.25, double maxCarry = 0.25)
+            double maxHandSpeed = 6.0, double maxCatchUpGap = 0.25, double maxCarry = 0.5)
         {
             MaxGain = ConfigurationGuard.InRange(maxGain, 1.0, 100.0, nameof(maxGain));
             MaxObjectSpeed = ConfigurationGuard.Positive(maxObjectSpeed, nameof(maxObjectSpeed));
@@ -40,5 +41,8 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>Pose-to-pose motion is judged over at most this window, s, so a long still spell does not license a teleport.</summary>
         internal const double JumpWindow = 0.05;
+
+        /// <summary>…and over at least one 30 Hz pose period, s: a pose step under 6 m/s × 33 ms = 20 cm is never a glitch.</summary>
+        internal const double MinJumpWindow = 1.0 / 30;
     }
 }

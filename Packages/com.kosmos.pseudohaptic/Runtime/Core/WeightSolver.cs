@@ -94,7 +94,10 @@ namespace Kosmos.PseudoHaptic
             // Bad frame times are absorbed: NaN or negative count as no time, infinity as a very long hitch.
             if (double.IsPositiveInfinity(dt)) dt = 3600;
             else if (!(dt > 0)) dt = 0;
-            _state.Time += dt;
+            // Compensated (Kahan) sum: the hold's clock keeps the microsecond over millions of frames.
+            double add = dt - _state.TimeCompensation, sum = _state.Time + add;
+            _state.TimeCompensation = (sum - _state.Time) - add;
+            _state.Time = sum;
 
             var f = new MotionFrame
             {
@@ -127,7 +130,7 @@ namespace Kosmos.PseudoHaptic
                     else { _filter.Reset(f.HandAfter); }
                 }
                 else f.HandAfter = _state.HandY;
-                f.HandDelta = f.RawHandDelta = f.HandAfter - f.HandBefore;
+                f.HandDelta = f.HandAfter - f.HandBefore;
             }
             _state.HandY = f.HandAfter;
 
@@ -135,12 +138,13 @@ namespace Kosmos.PseudoHaptic
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
             f.ObjectDelta = _constants.Gain * f.HandDelta;
+            f.Carry = _state.Carry;
 
             effects = Profile.ObjectEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
             // Speed limit: motion beyond it is carried to the next frames, never dropped as a jump.
-            double carry = _state.Carry + f.ObjectDelta;
+            double carry = f.TotalDelta;
             // Judged over the pose's interval when a pose arrived, so a 30 Hz pose under 120 Hz frames is not a spike.
             double window = f.MotionInterval > dt ? f.MotionInterval : dt;
             double maxStep = limits.MaxObjectSpeed * (window < limits.MaxFrameTime ? window : limits.MaxFrameTime);

@@ -105,7 +105,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var r = StandardSpeedCalibration.FromLifts(new[] { t }, new[] { y });
             var solver = new WeightSolver(WeightModel.FromMass(1), NamedProfiles.Paper, r.StandardSpeed);
             Assert.That(solver.StandardSpeed, Is.EqualTo(r.StandardSpeed));
-            Assert.That(solver.Constants.CapSpeed, Is.EqualTo(2 * r.StandardSpeed * Math.Exp(-0.24 * (1 - 0.045))).Within(1e-12));
+            Assert.That(solver.Constants.CapSpeed, Is.EqualTo(2.5 * r.StandardSpeed * Math.Exp(-0.24 * (1 - 0.045))).Within(1e-12));
         }
     }
 }

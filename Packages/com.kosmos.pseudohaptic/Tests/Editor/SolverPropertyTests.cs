@@ -10,7 +10,7 @@ namespace Kosmos.PseudoHaptic.Tests
         static readonly string[] Profiles = { "paper", "paper-experiment", "gain" };
 
         // P1: the golf ball, lifted at up to the user's standard speed, stays with the hand (up to the deadband's
-        // width, v_std × 6 ms). Up to v_std = 1.6 m/s: beyond, a smooth lift's peak exceeds the 10 cm-per-pose limit.
+        // width, max(v_std × 6 ms, 4 mm)). Up to v_std = 1.6 m/s: beyond, a smooth lift's peak exceeds the 10 cm-per-pose limit.
         [TestCase("paper", 0.3), TestCase("paper", 0.5), TestCase("paper", 1.2)]
         [TestCase("paper-experiment", 0.5), TestCase("gain", 0.5), TestCase("gain", 1.5)]
         public void P1_StandardWeightStaysWithTheHand(string profile, double standardSpeed)
@@ -18,7 +18,8 @@ namespace Kosmos.PseudoHaptic.Tests
             double rise = 0.3, duration = rise / standardSpeed; // mean speed = v_std, peak 1.875 × v_std
             var frames = Run.Headset(frameRate: 90).Render(Run.Lift(rise, duration));
             var y = Run.Replay(Run.Solver(PhysicalConstants.StandardMassKg, NamedProfiles.Get(profile), standardSpeed), frames);
-            double deadband = NamedProfiles.Get(profile).Has<MotionDeadband>() ? 0.006 * standardSpeed : 0;
+            var band = NamedProfiles.Get(profile).Find<MotionDeadband>();
+            double deadband = band != null ? band.WidthFor(standardSpeed) : 0;
             Assert.That(Run.MaxOffset(frames, y), Is.LessThanOrEqualTo(deadband + 1e-9), "max offset during the lift");
             Assert.That(Math.Abs(frames[frames.Length - 1].HandY - Run.Last(y)), Is.LessThanOrEqualTo(deadband + 1e-9), "offset at the end");
         }
@@ -35,14 +36,20 @@ namespace Kosmos.PseudoHaptic.Tests
                 var y = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile)), frames);
                 double max = double.NegativeInfinity;
                 foreach (var v in y) max = Math.Max(max, v);
-                // To 0.1 mm: where two masses tie (1 g and 10 g both at the gain cap; everything past 5 kg held at
-                // the offset correction's threshold) only the dynamics of the tie differ, by micrometres.
-                Assert.That(Run.Last(y), Is.LessThanOrEqualTo(previousEnd + 1e-4), "end height at " + m + " kg");
-                Assert.That(max, Is.LessThanOrEqualTo(previousMax + 1e-4), "peak height at " + m + " kg");
+                Assert.That(Run.Last(y), Is.LessThanOrEqualTo(previousEnd + P2Tolerance(profile)), "end height at " + m + " kg");
+                Assert.That(max, Is.LessThanOrEqualTo(previousMax + P2Tolerance(profile)), "peak height at " + m + " kg");
                 previousEnd = Run.Last(y);
                 previousMax = max;
             }
         }
+
+        /// <summary>
+        /// Where two masses tie, only the dynamics of the tie differ: 1 g and 10 g both sit at the gain cap; and
+        /// with the offset correction every object that lags past 0.2 m is held near 0.2–0.22 m below the hand,
+        /// where the one with the larger offset is corrected harder and may end a few millimetres higher
+        /// (ALGORITHM.md, §6). Measured worst case over the stability suite's seeds: under 5 mm.
+        /// </summary>
+        internal static double P2Tolerance(string profile) => NamedProfiles.Get(profile).Has<OffsetCorrection>() ? 0.005 : 1e-4;
 
         // P3: lighter than the golf ball leads, within the gain cap, in every profile.
         [Test]

@@ -14,12 +14,13 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (frame.RawHandDelta >= 0) return;
+            if (frame.HandDelta >= 0) return;
             double limit = Math.Abs(frame.OffsetBefore);
             double centre = frame.HandAfter - frame.ObjectY; // the delta that would leave no offset
             double lo = centre - limit, hi = centre + limit;
-            if (frame.ObjectDelta < lo) frame.ObjectDelta = lo;
-            else if (frame.ObjectDelta > hi) frame.ObjectDelta = hi;
+            double total = frame.TotalDelta;
+            if (total < lo) frame.TotalDelta = lo;
+            else if (total > hi) frame.TotalDelta = hi;
         }
     }
 }

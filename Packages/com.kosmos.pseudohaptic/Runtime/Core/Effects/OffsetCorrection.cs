@@ -5,12 +5,13 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// Son et al. 2022, §3.1: past a hand–object distance of 0.2 m the object's speed is corrected
     /// "in a gradual deceleration manner", "+0.02 (m) faster if lighter, −0.02 slower if heavier".
-    /// Adopted reading (design note, open question 3): the correction acts against the offset's growth.
-    /// Its strength rises from 0 at <see cref="Threshold"/> to full at threshold + <see cref="Band"/> (the
-    /// paper's 0.02 m), where the object moves with the hand and the offset stops growing; beyond the band
-    /// the object is also drawn back toward the hand at up to <see cref="PullSpeed"/>. The strength follows
-    /// the offset up and is released over <see cref="RampTime"/>, so the object's speed changes gradually
-    /// and its position never jumps.
+    /// Adopted reading (design note, open question 3): the correction acts against the offset's growth, in
+    /// the direction that shrinks it. Its strength s rises linearly from 0 at <see cref="Threshold"/> to 1 at
+    /// threshold + <see cref="Band"/> (the paper's 0.02 m) and is applied to the offset the frame would
+    /// reach, solved exactly, so growth saturates smoothly and the offset never grows past threshold + band,
+    /// however large one pose's step. Beyond the band (an offset left by re-anchoring) the object is drawn
+    /// back toward the hand at up to <see cref="PullSpeed"/>, ramping up over five band widths. Position
+    /// never jumps.
     /// </summary>
     public sealed class OffsetCorrection : WeightEffect
     {
@@ -20,48 +21,42 @@ namespace Kosmos.PseudoHaptic
         public double Threshold { get; }
         public double Band { get; }
         public double PullSpeed { get; }
-        public double RampTime { get; }
 
-        public OffsetCorrection(double threshold = 0.2, double band = 0.02, double pullSpeed = 0.5, double rampTime = 0.1)
+        public OffsetCorrection(double threshold = 0.2, double band = 0.02, double pullSpeed = 0.5)
         {
             Threshold = ConfigurationGuard.InRange(threshold, 0.001, 10, nameof(threshold));
             Band = ConfigurationGuard.InRange(band, 0.001, 10, nameof(band));
             PullSpeed = ConfigurationGuard.InRange(pullSpeed, 0, 10, nameof(pullSpeed));
-            RampTime = ConfigurationGuard.InRange(rampTime, 0, 10, nameof(rampTime));
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double before = frame.OffsetBefore;
-            double excess = Math.Abs(before) - Threshold;
-            double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
-
-            // Strength rises with the offset across the band (continuous in position, so the speed changes by at
-            // most (1 − G)·v_hand across those 2 cm) and is released over RampTime, so it never lets go at once.
-            double target = excess <= 0 ? 0 : (excess >= Band ? 1 : excess / Band);
-            double released = RampTime > 0 ? state.CorrectionLevel - dt / RampTime : 0;
-            double level = target > released ? target : released;
-            state.CorrectionLevel = level;
-            if (level <= 0) return;
-
+            double before = Math.Abs(frame.OffsetBefore);
             double handMove = frame.HandAfter - frame.HandBefore;
-            double after = frame.HandAfter - frame.ObjectY - frame.ObjectDelta;
-            if (Math.Abs(after) > Math.Abs(before))
+            double afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
+            double after = Math.Abs(afterSigned);
+
+            if (after > before && after > Threshold)
             {
-                frame.ObjectDelta += level * (handMove - frame.ObjectDelta);
-                after = frame.HandAfter - frame.ObjectY - frame.ObjectDelta;
+                // The offset reached solves d = d0 + (1 − s(d))·g, s(d) = clamp((d − T)/B, 0, 1), g = the growth
+                // without correction: in the ramp d = (d0 + g·(1 + T/B)) / (1 + g/B), which lies in [T, T + B].
+                double g = after - before;
+                double target = before >= Threshold + Band ? before : (before + g * (1 + Threshold / Band)) / (1 + g / Band);
+                double s = (after - target) / g; // share of the growth removed: blend the object's motion toward the hand's
+                frame.TotalDelta += s * (handMove - frame.TotalDelta);
+                afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
+                after = Math.Abs(afterSigned);
             }
 
-            double beyond = Math.Abs(after) - (Threshold + Band);
+            double beyond = after - (Threshold + Band);
             if (beyond > 0 && PullSpeed > 0)
             {
-                double ramp = 5 * Band; // full pull speed 5 band-widths past the band
-                double speed = level * PullSpeed * (beyond >= ramp ? 1 : beyond / ramp);
+                double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
+                double ramp = 5 * Band;
+                double speed = PullSpeed * (beyond >= ramp ? 1 : beyond / ramp);
                 double pull = Math.Min(beyond, speed * dt);
-                frame.ObjectDelta += after > 0 ? pull : -pull;
+                frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             }
         }
-
-        protected internal override void Reset(ref HoldState state, double handY) => state.CorrectionLevel = 0;
     }
 }

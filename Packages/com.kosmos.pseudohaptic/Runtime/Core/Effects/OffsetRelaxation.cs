@@ -25,7 +25,7 @@ namespace Kosmos.PseudoHaptic
             if (speed < 0) speed = -speed;
             if (speed >= StillFraction * constants.StandardSpeed) return;
             double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
-            double after = frame.HandAfter - frame.ObjectY - frame.ObjectDelta;
+            double after = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
             // dt/(τ+dt) ≈ 1 − e^(−dt/τ) without an exponential per frame; never overshoots.
             frame.ObjectDelta += after * dt / (TimeConstant + dt);
         }

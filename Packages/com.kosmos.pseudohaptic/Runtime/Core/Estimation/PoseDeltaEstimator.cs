@@ -24,6 +24,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>A hand that has shown no new pose for this long is taken as still, s.</summary>
         const double StillAfter = 0.1;
 
+        /// <summary>The shortest pose period assumed when poses carry no timestamp: Quest tracks hands at 60 Hz at most.</summary>
+        const double MinPosePeriod = 1.0 / 60;
+
         /// <summary>The hand's height as followed, m.</summary>
         public double HandY => _poseY;
 
@@ -41,12 +44,12 @@ namespace Kosmos.PseudoHaptic
             _lost = !_hasPose;
         }
 
-        /// <summary>Fills HandBefore/After, RawHandDelta, HandDelta, HandSpeed, MotionInterval and Reanchored.</summary>
+        /// <summary>Fills HandBefore/After, HandDelta, HandSpeed, MotionInterval and Reanchored.</summary>
         public void Update(ref MotionFrame f, SolverLimits limits)
         {
             _sincePose += f.Dt;
             f.HandBefore = _poseY;
-            f.HandDelta = f.RawHandDelta = f.HandSpeed = f.MotionInterval = 0;
+            f.HandDelta = f.HandSpeed = f.MotionInterval = 0;
 
             if (!f.Usable)
             {
@@ -58,7 +61,8 @@ namespace Kosmos.PseudoHaptic
 
             bool hasTime = IsFinite(f.PoseTime);
             bool hadTime = IsFinite(_poseTime);
-            bool newPose = hasTime ? !(hadTime && f.PoseTime == _poseTime) : f.PoseY != _poseY;
+            // A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.
+            bool newPose = f.PoseY != _poseY || (hasTime && !(hadTime && f.PoseTime == _poseTime));
             bool clockBack = hasTime && hadTime && f.PoseTime < _poseTime;
             bool gap = f.Dt > limits.MaxCatchUpGap || (_lost && _lostFor > limits.MaxCatchUpGap);
 
@@ -75,16 +79,21 @@ namespace Kosmos.PseudoHaptic
                 return;
             }
 
-            double interval = hasTime && hadTime ? f.PoseTime - _poseTime : _sincePose;
-            if (interval < 1e-4) interval = Math.Max(_sincePose, 1e-4);
+            // Speed is measured against the poses' own clock; without it, against the frames' time since the last
+            // new pose, but never less than a 60 Hz pose period: two poses can land in one short frame.
+            double interval = hasTime && hadTime && f.PoseTime > _poseTime ? f.PoseTime - _poseTime
+                : (_sincePose > MinPosePeriod ? _sincePose : MinPosePeriod);
+            if (interval < 1e-4) interval = 1e-4;
             double delta = f.PoseY - _poseY;
-            if (Math.Abs(delta) > limits.MaxHandSpeed * Math.Min(interval, SolverLimits.JumpWindow))
+            // Judged over at least one 30 Hz pose period: without timestamps two poses can land in one short frame.
+            double window = interval < SolverLimits.MinJumpWindow ? SolverLimits.MinJumpWindow : (interval > SolverLimits.JumpWindow ? SolverLimits.JumpWindow : interval);
+            if (Math.Abs(delta) > limits.MaxHandSpeed * window)
             {
                 Reanchor(ref f);
                 return;
             }
 
-            f.RawHandDelta = f.HandDelta = delta;
+            f.HandDelta = delta;
             f.HandSpeed = _speed = delta / interval;
             f.MotionInterval = interval;
             Accept(ref f);

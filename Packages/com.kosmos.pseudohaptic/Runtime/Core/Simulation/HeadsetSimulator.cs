@@ -6,7 +6,8 @@ namespace Kosmos.PseudoHaptic.Simulation
     /// <summary>
     /// Degrades a true hand path the way a Quest 2 delivers it: poses sampled at 30 Hz (60 in fast-motion
     /// mode), about 45 ms late, with millimetre jitter, held over 72–120 Hz frames whose times may wobble,
-    /// and stretches of lost tracking. Seeded: the same settings give the same frames.
+    /// and stretches of lost tracking. Seeded: the same settings give the same frames, and a pose's jitter
+    /// depends only on the seed and the pose, not on the frame clock.
     /// </summary>
     public sealed class HeadsetSimulator
     {
@@ -57,7 +58,7 @@ namespace Kosmos.PseudoHaptic.Simulation
                 {
                     lastPose = k;
                     poseT = k * posePeriod;
-                    poseY = path.HeightAt(poseT) + (JitterSd > 0 ? JitterSd * Gaussian(rng) : 0);
+                    poseY = path.HeightAt(poseT) + (JitterSd > 0 ? JitterSd * Gaussian(Seed, k) : 0);
                 }
                 bool lost = false;
                 for (int i = 0; i < _dropStart.Count; i++)
@@ -71,10 +72,23 @@ namespace Kosmos.PseudoHaptic.Simulation
             return frames.ToArray();
         }
 
-        static double Gaussian(Random rng)
+        /// <summary>Standard normal noise of pose k: a function of (seed, k) only, so the same pose carries the
+        /// same jitter whatever the frame clock that shows it.</summary>
+        static double Gaussian(int seed, long k)
         {
-            double u1 = 1.0 - rng.NextDouble(), u2 = rng.NextDouble();
+            double u1 = 1.0 - Uniform((ulong)seed * 0x9E3779B97F4A7C15UL + (ulong)k * 2);
+            double u2 = Uniform((ulong)seed * 0x9E3779B97F4A7C15UL + (ulong)k * 2 + 1);
             return Math.Sqrt(-2.0 * Math.Log(u1)) * Math.Cos(2 * Math.PI * u2);
+        }
+
+        /// <summary>SplitMix64 of <paramref name="x"/> as a double in [0, 1).</summary>
+        static double Uniform(ulong x)
+        {
+            x += 0x9E3779B97F4A7C15UL;
+            x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9UL;
+            x = (x ^ (x >> 27)) * 0x94D049BB133111EBUL;
+            x ^= x >> 31;
+            return (x >> 11) * (1.0 / (1UL << 53));
         }
     }
 }

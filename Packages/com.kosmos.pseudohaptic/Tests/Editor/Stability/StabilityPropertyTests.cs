@@ -1,0 +1,136 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+using Kosmos.PseudoHaptic.Simulation;
+
+namespace Kosmos.PseudoHaptic.Tests.Stability
+{
+    /// <summary>
+    /// Properties P1–P10 asserted over many seeded scenarios rather than single examples (issue 3). Each failure
+    /// names the seed and the scenario so it can be replayed alone.
+    /// </summary>
+    public class StabilityPropertyTests
+    {
+        const int Seeds = 150;
+
+        static IEnumerable<int> SeedRange(int count, int offset = 0) { for (int i = 0; i < count; i++) yield return 1000 + offset + i; }
+
+        [Test]
+        public void NothingNonFiniteNoJumpAndNoFloorCrossingOnAdversarialInput()
+        {
+            foreach (int seed in SeedRange(Seeds))
+            {
+                var s = ScenarioGenerator.Adversarial(seed);
+                var solver = ScenarioGenerator.Solver(s);
+                var y = TraceReplay.Run(solver, s.Frames);
+                bool floor = solver.Profile.Has<FloorClamp>();
+                for (int i = 0; i < y.Length; i++)
+                {
+                    if (double.IsNaN(y[i]) || double.IsInfinity(y[i])) Assert.Fail(s + ": non-finite at frame " + i);
+                    if (i > 0 && Math.Abs(y[i] - y[i - 1]) > 0.1 + 1e-12) Assert.Fail(s + ": step of " + Math.Abs(y[i] - y[i - 1]) + " m at frame " + i);
+                    if (floor && y[i] < 0) Assert.Fail(s + ": below the floor at frame " + i);
+                }
+            }
+        }
+
+        [Test]
+        public void TheSameMotionOnAnyFrameClockEndsWithinOneCentimetre()
+        {
+            foreach (int seed in SeedRange(40, 2000))
+            {
+                var s = ScenarioGenerator.Clean(seed);
+                double? first = null;
+                string firstClock = null;
+                // The issue's clocks. (A 30 Hz frame clock with wobble skips some 30 Hz poses; where the speed cap
+                // binds, capping one two-pose step differs from capping two steps, and the ends may differ by
+                // centimetres. SolverPropertyTests.P7 covers 30 Hz frames on a lift the cap does not touch.)
+                foreach (var rate in new[] { 60.0, 72, 90, 120 })
+                    foreach (var wobble in new[] { 0.0, 0.4 })
+                    {
+                        var headset = new HeadsetSimulator { FrameRate = rate, FrameTimeWobble = wobble, PoseRate = 30, JitterSd = 0.0015, Seed = seed };
+                        var y = TraceReplay.Run(ScenarioGenerator.Solver(s), headset.Render(s.Path, extra: 0.5));
+                        double end = y[y.Length - 1];
+                        string clock = rate + " Hz" + (wobble > 0 ? " irregular" : "");
+                        if (first == null) { first = end; firstClock = clock; continue; }
+                        Assert.That(end, Is.EqualTo(first.Value).Within(0.01), s + ": " + clock + " vs " + firstClock);
+                    }
+            }
+        }
+
+        [Test]
+        public void AHandAtRestWithJitterMovesTheObjectLessThanOneCentimetreInTenSeconds()
+        {
+            foreach (int seed in SeedRange(Seeds, 3000))
+            {
+                var rng = new Random(seed);
+                var headset = ScenarioGenerator.RandomHeadset(rng, seed);
+                headset.JitterSd = 0.0015;
+                var path = HandPath.StartAt(0.2 + rng.NextDouble()).Hold(10);
+                var frames = headset.Render(path);
+                string profile = ScenarioGenerator.Profiles[seed % 3];
+                double mass = ScenarioGenerator.LogUniform(rng, 0.001, 1e6), v = ScenarioGenerator.LogUniform(rng, 0.05, 5);
+                var y = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(mass), NamedProfiles.Get(profile), v), frames);
+                double creep = 0;
+                foreach (var value in y) creep = Math.Max(creep, Math.Abs(value - y[0]));
+                Assert.That(creep, Is.LessThan(0.01), "seed " + seed + ": " + profile + ", " + mass.ToString("G3") + " kg, v_std " + v.ToString("G3") + ", " + headset.FrameRate + " Hz");
+            }
+        }
+
+        [Test]
+        public void WithTheOffsetCorrectionTheOffsetStaysWithinAQuarterMetre()
+        {
+            foreach (int seed in SeedRange(Seeds, 4000))
+            {
+                var s = ScenarioGenerator.Clean(seed);
+                s.Profile = NamedProfiles.PaperName;
+                var y = TraceReplay.Run(ScenarioGenerator.Solver(s), s.Frames);
+                double max = 0;
+                for (int i = 0; i < y.Length; i++) max = Math.Max(max, Math.Abs(s.Frames[i].HandY - y[i]));
+                Assert.That(max, Is.LessThan(0.25), s + ", " + s.MassKg.ToString("G3") + " kg, v_std " + s.StandardSpeed.ToString("G3"));
+            }
+        }
+
+        [Test]
+        public void AfterTheSameLiftHeavierIsNeverHigher()
+        {
+            double[] masses = { 0.001, 0.01, 0.045, 0.2, 1, 5, 50, 1e6 };
+            foreach (int seed in SeedRange(60, 5000))
+            {
+                var rng = new Random(seed);
+                double start = 0.3 + rng.NextDouble() * 0.6, rise = 0.05 + rng.NextDouble() * 0.6, seconds = rise / (0.1 + rng.NextDouble());
+                var path = HandPath.StartAt(start).Hold(0.3).MoveTo(start + rise, seconds).Hold(0.5);
+                var frames = ScenarioGenerator.RandomHeadset(rng, seed).Render(path);
+                string profile = ScenarioGenerator.Profiles[seed % 3];
+                double v = ScenarioGenerator.LogUniform(rng, 0.05, 5), previous = double.PositiveInfinity;
+                foreach (var m in masses)
+                {
+                    var y = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(m), NamedProfiles.Get(profile), v), frames);
+                    double end = y[y.Length - 1];
+                    Assert.That(end, Is.LessThanOrEqualTo(previous + SolverPropertyTests.P2Tolerance(profile)), "seed " + seed + ": " + profile + ", " + m + " kg, v_std " + v.ToString("G3"));
+                    previous = end;
+                }
+            }
+        }
+
+        [Test]
+        public void TheGolfBallStaysWithTheHandOnRealisticInput()
+        {
+            foreach (int seed in SeedRange(60, 6000))
+            {
+                var s = ScenarioGenerator.Clean(seed);
+                // Known limit (stability.md): 60 Hz poses without timestamps under irregular frames can put two
+                // poses in one frame, which reads as one step at twice the speed and meets the speed cap.
+                if (s.Description.Contains("60 Hz poses without timestamps")) continue;
+                s.MassKg = PhysicalConstants.StandardMassKg;
+                s.StandardSpeed = 1.2; // faster than any mean speed the generator draws
+                var solver = ScenarioGenerator.Solver(s);
+                var y = TraceReplay.Run(solver, s.Frames);
+                var deadband = solver.Profile.Find<MotionDeadband>();
+                double band = deadband != null ? deadband.WidthFor(s.StandardSpeed) : 0;
+                double max = 0;
+                for (int i = 0; i < y.Length; i++) max = Math.Max(max, Math.Abs(s.Frames[i].HandY - y[i]));
+                Assert.That(max, Is.LessThanOrEqualTo(band + 0.0005), s.ToString());
+            }
+        }
+    }
+}
