@@ -27,6 +27,11 @@ namespace Kosmos.PseudoHaptic
         public double HandBefore;
         public double HandAfter;
 
+        /// <summary>The followed hand before and after this frame as the estimator (and filter) gave it, m, before
+        /// any hand-motion effect: the hand the user sees, against which the visible offset is measured.</summary>
+        public double PoseHandBefore;
+        public double PoseHandAfter;
+
         /// <summary>Hand displacement to follow this frame, m (after the hand-motion effects).</summary>
         public double HandDelta;
 
@@ -57,7 +62,10 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The object's height after the speed limit, m: what position effects constrain.</summary>
         public double NewObjectY;
 
-        /// <summary>hand − object before this frame's motion, m: positive when the object is below the hand.</summary>
+        /// <summary>Shaped hand − object before this frame's motion, m: positive when the object is below the hand.</summary>
         public double OffsetBefore => HandBefore - ObjectY;
+
+        /// <summary>Visible hand − object before this frame's motion, m (the hand before hand-motion effects).</summary>
+        public double VisibleOffsetBefore => PoseHandBefore - ObjectY;
     }
 }

@@ -133,6 +133,8 @@ namespace Kosmos.PseudoHaptic
                 f.HandDelta = f.HandAfter - f.HandBefore;
             }
             _state.HandY = f.HandAfter;
+            f.PoseHandBefore = f.HandBefore;
+            f.PoseHandAfter = f.HandAfter;
 
             effects = Profile.HandEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);

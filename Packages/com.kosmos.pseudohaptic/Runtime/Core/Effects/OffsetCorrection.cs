@@ -31,9 +31,10 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double before = Math.Abs(frame.OffsetBefore);
-            double handMove = frame.HandAfter - frame.HandBefore;
-            double afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
+            // Measured against the hand the user sees (before the deadband), since that offset is what must stay bounded.
+            double before = Math.Abs(frame.VisibleOffsetBefore);
+            double handMove = frame.PoseHandAfter - frame.PoseHandBefore;
+            double afterSigned = frame.PoseHandAfter - frame.ObjectY - frame.TotalDelta;
             double after = Math.Abs(afterSigned);
 
             if (after > before && after > Threshold)
@@ -44,7 +45,7 @@ namespace Kosmos.PseudoHaptic
                 double target = before >= Threshold + Band ? before : (before + g * (1 + Threshold / Band)) / (1 + g / Band);
                 double s = (after - target) / g; // share of the growth removed: blend the object's motion toward the hand's
                 frame.TotalDelta += s * (handMove - frame.TotalDelta);
-                afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
+                afterSigned = frame.PoseHandAfter - frame.ObjectY - frame.TotalDelta;
                 after = Math.Abs(afterSigned);
             }
 

@@ -56,18 +56,15 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         {
             var (top, rest, steps) = TenHours(profile, massKg, 0);
             Assert.That(steps, Is.EqualTo(4320000));
-            // The offset correction's release leaves a trace of each lift in the next (micrometres), so a hold
-            // settles into its cycle over hours: the hour-to-hour change must shrink (convergence), never grow
-            // (drift), and stay under a tenth of a millimetre in all.
+            // A hold settles into its cycle within minutes (the deadband and the lowering guard leave a few
+            // millimetres of each lift in the next, shrinking geometrically), then repeats it exactly: from hour 2
+            // on every hour matches hour 2 to a nanometre. Settling moves nothing by more than 5 mm.
             for (int h = 1; h < top.Length; h++)
             {
-                Assert.That(Math.Abs(top[h] - top[0]), Is.LessThan(1e-4), "offset at the top, hour " + (h + 1) + " vs hour 1");
-                Assert.That(Math.Abs(rest[h] - rest[0]), Is.LessThan(1e-4), "height at rest, hour " + (h + 1) + " vs hour 1");
-                if (h >= 2)
-                {
-                    Assert.That(Math.Abs(top[h] - top[h - 1]), Is.LessThanOrEqualTo(Math.Abs(top[h - 1] - top[h - 2]) + 1e-12), "hour " + (h + 1) + ": converging, not drifting");
-                    Assert.That(Math.Abs(rest[h] - rest[h - 1]), Is.LessThanOrEqualTo(Math.Abs(rest[h - 1] - rest[h - 2]) + 1e-12), "hour " + (h + 1) + ": converging, not drifting");
-                }
+                Assert.That(Math.Abs(top[h] - top[0]), Is.LessThan(0.005), "offset at the top, hour " + (h + 1) + " vs hour 1");
+                Assert.That(Math.Abs(rest[h] - rest[0]), Is.LessThan(0.005), "height at rest, hour " + (h + 1) + " vs hour 1");
+                Assert.That(top[h], Is.EqualTo(top[1]).Within(1e-9), "offset at the top, hour " + (h + 1) + " vs hour 2");
+                Assert.That(rest[h], Is.EqualTo(rest[1]).Within(1e-9), "height at rest, hour " + (h + 1) + " vs hour 2");
             }
         }
 

@@ -87,6 +87,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 double max = 0;
                 for (int i = 0; i < y.Length; i++) max = Math.Max(max, Math.Abs(s.Frames[i].HandY - y[i]));
                 Assert.That(max, Is.LessThan(0.25), s + ", " + s.MassKg.ToString("G3") + " kg, v_std " + s.StandardSpeed.ToString("G3"));
+                Assert.That(max, Is.LessThanOrEqualTo(0.22 + 1e-9), s + ": the correction's band ends at 0.22 m");
             }
         }
 
