@@ -102,7 +102,7 @@ public static class DemoCommand
             new("experiment-1-boxes", "Experiment 1: boxes A, B, C (paper-experiment)", NamedProfiles.PaperExperiment, boxes, liftAndPlace),
             new("experiment-2-bottles", "Experiment 2: water bottles (paper-experiment)", NamedProfiles.PaperExperiment, bottles, liftAndPlace),
             new("offset-correction", "A high lift with the offset correction (paper)", NamedProfiles.Paper,
-                new List<Item> { boxes[0], boxes[2], new("box B, 5 kg", 5, "625 kg/m³") }, highLift),
+                new List<Item> { boxes[0], boxes[2], new("box D", 5, "625 kg/m³") }, highLift),
         };
         if (recorded != null)
         {

@@ -37,7 +37,9 @@ namespace Kosmos.PseudoHaptic
             double afterSigned = frame.PoseHandAfter - frame.ObjectY - frame.TotalDelta;
             double after = Math.Abs(afterSigned);
 
-            if (after > before && after > Threshold)
+            // Growth from jitter the deadband swallowed is left alone inside the band, or every twitch of a still
+            // hand would ratchet the object toward it; past the band's end any growth is stopped.
+            if (after > before && after > Threshold && (frame.HandDelta != 0 || after > Threshold + Band))
             {
                 // The offset reached solves d = d0 + (1 − s(d))·g, s(d) = clamp((d − T)/B, 0, 1), g = the growth
                 // without correction: in the ramp d = (d0 + g·(1 + T/B)) / (1 + g/B), which lies in [T, T + B].
@@ -49,6 +51,10 @@ namespace Kosmos.PseudoHaptic
                 after = Math.Abs(afterSigned);
             }
 
+            // The pull answers offsets the hand's motion did not make (re-anchoring); it is measured against the
+            // deadbanded hand for the same reason.
+            afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
+            after = Math.Abs(afterSigned);
             double beyond = after - (Threshold + Band);
             if (beyond > 0 && PullSpeed > 0)
             {

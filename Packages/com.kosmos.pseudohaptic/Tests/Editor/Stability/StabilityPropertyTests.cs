@@ -133,5 +133,28 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 Assert.That(max, Is.LessThanOrEqualTo(band + 0.0005), s.ToString());
             }
         }
+
+        [Test]
+        public void HoldingStillAtTheCorrectionsThresholdDoesNotCreep()
+        {
+            foreach (int seed in SeedRange(40, 7000))
+            {
+                var rng = new Random(seed);
+                var headset = ScenarioGenerator.RandomHeadset(rng, seed);
+                headset.JitterSd = 0.0015;
+                double mass = ScenarioGenerator.LogUniform(rng, 2, 1e6), v = ScenarioGenerator.LogUniform(rng, 0.1, 2);
+                var path = HandPath.StartAt(0.6).Hold(0.3).MoveTo(1.4, 1.2).Hold(10.5);
+                var frames = headset.Render(path);
+                var y = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(mass), NamedProfiles.Paper, v), frames);
+                // From 1 s after the lift ends (the hand's last ~45 ms of motion reach the solver late).
+                int start = Array.FindIndex(frames, f => f.Time >= 2.5);
+                double creep = 0;
+                for (int i = start; i < y.Length; i++) creep = Math.Max(creep, Math.Abs(y[i] - y[start]));
+                // Known limit (stability.md): after a lift the deadband's reference sits at the band's edge and each new
+                // extreme of the jitter nudges it on; at the threshold the correction passes that on to the object.
+                // Bounded by the jitter's extremes: measured worst 10.8 mm over these seeds.
+                Assert.That(creep, Is.LessThan(0.015), "seed " + seed + ": " + mass.ToString("G3") + " kg, v_std " + v.ToString("G3") + ", " + headset.FrameRate + " Hz");
+            }
+        }
     }
 }
