@@ -1,0 +1,61 @@
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic.Meta
+{
+    /// <summary>
+    /// The hand pose of Meta's <c>OVRHand</c> (Meta XR Core SDK) for the pseudo-haptic components. Tracked is
+    /// <c>OVRHand.IsTracked</c> with valid data; high confidence is the hand's <c>HandConfidence</c> (and, for
+    /// pinches, the index finger's); the pinch is <c>GetFingerIsPinching(Index)</c>. Quest tracks hands at
+    /// 30 Hz (60 Hz in high-frequency mode) while frames render at 72–120 Hz: the same pose repeats over
+    /// several frames, and the core's estimator tells repeats apart by value, as no pose timestamp is read here.
+    /// Compiled only when com.meta.xr.sdk.core is installed.
+    /// </summary>
+    [AddComponentMenu("Kosmos/Pseudo-Haptic/OVR Hand Pose Source")]
+    public sealed class OvrHandPoseSource : MonoBehaviour, IPinchHandPoseSource
+    {
+        public enum PositionSource
+        {
+            /// <summary>The OVRHand's own transform (the hand anchor of OVRCameraRig: the wrist).</summary>
+            HandTransform,
+            /// <summary>OVRHand.PointerPose (between thumb and index), when the SDK says it is valid.</summary>
+            PointerPose,
+        }
+
+        [Tooltip("The OVRHand to read; found on this GameObject or its parents when empty.")]
+        [SerializeField] OVRHand _hand;
+        [SerializeField] PositionSource _position = PositionSource.HandTransform;
+        [Tooltip("A pinch counts only while the index finger is tracked with high confidence.")]
+        [SerializeField] bool _pinchNeedsHighConfidence = true;
+
+        public OVRHand OvrHand => _hand;
+
+        public void InjectHand(OVRHand hand) => _hand = hand;
+
+        void Awake()
+        {
+            if (_hand == null) _hand = GetComponentInParent<OVRHand>();
+            if (_hand == null) Debug.LogError("OVR Hand Pose Source on '" + name + "' has no OVRHand to read.", this);
+        }
+
+        public bool IsTracked => _hand != null && _hand.IsTracked && _hand.IsDataValid;
+
+        public bool IsHighConfidence => IsTracked && _hand.HandConfidence == OVRHand.TrackingConfidence.High;
+
+        public Vector3 Position
+        {
+            get
+            {
+                if (_hand == null) return new Vector3(float.NaN, float.NaN, float.NaN);
+                if (_position == PositionSource.PointerPose && _hand.IsPointerPoseValid) return _hand.PointerPose.position;
+                return _hand.transform.position;
+            }
+        }
+
+        public double PoseTime => double.NaN;
+
+        public bool IsPinching =>
+            IsTracked
+            && _hand.GetFingerIsPinching(OVRHand.HandFinger.Index)
+            && (!_pinchNeedsHighConfidence || _hand.GetFingerConfidence(OVRHand.HandFinger.Index) == OVRHand.TrackingConfidence.High);
+    }
+}

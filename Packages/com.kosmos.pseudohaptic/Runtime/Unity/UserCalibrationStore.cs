@@ -1,0 +1,150 @@
+using System;
+using System.IO;
+using System.Text;
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// Keeps each user's <see cref="UserCalibration"/> as JSON under <see cref="Application.persistentDataPath"/>,
+    /// written to a temporary file and renamed over the old one, so a crash mid-write never leaves a torn file.
+    /// The current user's calibration is read once and cached; <see cref="Changed"/> tells components to
+    /// reconfigure after a new calibration.
+    /// </summary>
+    public static class UserCalibrationStore
+    {
+        public const string DefaultUserId = "default";
+        const string FolderName = "Kosmos.PseudoHaptic";
+
+        static string s_currentUserId = DefaultUserId;
+        static string s_rootOverride;
+        static UserCalibration s_current;
+        static bool s_loaded;
+
+        /// <summary>Raised after the current user's calibration was saved, or the current user changed.</summary>
+        public static event Action Changed;
+
+        /// <summary>The folder the files live in; tests may point it elsewhere through <see cref="SetRootForTests"/>.</summary>
+        public static string Folder => s_rootOverride ?? Path.Combine(Application.persistentDataPath, FolderName);
+
+        /// <summary>Whose calibration <see cref="Current"/> is.</summary>
+        public static string CurrentUserId
+        {
+            get => s_currentUserId;
+            set
+            {
+                string id = string.IsNullOrWhiteSpace(value) ? DefaultUserId : value;
+                if (id == s_currentUserId) return;
+                s_currentUserId = id;
+                s_loaded = false;
+                Changed?.Invoke();
+            }
+        }
+
+        /// <summary>The current user's stored calibration, or null when there is none (or it is unreadable).</summary>
+        public static UserCalibration Current
+        {
+            get
+            {
+                if (!s_loaded)
+                {
+                    s_loaded = true;
+                    if (!TryLoad(s_currentUserId, out s_current, out string error) && error != null)
+                        Debug.LogWarning("Pseudo-haptic weight: the calibration of user '" + s_currentUserId + "' was not used: " + error);
+                }
+                return s_current;
+            }
+        }
+
+        /// <summary>The current user's v_std, or the solver's default when the user has not calibrated.</summary>
+        public static double StandardSpeedOrDefault => Current != null ? Current.standardSpeed : WeightSolver.DefaultStandardSpeed;
+
+        public static string PathFor(string userId) => Path.Combine(Folder, "user-" + SafeId(userId) + ".json");
+
+        /// <summary>
+        /// Reads a user's calibration. False with a null error when the user has none; false with the reason
+        /// when the file exists but cannot be used.
+        /// </summary>
+        public static bool TryLoad(string userId, out UserCalibration calibration, out string error)
+        {
+            calibration = null;
+            error = null;
+            string path = PathFor(userId);
+            if (!File.Exists(path)) return false;
+            try
+            {
+                var c = JsonUtility.FromJson<UserCalibration>(File.ReadAllText(path, Encoding.UTF8));
+                if (c == null) { error = path + " is empty"; return false; }
+                string invalid = c.Validate();
+                if (invalid != null) { error = path + ": " + invalid; return false; }
+                calibration = c;
+                return true;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException)
+            {
+                error = path + " could not be read: " + e.Message;
+                return false;
+            }
+        }
+
+        /// <summary>Stores a calibration (write, then rename over the old file) and, for the current user, raises <see cref="Changed"/>.</summary>
+        public static string Save(UserCalibration calibration)
+        {
+            if (calibration == null) throw new ArgumentNullException(nameof(calibration));
+            string invalid = calibration.Validate();
+            if (invalid != null) throw new ArgumentException("calibration not saved: " + invalid, nameof(calibration));
+            if (string.IsNullOrWhiteSpace(calibration.userId)) calibration.userId = s_currentUserId;
+
+            string path = PathFor(calibration.userId);
+            Directory.CreateDirectory(Path.GetDirectoryName(path));
+            string temp = path + ".tmp";
+            File.WriteAllText(temp, JsonUtility.ToJson(calibration, true), new UTF8Encoding(false));
+            if (File.Exists(path))
+            {
+                try { File.Replace(temp, path, null); }
+                catch (PlatformNotSupportedException) { File.Delete(path); File.Move(temp, path); }
+            }
+            else
+            {
+                File.Move(temp, path);
+            }
+
+            if (SafeId(calibration.userId) == SafeId(s_currentUserId))
+            {
+                s_current = calibration;
+                s_loaded = true;
+                Changed?.Invoke();
+            }
+            return path;
+        }
+
+        /// <summary>Points the store at another folder (null: back to persistentDataPath) and forgets the cache.</summary>
+        public static void SetRootForTests(string folder)
+        {
+            s_rootOverride = folder;
+            s_loaded = false;
+            s_current = null;
+        }
+
+        /// <summary>User ids become file names: anything but letters, digits, '-' and '_' becomes '_'.</summary>
+        static string SafeId(string userId)
+        {
+            if (string.IsNullOrWhiteSpace(userId)) return DefaultUserId;
+            var sb = new StringBuilder(userId.Length);
+            foreach (char ch in userId)
+                sb.Append((ch < 128 && char.IsLetterOrDigit(ch)) || ch == '-' || ch == '_' ? ch : '_');
+            return sb.ToString();
+        }
+
+        [RuntimeInitializeOnLoadMethod(RuntimeInitializeLoadType.SubsystemRegistration)]
+        static void ResetStatics()
+        {
+            // With domain reload off, statics survive play sessions: start each one clean.
+            s_currentUserId = DefaultUserId;
+            s_rootOverride = null;
+            s_current = null;
+            s_loaded = false;
+            Changed = null;
+        }
+    }
+}

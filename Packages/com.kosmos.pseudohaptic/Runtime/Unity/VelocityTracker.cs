@@ -1,0 +1,51 @@
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// Velocity of a tracked point for the release velocity. Hand poses arrive at 30 Hz while frames run at
+    /// 72–120 Hz, so a repeated position carries no information: the velocity is measured between position
+    /// changes at least <see cref="Window"/> seconds apart, and reads as zero once the point has not moved for
+    /// <see cref="StillAfter"/> seconds. Always finite; no allocation.
+    /// </summary>
+    public struct VelocityTracker
+    {
+        public const double Window = 0.05;
+        public const double StillAfter = 0.1;
+
+        Vector3 _anchor, _last;
+        double _anchorTime, _lastTime;
+        Vector3 _velocity;
+        bool _hasAnchor;
+
+        /// <summary>The velocity at time <paramref name="now"/> (same clock as <see cref="Add"/>).</summary>
+        public Vector3 VelocityAt(double now) =>
+            _hasAnchor && now - _lastTime <= StillAfter ? _velocity : Vector3.zero;
+
+        public void Reset(Vector3 position, double time)
+        {
+            _velocity = Vector3.zero;
+            _hasAnchor = IsFinite(position) && IsFinite(time);
+            _anchor = _last = position;
+            _anchorTime = _lastTime = time;
+        }
+
+        public void Add(Vector3 position, double time)
+        {
+            if (!IsFinite(position) || !IsFinite(time)) return;
+            if (!_hasAnchor || time < _lastTime) { Reset(position, time); return; }
+            if (position.x == _last.x && position.y == _last.y && position.z == _last.z) return; // a repeated pose
+            _last = position;
+            _lastTime = time;
+            double elapsed = time - _anchorTime;
+            if (elapsed < Window) return;
+            Vector3 v = (position - _anchor) / (float)elapsed;
+            if (IsFinite(v)) _velocity = v;
+            _anchor = position;
+            _anchorTime = time;
+        }
+
+        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
+        static bool IsFinite(Vector3 v) => IsFinite(v.x) && IsFinite(v.y) && IsFinite(v.z);
+    }
+}

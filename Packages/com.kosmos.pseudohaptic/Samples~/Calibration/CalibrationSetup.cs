@@ -1,0 +1,32 @@
+using Kosmos.PseudoHaptic.Samples;
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic.SampleScenes
+{
+    /// <summary>
+    /// Builds the calibration station (Son et al. 2022, Fig. 6a) when the scene starts: a table, a marker for
+    /// the golf ball, instructions, and a StandardSpeedCalibrator reading the hand that holds the ball.
+    /// Put it on an empty GameObject in a scene that has a hand rig.
+    /// </summary>
+    public sealed class CalibrationSetup : MonoBehaviour
+    {
+        [Tooltip("The hand that holds the golf ball (an IHandPoseSource); the scene's last pinch hand when empty.")]
+        [SerializeField] MonoBehaviour _hand = null;
+
+        void Awake()
+        {
+            IHandPoseSource hand = HandSourceField.Resolve<IHandPoseSource>(_hand);
+            if (hand == null)
+            {
+                var hands = SampleContent.HandsInScene();
+                if (hands.Count > 0) hand = hands[hands.Count - 1];
+            }
+            if (hand == null)
+            {
+                Debug.LogError("Calibration sample: no hand pose source in the scene (add OvrHandPoseSource to an OVRHand).", this);
+                return;
+            }
+            SampleContent.CalibrationStation(transform, hand);
+        }
+    }
+}

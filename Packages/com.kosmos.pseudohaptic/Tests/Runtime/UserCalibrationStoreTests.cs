@@ -1,0 +1,73 @@
+using System.IO;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    public sealed class UserCalibrationStoreTests
+    {
+        string _folder;
+
+        [SetUp]
+        public void UseTemporaryStore()
+        {
+            _folder = Path.Combine(Path.GetTempPath(), "kosmos-pseudohaptic-store-" + System.Guid.NewGuid().ToString("N"));
+            UserCalibrationStore.SetRootForTests(_folder);
+        }
+
+        [TearDown]
+        public void RemoveTemporaryStore()
+        {
+            UserCalibrationStore.SetRootForTests(null);
+            if (Directory.Exists(_folder)) Directory.Delete(_folder, true);
+        }
+
+        static UserCalibration Calibration(string user, double speed) =>
+            UserCalibration.From(user, new CalibrationResult(true, speed, 5, 5, 0.05, null));
+
+        [Test]
+        public void WhatIsSavedIsLoadedAndNoTemporaryFileStays()
+        {
+            string path = UserCalibrationStore.Save(Calibration("ana", 0.62));
+            UserCalibrationStore.Save(Calibration("ana", 0.71)); // replaces the first
+            Assert.That(UserCalibrationStore.TryLoad("ana", out UserCalibration c, out string error), Is.True, error);
+            Assert.That(c.standardSpeed, Is.EqualTo(0.71));
+            Assert.That(c.liftsUsed, Is.EqualTo(5));
+            Assert.That(File.Exists(path + ".tmp"), Is.False);
+        }
+
+        [Test]
+        public void AUserWithoutCalibrationGetsTheDefaultSpeed()
+        {
+            UserCalibrationStore.CurrentUserId = "nobody";
+            Assert.That(UserCalibrationStore.TryLoad("nobody", out _, out string error), Is.False);
+            Assert.That(error, Is.Null);
+            Assert.That(UserCalibrationStore.StandardSpeedOrDefault, Is.EqualTo(WeightSolver.DefaultStandardSpeed));
+            UserCalibrationStore.CurrentUserId = null;
+        }
+
+        [Test]
+        public void ACorruptOrOutOfRangeFileIsRefusedWithTheReason()
+        {
+            Directory.CreateDirectory(_folder);
+            File.WriteAllText(UserCalibrationStore.PathFor("broken"), "{ not json");
+            Assert.That(UserCalibrationStore.TryLoad("broken", out _, out string error), Is.False);
+            Assert.That(error, Is.Not.Null);
+
+            File.WriteAllText(UserCalibrationStore.PathFor("fast"), "{\"format\":1,\"standardSpeed\":50.0}");
+            Assert.That(UserCalibrationStore.TryLoad("fast", out _, out error), Is.False);
+            Assert.That(error, Does.Contain("standardSpeed"));
+        }
+
+        [Test]
+        public void SavingTheCurrentUserTellsTheComponents()
+        {
+            int changes = 0;
+            void Count() => changes++;
+            UserCalibrationStore.Changed += Count;
+            UserCalibrationStore.Save(Calibration(UserCalibrationStore.CurrentUserId, 0.55));
+            UserCalibrationStore.Changed -= Count;
+            Assert.That(changes, Is.EqualTo(1));
+            Assert.That(UserCalibrationStore.StandardSpeedOrDefault, Is.EqualTo(0.55));
+        }
+    }
+}
