@@ -18,6 +18,8 @@ namespace Kosmos.PseudoHaptic.Cli
                                                      score questionnaire responses
               report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]
                                                      tables, statistics and charts of scores
+              accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS --chart OUT.png]
+                                                     accuracy of each estimator on Quest-like input (accuracy-vs-time.md)
             """;
 
         public static int Run(string[] args)
@@ -36,7 +38,8 @@ namespace Kosmos.PseudoHaptic.Cli
                     "replay" => ReplayCommand.Run(rest),
                     "score" => ScoreCommand.Run(rest),
                     "report" => ReportCommand.Run(rest),
-                    _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score or report"),
+                    "accuracy" => AccuracyCommand.Run(rest),
+                    _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score, report or accuracy"),
                 };
             }
             catch (CliException e)

@@ -28,8 +28,11 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (frame.MotionInterval <= 0) return;
-            double max = constants.CapSpeed * frame.MotionInterval;
+            // Over the pose's interval when a pose arrived; otherwise over the frame, for a hand filter that moves
+            // the followed hand between poses.
+            double window = frame.MotionInterval > 0 ? frame.MotionInterval : frame.Dt;
+            if (window <= 0) return;
+            double max = constants.CapSpeed * window;
             if (frame.ObjectDelta > max) frame.ObjectDelta = max;
             else if (frame.ObjectDelta < -max) frame.ObjectDelta = -max;
         }

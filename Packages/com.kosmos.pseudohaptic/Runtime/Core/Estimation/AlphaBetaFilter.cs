@@ -6,9 +6,10 @@ namespace Kosmos.PseudoHaptic
     /// It is the steady-state form of the two-state (height, speed) Kalman filter with white-acceleration
     /// noise (Kalata 1984): with poses at a steady 30 Hz the Kalman gains converge to constant α, β within a
     /// few poses, so a full Kalman filter would spend a 2×2 covariance update per pose to arrive at the same
-    /// two numbers. Chosen for that, and because α and β are easy to state (the defaults follow
-    /// Benedict–Bordner, β = α²/(2 − α), a good lag/overshoot compromise). Tracks a ramp with no steady-state
-    /// lag, smooths white jitter (σ × 0.64 at the defaults) and overshoots briefly when the hand stops.
+    /// two numbers. Chosen for that, and because α and β are easy to state: β follows Benedict–Bordner,
+    /// β = α²/(2 − α), a good lag/overshoot compromise, and α = 0.6 came out of the sweep in
+    /// accuracy-vs-time.md (0.5 added more than 40 ms of lag on fast lifts). Tracks a ramp with no steady-state
+    /// lag, smooths white jitter (σ × 0.71 at the defaults) and overshoots briefly when the hand stops.
     /// Runs on new poses only; T is clamped to [1 ms, 100 ms] so a stalled or sub-millisecond pose clock
     /// cannot throw the speed estimate.
     /// </summary>
@@ -27,7 +28,7 @@ namespace Kosmos.PseudoHaptic
 
         public string Name => "alpha-beta";
 
-        public AlphaBetaFilter(double alpha = 0.5, double beta = 0.5 * 0.5 / (2 - 0.5))
+        public AlphaBetaFilter(double alpha = 0.6, double beta = 0.6 * 0.6 / (2 - 0.6))
         {
             Alpha = ConfigurationGuard.InRange(alpha, 1e-3, 1, nameof(alpha));
             Beta = ConfigurationGuard.InRange(beta, 0, 2 - Alpha, nameof(beta));

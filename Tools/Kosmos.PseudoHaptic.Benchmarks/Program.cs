@@ -1,0 +1,8 @@
+using BenchmarkDotNet.Running;
+using Kosmos.PseudoHaptic.Benchmarks;
+
+// What the solver costs per update (issue 4). Every class runs a short job (1 launch, 3 warm-ups, 5 iterations)
+// so the whole suite takes minutes on 2 cores. Examples:
+//   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --filter '*'
+//   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --filter '*Batch*'
+BenchmarkSwitcher.FromAssembly(typeof(BenchmarkConfig).Assembly).Run(args, new BenchmarkConfig());

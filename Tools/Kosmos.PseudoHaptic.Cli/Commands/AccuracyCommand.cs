@@ -1,0 +1,83 @@
+using Kosmos.PseudoHaptic.Cli.Accuracy;
+
+namespace Kosmos.PseudoHaptic.Cli.Commands;
+
+/// <summary>
+/// <c>pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none]
+/// [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png]</c>: what each estimator,
+/// precision and integration scheme costs in accuracy on Quest-like input. Prints the tables on stdout
+/// (progress on stderr). Deterministic: the same arguments print the same tables. accuracy-vs-time.md says
+/// what every column means.
+/// </summary>
+public static class AccuracyCommand
+{
+    public const string Usage = "pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png]";
+
+    public const string MocapRelative = "../shared/data/mocap-hand-100hz.csv";
+    public const double DefaultMassKg = 1.0;
+    public const double DefaultLongMinutes = 60;
+
+    public static int Run(string[] args)
+    {
+        var o = new Options(args, "--trace", "--lifts", "--mass-kg", "--standard-speed", "--mocap", "--long-minutes", "--csv", "--costs", "--chart");
+        double mass = o.Number("--mass-kg") ?? DefaultMassKg;
+        if (!(mass > 0) || double.IsInfinity(mass))
+            throw new CliException($"option --mass-kg: must be a finite number greater than 0, got {NumberText.Format(mass)}");
+        double speed = o.Number("--standard-speed") ?? WeightSolver.DefaultStandardSpeed;
+        if (!(speed >= WeightSolver.MinStandardSpeed && speed <= WeightSolver.MaxStandardSpeed))
+            throw new CliException($"option --standard-speed: must lie in [{WeightSolver.MinStandardSpeed}, {WeightSolver.MaxStandardSpeed}] m/s, got {NumberText.Format(speed)}");
+        double minutes = o.Number("--long-minutes") ?? DefaultLongMinutes;
+        if (!(minutes >= 0 && minutes <= 24 * 60))
+            throw new CliException($"option --long-minutes: must lie in [0, 1440], got {NumberText.Format(minutes)}");
+        string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
+        if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
+        var costs = costsPath != null ? BenchmarkCosts.Read(costsPath) : null;
+
+        var notes = new List<string>();
+        var sources = new List<AccuracySource>();
+        switch (o.Get("--lifts") ?? "all")
+        {
+            case "all": sources.AddRange(AccuracySource.Lifts()); break;
+            case "none": break;
+            case var other: throw new CliException($"option --lifts: expected all or none, got '{other}'");
+        }
+        string? trace = o.Get("--trace");
+        if (trace != null) sources.Add(AccuracySource.FromTrace("trace", trace));
+        string? mocap = o.Get("--mocap");
+        if (mocap == null)
+        {
+            mocap = FindMocap();
+            if (mocap == null) notes.Add($"motion-capture trace {MocapRelative} (beside the repository root) not found: skipped");
+        }
+        else if (mocap == "none") mocap = null;
+        if (mocap != null) sources.Add(AccuracySource.FromTrace("mocap", mocap));
+        if (sources.Count == 0) throw new CliException("nothing to measure: --lifts none without --trace or a motion-capture trace");
+
+        var model = WeightModel.FromMass(mass);
+        var report = AccuracyStudy.Run(new AccuracyStudy.Settings(model, speed, sources, minutes, notes), Console.Error);
+        AccuracyTable.Write(Console.Out, report);
+
+        string? csv = o.Get("--csv");
+        if (csv != null) AtomicFile.Write(csv, w => AccuracyTable.WriteCsv(w, report));
+        if (chartPath != null && costs != null)
+        {
+            ParetoChart.Save(chartPath, report, costs);
+            Console.Error.WriteLine($"accuracy: chart written to {chartPath}");
+        }
+        return 0;
+    }
+
+    /// <summary>The motion-capture trace beside the repository that holds the current directory or this tool, if there is one.</summary>
+    static string? FindMocap()
+    {
+        foreach (var start in new[] { Directory.GetCurrentDirectory(), AppContext.BaseDirectory })
+            for (var dir = new DirectoryInfo(start); dir != null; dir = dir.Parent)
+                if (File.Exists(Path.Combine(dir.FullName, "Packages", "com.kosmos.pseudohaptic", "package.json")))
+                {
+                    string candidate = Path.GetFullPath(Path.Combine(dir.FullName, MocapRelative));
+                    if (File.Exists(candidate)) return candidate;
+                    break;
+                }
+        return null;
+    }
+}
