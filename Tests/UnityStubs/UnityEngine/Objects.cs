@@ -6,6 +6,7 @@
 //   Runtime/Export/Scripting/GameObject.bindings.cs          (GameObject)
 //   Runtime/Export/Scripting/ScriptableObject.bindings.cs    (ScriptableObject)
 //   Runtime/Export/BaseClass.cs                              (PrimitiveType)
+//   Runtime/Export/Scripting/TextAsset.cs                    (TextAsset)
 // Only the members the package calls; every body throws.
 namespace UnityEngine
 {
@@ -32,6 +33,7 @@ namespace UnityEngine
     public class Behaviour : Component
     {
         public bool enabled { get => throw null; set => throw null; }
+        public bool isActiveAndEnabled => throw null;
     }
 
     public class MonoBehaviour : Behaviour
@@ -52,6 +54,13 @@ namespace UnityEngine
         public T[] GetComponents<T>() => throw null;
         public T AddComponent<T>() where T : Component => throw null;
         public void SetActive(bool value) => throw null;
+        public bool activeSelf => throw null;
+    }
+
+    public partial class TextAsset : Object
+    {
+        public TextAsset(string text) => throw null;
+        public string text => throw null;
     }
 
     public enum FindObjectsSortMode

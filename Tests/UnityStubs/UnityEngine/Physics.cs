@@ -23,6 +23,7 @@ namespace UnityEngine
     public class Collider : Component
     {
         public bool enabled { get => throw null; set => throw null; }
+        public bool isTrigger { get => throw null; set => throw null; }
         public Vector3 ClosestPoint(Vector3 position) => throw null;
         public Bounds bounds => throw null;
     }

@@ -2,7 +2,7 @@
 //   Runtime/Export/Graphics/Mesh.cs + Mesh.bindings.cs (Mesh), Runtime/Export/Graphics/GraphicsComponents.bindings.cs
 //   (MeshFilter), Runtime/Export/Graphics/GraphicsRenderers.bindings.cs (Renderer, MeshRenderer),
 //   Runtime/Export/Shaders/Material.bindings.cs (Material), Runtime/Export/Camera/Camera.bindings.cs (Camera),
-//   Modules/TextRendering/TextRendering.bindings.cs (Font, TextMesh, TextAnchor),
+//   Modules/TextRendering/TextRendering.bindings.cs (Font, TextMesh, TextAnchor, TextAlignment),
 //   Runtime/Export/Gizmos/Gizmos.bindings.cs (Gizmos)
 namespace UnityEngine
 {
@@ -20,6 +20,7 @@ namespace UnityEngine
 
     public class Renderer : Component
     {
+        public Material material { get => throw null; set => throw null; }
         public Material sharedMaterial { get => throw null; set => throw null; }
     }
 
@@ -29,6 +30,7 @@ namespace UnityEngine
 
     public class Material : Object
     {
+        public Color color { get => throw null; set => throw null; }
     }
 
     public sealed class Camera : Behaviour
@@ -46,8 +48,17 @@ namespace UnityEngine
         public string text { get => throw null; set => throw null; }
         public Font font { get => throw null; set => throw null; }
         public int fontSize { get => throw null; set => throw null; }
+        public TextAlignment alignment { get => throw null; set => throw null; }
         public TextAnchor anchor { get => throw null; set => throw null; }
         public float characterSize { get => throw null; set => throw null; }
+        public Color color { get => throw null; set => throw null; }
+    }
+
+    public enum TextAlignment
+    {
+        Left = 0,
+        Center = 1,
+        Right = 2,
     }
 
     public enum TextAnchor

@@ -14,6 +14,7 @@ namespace UnityEngine
         public static void LogError(object message) => throw null;
         public static void LogError(object message, Object context) => throw null;
         public static void LogException(Exception exception) => throw null;
+        public static void LogException(Exception exception, Object context) => throw null;
     }
 
     public enum LogType

@@ -13,5 +13,7 @@ namespace UnityEngine
         public Vector3 TransformPoint(Vector3 position) => throw null;
         public Vector3 InverseTransformPoint(Vector3 position) => throw null;
         public Transform Find(string n) => throw null;
+        public int childCount => throw null;
+        public Transform GetChild(int index) => throw null;
     }
 }

@@ -30,8 +30,17 @@ namespace Kosmos.PseudoHaptic.Evaluation
             try
             {
                 write(temp);
-                if (File.Exists(full)) File.Replace(temp, full, null);
-                else File.Move(temp, full);
+                if (!File.Exists(full)) File.Move(temp, full);
+                else
+                {
+                    try { File.Replace(temp, full, null); }
+                    catch (PlatformNotSupportedException)
+                    {
+                        // Some runtimes lack an atomic replace: the old file goes, then the new one takes its name.
+                        File.Delete(full);
+                        File.Move(temp, full);
+                    }
+                }
             }
             catch
             {

@@ -95,8 +95,20 @@ namespace Kosmos.PseudoHaptic
 
         double _clock;
         Vector3 _handWorld;
+        HandSample _lastHand;
+        float _lastDt;
         VelocityTracker _handVelocity;
         VelocityTracker _objectVelocity;
+
+        /// <summary>
+        /// Raised with the weight after any weight's hold began (<see cref="BeginHold(Vector3, double, RigidbodyControl)"/>
+        /// succeeded), after each of its steps, and after it ended: for observers such as <see cref="SessionRecorder"/>,
+        /// which read <see cref="Solver"/>, <see cref="LastHand"/> and <see cref="LastDeltaTime"/>. Raising allocates
+        /// nothing; a handler that throws is logged and does not stop the hold.
+        /// </summary>
+        public static event Action<PseudoHapticWeight> HoldBegan;
+        public static event Action<PseudoHapticWeight> HoldStepped;
+        public static event Action<PseudoHapticWeight> HoldEnded;
 
         /// <summary>The enabled weights, for grab drivers that look for the nearest one. Index it; do not keep it.</summary>
         public static IReadOnlyList<PseudoHapticWeight> Enabled => s_enabled;
@@ -115,6 +127,15 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>hand − object in the parent's space, m; positive when the object hangs below the hand; 0 when not held.</summary>
         public double Offset => IsHeld ? _solver.Offset : 0;
+
+        /// <summary>
+        /// The hand as the solver was given it on the hold's last frame (its begin or its last step): height in the
+        /// parent's space (NaN while untracked), tracking, confidence, pose time.
+        /// </summary>
+        public HandSample LastHand => _lastHand;
+
+        /// <summary>The frame time given to the last step, s (0 right after the hold began).</summary>
+        public float LastDeltaTime => _lastDt;
 
         /// <summary>The hand's last tracked world position during the hold.</summary>
         public Vector3 HandWorldPosition => _handWorld;
@@ -306,9 +327,10 @@ namespace Kosmos.PseudoHaptic
             if (IsHeld) return false;
             if (NeedsConfiguration) Configure();
             if (_solver == null) return false;
+            double handY = ParentY(handWorld);
             try
             {
-                _solver.BeginHold(ParentY(handWorld), transform.localPosition.y, poseTime);
+                _solver.BeginHold(handY, transform.localPosition.y, poseTime);
             }
             catch (ArgumentException e)
             {
@@ -336,6 +358,10 @@ namespace Kosmos.PseudoHaptic
             _handWorld = handWorld;
             _handVelocity.Reset(handWorld, 0);
             _objectVelocity.Reset(transform.position, 0);
+            bool usable = !double.IsNaN(handY) && !double.IsInfinity(handY);
+            _lastHand = new HandSample(handY, usable, usable, poseTime);
+            _lastDt = 0;
+            Raise(HoldBegan);
             return true;
         }
 
@@ -356,6 +382,8 @@ namespace Kosmos.PseudoHaptic
             var sample = new HandSample(handY, isTracked, isHighConfidence, poseTime);
             double y = _solver.Step(in sample, dt);
             SetLocalY(y);
+            _lastHand = sample;
+            _lastDt = dt;
 
             if (dt > 0 && dt < float.PositiveInfinity) _clock += dt;
             if (isTracked)
@@ -364,6 +392,7 @@ namespace Kosmos.PseudoHaptic
                 _handVelocity.Add(handWorld, _clock);
             }
             _objectVelocity.Add(transform.position, _clock);
+            Raise(HoldStepped);
             return transform.localPosition.y;
         }
 
@@ -379,6 +408,12 @@ namespace Kosmos.PseudoHaptic
         {
             if (!IsHeld) return;
             _solver.EndHold();
+            RestoreRigidbody();
+            Raise(HoldEnded);
+        }
+
+        void RestoreRigidbody()
+        {
             if (!_controlsRigidbody) return;
             _controlsRigidbody = false;
             if (_rigidbody == null) return;
@@ -389,6 +424,13 @@ namespace Kosmos.PseudoHaptic
                 : _releaseVelocity == ReleaseVelocity.Object ? ObjectVelocity
                 : Vector3.zero;
             _rigidbody.angularVelocity = Vector3.zero;
+        }
+
+        void Raise(Action<PseudoHapticWeight> handlers)
+        {
+            if (handlers == null) return;
+            try { handlers(this); }
+            catch (Exception e) { Debug.LogException(e, this); }
         }
 
         /// <summary>A world point's height in this object's parent space, the space its local y lives in.</summary>
@@ -408,6 +450,13 @@ namespace Kosmos.PseudoHaptic
         }
 
         [RuntimeInitializeOnLoadMethod(RuntimeInitializeLoadType.SubsystemRegistration)]
-        static void ResetStatics() => s_enabled.Clear();
+        static void ResetStatics()
+        {
+            // With domain reload off, statics survive play sessions: start each one clean.
+            s_enabled.Clear();
+            HoldBegan = null;
+            HoldStepped = null;
+            HoldEnded = null;
+        }
     }
 }
