@@ -1,10 +1,6 @@
 using System;
 using System.Collections.Generic;
 using NUnit.Framework;
-#if UNITY_5_3_OR_NEWER
-using UnityEngine.TestTools.Constraints;
-using Is = UnityEngine.TestTools.Constraints.Is;
-#endif
 
 namespace Kosmos.PseudoHaptic.Tests
 {
@@ -229,15 +225,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var f = prototype.Create();
             f.Reset(1);
-            Calls(f, 1000); // warm up: JIT
-#if UNITY_5_3_OR_NEWER
-            Assert.That(() => Calls(f, 10000), Is.Not.AllocatingGCMemory());
-#else
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            Calls(f, 100000);
-            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-            Assert.That(allocated, NUnit.Framework.Is.EqualTo(0), "bytes allocated over 100 000 calls");
-#endif
+            Allocation.AssertNone(n => Calls(f, n), "calls");
         }
 
         [TestCaseSource(nameof(Filters))]
@@ -245,14 +233,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var solver = Run.Solver(0.7, NamedProfiles.Paper.WithHandFilter(filter));
             solver.BeginHold(1, 1, 0);
-            Steps(solver, 1000);
-#if UNITY_5_3_OR_NEWER
-            Assert.That(() => Steps(solver, 10000), Is.Not.AllocatingGCMemory());
-#else
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            Steps(solver, 100000);
-            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, NUnit.Framework.Is.EqualTo(0), "bytes allocated over 100 000 steps");
-#endif
+            Allocation.AssertNone(n => Steps(solver, n), "steps");
         }
 
         static void Steps(WeightSolver solver, int count)
