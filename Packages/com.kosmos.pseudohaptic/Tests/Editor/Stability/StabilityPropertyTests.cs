@@ -137,7 +137,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         [Test]
         public void HoldingStillAtTheCorrectionsThresholdDoesNotCreep()
         {
-            foreach (int seed in SeedRange(40, 7000))
+            foreach (int seed in SeedRange(80, 6000))
             {
                 var rng = new Random(seed);
                 var headset = ScenarioGenerator.RandomHeadset(rng, seed);
@@ -150,10 +150,12 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 int start = Array.FindIndex(frames, f => f.Time >= 2.5);
                 double creep = 0;
                 for (int i = start; i < y.Length; i++) creep = Math.Max(creep, Math.Abs(y[i] - y[start]));
-                // Known limit (stability.md): after a lift the deadband's reference sits at the band's edge and each new
-                // extreme of the jitter nudges it on; at the threshold the correction passes that on to the object.
-                // Bounded by the jitter's extremes: measured worst 10.8 mm over these seeds.
-                Assert.That(creep, Is.LessThan(0.015), "seed " + seed + ": " + mass.ToString("G3") + " kg, v_std " + v.ToString("G3") + ", " + headset.FrameRate + " Hz");
+                // Known limit (stability.md): inside the correction's band, jitter that passes the deadband upward is
+                // partly followed and jitter downward is not, so a still hand draws the object toward it until the
+                // offset is back at the threshold: at most the band's width, 20 mm, then no further.
+                Assert.That(creep, Is.LessThanOrEqualTo(0.02 + 1e-6), "seed " + seed + ": " + mass.ToString("G3") + " kg, v_std " + v.ToString("G3") + ", " + headset.FrameRate + " Hz");
+                double finalOffset = frames[frames.Length - 1].HandY - y[y.Length - 1];
+                Assert.That(finalOffset, Is.GreaterThan(0.2 - 0.01), "seed " + seed + ": settles at the threshold, not at the hand");
             }
         }
     }
