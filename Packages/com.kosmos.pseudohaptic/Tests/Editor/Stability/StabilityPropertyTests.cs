@@ -150,12 +150,11 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 int start = Array.FindIndex(frames, f => f.Time >= 2.5);
                 double creep = 0;
                 for (int i = start; i < y.Length; i++) creep = Math.Max(creep, Math.Abs(y[i] - y[start]));
-                // Known limit (stability.md): inside the correction's band, jitter that passes the deadband upward is
-                // partly followed and jitter downward is not, so a still hand draws the object toward it until the
-                // offset is back at the threshold: at most the band's width, 20 mm, then no further.
-                Assert.That(creep, Is.LessThanOrEqualTo(0.02 + 1e-6), "seed " + seed + ": " + mass.ToString("G3") + " kg, v_std " + v.ToString("G3") + ", " + headset.FrameRate + " Hz");
+                // Inside the correction's band the share of the hand's motion is judged at each step's midpoint, so
+                // jitter up and down cancels (a rule judged at one end drew the object up to 17 mm toward the hand).
+                Assert.That(creep, Is.LessThan(0.01), "seed " + seed + ": " + mass.ToString("G3") + " kg, v_std " + v.ToString("G3") + ", " + headset.FrameRate + " Hz");
                 double finalOffset = frames[frames.Length - 1].HandY - y[y.Length - 1];
-                Assert.That(finalOffset, Is.GreaterThan(0.2 - 0.01), "seed " + seed + ": settles at the threshold, not at the hand");
+                Assert.That(finalOffset, Is.GreaterThan(0.2), "seed " + seed + ": still held in the band, not drawn to the hand");
             }
         }
     }
