@@ -40,7 +40,7 @@ public sealed record AccuracySource(string Name, string Description, HandPath Ha
         var heights = new List<double>();
         foreach (var f in frames)
         {
-            if (!f.Tracked || !double.IsFinite(f.HandY) || Math.Abs(f.HandY) >= WeightSolver.MaxCoordinate) continue;
+            if (!f.IsUsable) continue;
             double t = double.IsFinite(f.PoseTime) ? f.PoseTime : f.Time;
             if (!double.IsFinite(t) || (times.Count > 0 && !(t > times[^1]))) continue;
             times.Add(t);

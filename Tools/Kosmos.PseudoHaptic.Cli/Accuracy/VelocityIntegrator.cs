@@ -32,7 +32,7 @@ public sealed class VelocityIntegrator(double gain, int subSteps = 1) : IObjectI
             PoseY = frame.HandY,
             PoseTime = double.IsFinite(frame.PoseTime) ? frame.PoseTime : double.NaN,
             IsHighConfidence = frame.Tracked,
-            Usable = frame.Tracked && !double.IsNaN(frame.HandY) && System.Math.Abs(frame.HandY) < WeightSolver.MaxCoordinate,
+            Usable = frame.IsUsable,
             ObjectY = _object,
         };
         _estimator.Update(ref f, SolverLimits.Default);

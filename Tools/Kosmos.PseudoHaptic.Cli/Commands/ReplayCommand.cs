@@ -56,7 +56,7 @@ public static class ReplayCommand
             double objectY;
             if (!holding)
             {
-                if (!Usable(f)) { waiting.Add(f); continue; }
+                if (!f.IsUsable) { waiting.Add(f); continue; }
                 solver.BeginHold(f.HandY, f.HandY, f.PoseTime);
                 holding = true;
                 foreach (var early in waiting) Write(w, early, solver.ObjectY);
@@ -75,11 +75,9 @@ public static class ReplayCommand
         return holding || waiting.Count == 0;
     }
 
-    static bool Usable(in TraceFrame f) => f.Tracked && double.IsFinite(f.HandY) && Math.Abs(f.HandY) < WeightSolver.MaxCoordinate;
-
     static void Write(TextWriter w, in TraceFrame f, double objectY)
     {
-        double offset = Usable(f) ? f.HandY - objectY : double.NaN;
+        double offset = f.IsUsable ? f.HandY - objectY : double.NaN;
         w.Write(NumberText.Format(f.Time)); w.Write(',');
         w.Write(NumberText.Format(f.HandY)); w.Write(',');
         w.Write(NumberText.Format(objectY)); w.Write(',');

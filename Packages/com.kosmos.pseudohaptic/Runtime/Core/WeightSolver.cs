@@ -71,7 +71,7 @@ namespace Kosmos.PseudoHaptic
         public void BeginHold(double handY, double objectY, double poseTime = double.NaN)
         {
             ConfigurationGuard.InRange(objectY, -MaxCoordinate, MaxCoordinate, nameof(objectY));
-            bool handOk = !double.IsNaN(handY) && Math.Abs(handY) < MaxCoordinate;
+            bool handOk = HandSample.IsUsableHeight(handY);
             _state = default;
             _state.IsHolding = true;
             var floor = Profile.Find<FloorClamp>();
@@ -103,9 +103,9 @@ namespace Kosmos.PseudoHaptic
             {
                 Dt = dt,
                 PoseY = sample.Y,
-                PoseTime = IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
+                PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
                 IsHighConfidence = sample.IsHighConfidence,
-                Usable = sample.IsTracked && !double.IsNaN(sample.Y) && Math.Abs(sample.Y) < MaxCoordinate,
+                Usable = sample.IsUsable,
                 ObjectY = _state.ObjectY,
             };
 
@@ -126,7 +126,7 @@ namespace Kosmos.PseudoHaptic
                 if (f.Usable && _state.Estimator.HasPose)
                 {
                     double filtered = _filter.Filter(f.HandAfter, f.MotionInterval > 0, f.MotionInterval, dt);
-                    if (IsFinite(filtered)) f.HandAfter = filtered;
+                    if (double.IsFinite(filtered)) f.HandAfter = filtered;
                     else { _filter.Reset(f.HandAfter); }
                 }
                 else f.HandAfter = _state.HandY;
@@ -158,9 +158,9 @@ namespace Kosmos.PseudoHaptic
             effects = Profile.PositionEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            if (IsFinite(f.NewObjectY)) _state.ObjectY = f.NewObjectY;
+            if (double.IsFinite(f.NewObjectY)) _state.ObjectY = f.NewObjectY;
             else _state.Carry = 0; // unreachable with the built-in effects; a custom one must not poison the transform
-            if (!IsFinite(_state.Carry)) _state.Carry = 0;
+            if (!double.IsFinite(_state.Carry)) _state.Carry = 0;
             return _state.ObjectY;
         }
 
@@ -169,7 +169,5 @@ namespace Kosmos.PseudoHaptic
             var all = Profile._all;
             for (int i = 0; i < all.Length; i++) all[i].Reset(ref _state, handY);
         }
-
-        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
     }
 }

@@ -42,7 +42,7 @@ namespace Kosmos.PseudoHaptic
                 return Reject("too short: " + times.Length + " samples, at least 3 needed");
             for (int i = 0; i < times.Length; i++)
             {
-                if (!IsFinite(times[i]) || !IsFinite(heights[i]))
+                if (!double.IsFinite(times[i]) || !double.IsFinite(heights[i]))
                     return Reject("non-finite sample at index " + i);
                 if (i > 0 && !(times[i] > times[i - 1]))
                     return Reject("time does not increase at index " + i);
@@ -166,7 +166,6 @@ namespace Kosmos.PseudoHaptic
         }
 
         static LiftMeasurement Reject(string reason) => new LiftMeasurement(false, double.NaN, double.NaN, double.NaN, reason);
-        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
         static string Fmt(double v) => v.ToString("0.###", CultureInfo.InvariantCulture);
     }
 }

@@ -37,7 +37,7 @@ namespace Kosmos.PseudoHaptic
 
         public void Reset(double handY, double poseTime)
         {
-            _hasPose = IsFinite(handY);
+            _hasPose = double.IsFinite(handY);
             _poseY = _hasPose ? handY : 0;
             _poseTime = poseTime;
             _sincePose = _lostFor = _speed = 0;
@@ -59,8 +59,8 @@ namespace Kosmos.PseudoHaptic
                 return;
             }
 
-            bool hasTime = IsFinite(f.PoseTime);
-            bool hadTime = IsFinite(_poseTime);
+            bool hasTime = double.IsFinite(f.PoseTime);
+            bool hadTime = double.IsFinite(_poseTime);
             // A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.
             bool newPose = f.PoseY != _poseY || (hasTime && !(hadTime && f.PoseTime == _poseTime));
             bool clockBack = hasTime && hadTime && f.PoseTime < _poseTime;
@@ -115,7 +115,5 @@ namespace Kosmos.PseudoHaptic
             _lost = false;
             f.HandAfter = _poseY;
         }
-
-        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
     }
 }

@@ -22,6 +22,9 @@ namespace Kosmos.PseudoHaptic.Simulation
             PoseTime = poseTime;
         }
 
+        /// <summary>The frame has a pose the solver can follow (<see cref="HandSample.IsUsable"/>).</summary>
+        public bool IsUsable => Tracked && HandSample.IsUsableHeight(HandY);
+
         public HandSample ToSample() => new HandSample(HandY, Tracked, Tracked, PoseTime);
     }
 }

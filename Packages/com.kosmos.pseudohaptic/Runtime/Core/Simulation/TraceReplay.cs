@@ -43,8 +43,7 @@ namespace Kosmos.PseudoHaptic.Simulation
         {
             for (int i = 0; i < frames.Count; i++)
             {
-                double y = frames[i].HandY;
-                if (frames[i].Tracked && !double.IsNaN(y) && Math.Abs(y) < WeightSolver.MaxCoordinate) return i;
+                if (frames[i].IsUsable) return i;
             }
             return -1;
         }
