@@ -40,7 +40,6 @@ namespace Oculus.Interaction
     public struct PointerEvent : IEvent
     {
         public int Identifier => throw null;
-        public UInt64 EventId => throw null;
         public PointerEventType Type => throw null;
         public Pose Pose => throw null;
         public object Data => throw null;
