@@ -151,6 +151,53 @@ public class BuiltInModuleTests
         Assert.That(used.Keys.OrderBy(k => k, StringComparer.Ordinal), Is.EqualTo(new[] { "imgui", "jsonserialize", "physics" }));
     }
 
+    /// <summary>
+    /// The assemblies of other packages that the package's asmdefs reference, each as named by that package's own
+    /// asmdef at the pinned version.
+    /// </summary>
+    static readonly (string Assembly, string DeclaredIn)[] ForeignAssemblies =
+    {
+        ("Oculus.VR", "com.meta.xr.sdk.core 68.0.2: Oculus.VR.asmdef"),
+        ("Oculus.VR.Editor", "com.meta.xr.sdk.core 68.0.2: Editor/Oculus.VR.Editor.asmdef"),
+        ("Oculus.Interaction", "com.meta.xr.sdk.interaction 68.0.0: Runtime/Oculus.Interaction.asmdef"),
+        ("Unity.XR.Management", "com.unity.xr.management 4.4.0: Runtime/Unity.XR.Management.asmdef"),
+        ("Unity.XR.Management.Editor", "com.unity.xr.management 4.4.0: Editor/Unity.XR.Management.Editor.asmdef"),
+        ("Unity.XR.Oculus", "com.unity.xr.oculus 4.2.0: Runtime/Unity.XR.Oculus.asmdef"),
+        ("UnityEngine.TestRunner", "com.unity.test-framework 1.1.33: UnityEngine.TestRunner/UnityEngine.TestRunner.asmdef"),
+        ("UnityEditor.TestRunner", "com.unity.test-framework 1.1.33: UnityEditor.TestRunner/UnityEditor.TestRunner.asmdef"),
+    };
+
+    /// <summary>Packages a versionDefine may name that the manifest does not list because a pinned package pulls them in.</summary>
+    static readonly (string Package, string PulledBy)[] Transitive =
+    {
+        ("com.meta.xr.sdk.interaction", "com.meta.xr.sdk.interaction.ovr 68.0.0 depends on com.meta.xr.sdk.interaction 68.0.0"),
+    };
+
+    [Test]
+    public void AsmdefsNameRealAssembliesAndPackages()
+    {
+        var pinned = Dependencies(Path.Combine(RepositoryRoot.Path, "Packages", "manifest.json")).Keys.ToHashSet();
+        pinned.UnionWith(Transitive.Select(t => t.Package));
+        var ownNames = new HashSet<string>();
+        var asmdefs = Directory.EnumerateFiles(Package, "*.asmdef", SearchOption.AllDirectories).ToList();
+        foreach (string path in asmdefs)
+        {
+            using var doc = JsonDocument.Parse(File.ReadAllText(path));
+            ownNames.Add(doc.RootElement.GetProperty("name").GetString()!);
+        }
+        var foreign = ForeignAssemblies.Select(f => f.Assembly).ToHashSet();
+        foreach (string path in asmdefs)
+        {
+            using var doc = JsonDocument.Parse(File.ReadAllText(path));
+            string rel = Path.GetRelativePath(Package, path);
+            foreach (var r in doc.RootElement.GetProperty("references").EnumerateArray().Select(e => e.GetString()!))
+                Assert.That(ownNames.Contains(r) || foreign.Contains(r), Is.True, rel + " references '" + r + "', an assembly of neither this package nor the list of checked foreign assemblies");
+            if (doc.RootElement.TryGetProperty("versionDefines", out var defines))
+                foreach (var d in defines.EnumerateArray())
+                    Assert.That(pinned, Does.Contain(d.GetProperty("name").GetString()), rel + ": a versionDefine names a package the project does not install");
+        }
+    }
+
     [Test]
     public void TheModuleScanSeesAModuleInCode()
     {
