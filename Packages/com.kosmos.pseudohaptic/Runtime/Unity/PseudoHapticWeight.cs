@@ -66,6 +66,10 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] float _densityKgPerCubicMetre = 1000f;
         [Tooltip("The collider whose volume counts; this object's first collider when empty.")]
         [SerializeField] Collider _volumeCollider;
+        // A mesh collider's volume (mesh units³) computed in the editor, and the mesh it is of: a player build strips
+        // meshes that are not Read/Write, so it uses this instead of reading the mesh (ColliderVolume, MeshVolume.Choose).
+        [SerializeField, HideInInspector] double _storedMeshVolume;
+        [SerializeField, HideInInspector] Mesh _storedVolumeMesh;
 
         [Header("Effects")]
         [Tooltip("The scene's effects; the 'paper' preset when empty.")]
@@ -230,7 +234,32 @@ namespace Kosmos.PseudoHaptic
             UserCalibrationStore.Changed -= MarkDirty;
         }
 
-        void OnValidate() => _dirty = true;
+        void OnValidate()
+        {
+            _dirty = true;
+#if UNITY_EDITOR
+            if (_massSource == MassSource.DensityTimesVolume) StoreMeshVolume();
+#endif
+        }
+
+        /// <summary>
+        /// Reads the volume collider's mesh (a <see cref="MeshCollider"/> whose mesh is readable, as every mesh is in the
+        /// editor) and stores its volume with this component, so that a player build, where the mesh may be stripped,
+        /// needs no readable mesh. The editor calls it whenever the component is edited; the sample scene builders
+        /// call it for the bottles. False when there is no readable closed mesh. Allocates: not for run time.
+        /// </summary>
+        public bool StoreMeshVolume()
+        {
+            if (!(Collider is MeshCollider meshCollider)) return false;
+            Mesh mesh = meshCollider.sharedMesh;
+            if (mesh == null || !mesh.isReadable) return false;
+            double v = Math.Abs(ColliderVolume.Mesh(mesh.vertices, mesh.triangles));
+            if (!(v > 0) || double.IsInfinity(v)) return false;
+            _storedMeshVolume = v;
+            _storedVolumeMesh = mesh;
+            _dirty = true;
+            return true;
+        }
 
         void MarkDirty() => _dirty = true;
 
@@ -251,7 +280,7 @@ namespace Kosmos.PseudoHaptic
                         model = WeightModel.FromMass(Body.mass);
                         return true;
                     case MassSource.DensityTimesVolume:
-                        if (!ColliderVolume.TryGet(Collider, out double volume, out error)) return false;
+                        if (!ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out double volume, out error)) return false;
                         model = WeightModel.FromDensity(_densityKgPerCubicMetre, volume);
                         return true;
                     default:
