@@ -133,9 +133,7 @@ namespace UnityEditor
     /// <summary>Only the levels the package names.</summary>
     public enum AndroidSdkVersions
     {
-        AndroidApiLevelAuto = 0,
         AndroidApiLevel29 = 29,
-        AndroidApiLevel32 = 32,
     }
 
     public sealed partial class PlayerSettings : Object
