@@ -14,8 +14,8 @@ namespace Kosmos.PseudoHaptic.Interaction
     /// (its movement provider, <c>MoveTowardsTargetProvider</c> by default, slides it from the object toward the
     /// hand), so for every grab by an <see cref="IHandGrabInteractor"/> (the pointer event's data) the solver
     /// gets <see cref="HandGrabInteraction.GetHandGrabPose"/>: the tracked wrist times the offset from the wrist to
-    /// the hand's pinch or palm point taken at the grab (a point fixed to the hand), the pose that movement slides toward. Grabs by other interactors (controllers) use
-    /// the Grabbable's grab points, as they have no such slide.
+    /// the hand's pinch or palm point taken at the grab (a point fixed to the hand), the pose that movement slides
+    /// toward. Grabs by other interactors (controllers) use the Grabbable's grab points, as they have no such slide.
     /// The Grabbable keeps owning the Rigidbody (Kinematic While Selected, Throw When Unselected), so the
     /// weight's release setting does not apply here. Compiled only when com.meta.xr.sdk.interaction is installed.
     /// </summary>
