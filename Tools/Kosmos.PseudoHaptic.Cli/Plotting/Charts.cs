@@ -43,6 +43,31 @@ public static class Charts
         Color.FromHex("#17becf"), // cyan
     };
 
+    /// <summary>
+    /// The sans-serif font of every chart. SkiaSharp's Linux assets here come without fontconfig, so a family
+    /// name alone falls back to whatever typeface comes first (a serif one on Debian); the usual sans-serif
+    /// files are therefore registered by path when present. Elsewhere (Windows, macOS) the system finds it.
+    /// </summary>
+    private static readonly Lazy<string> FontName = new(() =>
+    {
+        const string name = "PseudoHaptic Sans";
+        string[] folders = { "/usr/share/fonts/truetype/dejavu", "/usr/share/fonts/dejavu", "/usr/share/fonts/TTF", "/usr/share/fonts/truetype/liberation" };
+        (string Regular, string Bold)[] files = { ("DejaVuSans.ttf", "DejaVuSans-Bold.ttf"), ("LiberationSans-Regular.ttf", "LiberationSans-Bold.ttf") };
+        foreach (string folder in folders)
+        {
+            foreach (var (regular, bold) in files)
+            {
+                string r = Path.Combine(folder, regular), b = Path.Combine(folder, bold);
+                if (!File.Exists(r)) continue;
+                Fonts.AddFontFile(name, File.Exists(b) ? b : r, bold: true, italic: false);
+                Fonts.AddFontFile(name, r, bold: false, italic: false);
+                return name;
+            }
+        }
+
+        return Fonts.Sans;
+    });
+
     /// <summary>Black, for a reference series (the hand, a mean).</summary>
     public static Color Black => Colors.Black;
 
@@ -59,6 +84,7 @@ public static class Charts
         plot.FigureBackground.Color = Colors.White;
         plot.DataBackground.Color = Colors.White;
         plot.Add.Palette = new ScottPlot.Palettes.Category10();
+        plot.Font.Set(FontName.Value);
 
         plot.Title(title ?? "", TitleSize);
         plot.Axes.Title.Label.ForeColor = TextColour;
@@ -67,6 +93,8 @@ public static class Charts
         plot.YLabel(yLabel ?? "", LabelSize);
         foreach (IAxis axis in new IAxis[] { plot.Axes.Bottom, plot.Axes.Left })
         {
+            // Ticks about 90 px apart, every label with the same number of decimals (0.80, 0.85, ... not 0.8, 0.85).
+            axis.TickGenerator = new ScottPlot.TickGenerators.NumericAutomatic { MinimumTickSpacing = 40, TickDensity = axis == plot.Axes.Bottom ? 0.5 : 0.6 };
             axis.Label.ForeColor = TextColour;
             axis.Label.Bold = false;
             axis.TickLabelStyle.FontSize = TickSize;
@@ -83,7 +111,10 @@ public static class Charts
         plot.Legend.FontColor = TextColour;
         plot.Legend.OutlineColor = Color.FromHex("#B4B4B4");
         plot.Legend.BackgroundColor = Colors.White.WithAlpha(0.9);
+        plot.Legend.ShadowColor = Colors.Transparent;
+        plot.Legend.SymbolWidth = 32;
         plot.Legend.Alignment = Alignment.UpperLeft;
+        plot.Axes.Margins(horizontal: 0.01, vertical: 0.05);
         plot.Legend.IsVisible = true;
         return plot;
     }
@@ -152,21 +183,85 @@ public static class Charts
     {
         ArgumentNullException.ThrowIfNull(plot);
         ArgumentException.ThrowIfNullOrEmpty(pngPath);
-        if (width <= 0 || width > MaxSide) throw new ArgumentOutOfRangeException(nameof(width), width, $"Width must be 1..{MaxSide}.");
-        if (height <= 0 || height > MaxSide) throw new ArgumentOutOfRangeException(nameof(height), height, $"Height must be 1..{MaxSide}.");
+        byte[] png = Png(plot, width, height);
+        string? svgText = svg ? Svg(plot, width, height) : null;
 
         string? directory = Path.GetDirectoryName(Path.GetFullPath(pngPath));
         if (!string.IsNullOrEmpty(directory)) Directory.CreateDirectory(directory);
-
-        bool legend = plot.GetPlottables().Any(p => p.LegendItems.Any(item => !string.IsNullOrEmpty(item.LabelText)));
-        plot.Legend.IsVisible = legend;
-
-        byte[] png = plot.GetImageBytes(width, height, ImageFormat.Png);
         Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(pngPath, temp => File.WriteAllBytes(temp, png));
-        if (svg)
+        if (svgText != null) Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteAllText(Path.ChangeExtension(pngPath, ".svg"), svgText);
+    }
+
+    /// <summary>The command-line flag that asks for an SVG beside each PNG chart.</summary>
+    public const string SvgFlag = "--svg";
+
+    /// <summary>
+    /// A command's arguments without the flag <c>--svg</c> (which takes no value), for <see cref="Options"/>;
+    /// <paramref name="svg"/> tells whether it was given. Only option names are looked at, not their values
+    /// ("--out --svg" keeps "--svg" as the folder name). Given twice, it is an error naming it.
+    /// </summary>
+    public static string[] TakeSvgFlag(string[] args, out bool svg)
+    {
+        ArgumentNullException.ThrowIfNull(args);
+        svg = false;
+        var rest = new List<string>(args.Length);
+        for (int i = 0; i < args.Length; i++)
         {
-            string svgText = plot.GetSvgXml(width, height);
-            Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteAllText(Path.ChangeExtension(pngPath, ".svg"), svgText);
+            if (args[i] == SvgFlag)
+            {
+                if (svg) throw new CliException($"option {SvgFlag} is given twice");
+                svg = true;
+                continue;
+            }
+
+            rest.Add(args[i]);
+            if (args[i].StartsWith("--", StringComparison.Ordinal) && i + 1 < args.Length) rest.Add(args[++i]);
+        }
+
+        return rest.ToArray();
+    }
+
+    /// <summary>The plot as PNG bytes of exactly <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
+    public static byte[] Png(Plot plot, int width, int height)
+    {
+        Prepare(plot, width, height);
+        return plot.GetImageBytes(width, height, ImageFormat.Png);
+    }
+
+    /// <summary>The plot as an SVG document of <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
+    public static string Svg(Plot plot, int width, int height)
+    {
+        Prepare(plot, width, height);
+        return plot.GetSvgXml(width, height);
+    }
+
+    private static void Prepare(Plot plot, int width, int height)
+    {
+        ArgumentNullException.ThrowIfNull(plot);
+        if (width <= 0 || width > MaxSide) throw new ArgumentOutOfRangeException(nameof(width), width, $"Width must be 1..{MaxSide}.");
+        if (height <= 0 || height > MaxSide) throw new ArgumentOutOfRangeException(nameof(height), height, $"Height must be 1..{MaxSide}.");
+        // A legend only when a series has a name.
+        plot.Legend.IsVisible = plot.GetPlottables().Any(p => p.LegendItems.Any(item => !string.IsNullOrEmpty(item.LabelText)));
+
+        // Lay the plot out once to learn the tick steps, then label every tick of an axis with the decimals its
+        // step needs (0.80, 0.85, 0.90 rather than 0.8, 0.85, 0.9).
+        plot.RenderInMemory(width, height);
+        foreach (IAxis axis in new IAxis[] { plot.Axes.Bottom, plot.Axes.Left })
+        {
+            if (axis.TickGenerator is not ScottPlot.TickGenerators.NumericAutomatic numeric) continue;
+            double step = double.PositiveInfinity;
+            double previous = double.NaN;
+            foreach (Tick tick in numeric.Ticks.Where(t => t.IsMajor).OrderBy(t => t.Position))
+            {
+                if (double.IsFinite(previous) && tick.Position - previous > 0) step = Math.Min(step, tick.Position - previous);
+                previous = tick.Position;
+            }
+
+            if (!double.IsFinite(step)) continue;
+            int decimals = 0;
+            while (decimals < 10 && Math.Abs(step * Math.Pow(10, decimals) - Math.Round(step * Math.Pow(10, decimals))) > 1e-6 * step * Math.Pow(10, decimals)) decimals++;
+            string format = "F" + decimals.ToString(System.Globalization.CultureInfo.InvariantCulture);
+            numeric.LabelFormatter = value => value.ToString(format, System.Globalization.CultureInfo.InvariantCulture);
         }
     }
 
