@@ -19,6 +19,9 @@ namespace Kosmos.PseudoHaptic.Cli
                                                      score questionnaire responses
               report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]
                                                      tables, statistics and charts of scores
+              psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S]
+                                                     fit 2AFC answers: PSE, JND, Weber fraction, bootstrap CIs, charts
+              compare --scores S.csv --out DIR       paired tests between conditions (t, Wilcoxon, Friedman, Holm)
               accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS --chart OUT.png]
                                                      accuracy of each estimator on Quest-like input (accuracy-vs-time.md)
             """;
@@ -40,7 +43,9 @@ namespace Kosmos.PseudoHaptic.Cli
                     "score" => ScoreCommand.Run(rest),
                     "report" => ReportCommand.Run(rest),
                     "accuracy" => AccuracyCommand.Run(rest),
-                    _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score, report or accuracy"),
+                    "psychometric" => PsychometricCommand.Run(rest),
+                    "compare" => CompareCommand.Run(rest),
+                    _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score, report, psychometric, compare or accuracy"),
                 };
             }
             catch (CliException e)

@@ -59,6 +59,46 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return StreamRows(reader, sourceName, columns);
         }
 
+        /// <summary>
+        /// As <see cref="Stream(TextReader, string, string[])"/>, with <paramref name="optional"/> columns after
+        /// the required ones in each row (an absent optional column reads as null); <paramref name="present"/>
+        /// (one flag per optional column) is filled once the header has been read.
+        /// </summary>
+        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, string[] columns, string[] optional, bool[] present)
+        {
+            if (reader == null) throw new ArgumentNullException(nameof(reader));
+            if (columns == null || columns.Length == 0) throw new ArgumentException("no columns requested", nameof(columns));
+            if (optional == null || present == null || present.Length != optional.Length) throw new ArgumentException("one flag per optional column", nameof(present));
+            return StreamRows(reader, sourceName, columns, optional, present);
+        }
+
+        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, string[] columns, string[] optional, bool[] present)
+        {
+            using (var csv = new CsvReader(reader, sourceName))
+            {
+                string expected = string.Join(",", columns);
+                if (!csv.ReadHeader()) throw csv.Error(1, "empty file: expected the header " + expected);
+                var index = new int[columns.Length + optional.Length];
+                for (int c = 0; c < columns.Length; c++)
+                {
+                    index[c] = csv.IndexOf(columns[c], StringComparison.OrdinalIgnoreCase);
+                    if (index[c] < 0)
+                        throw csv.Error(csv.HeaderLine, "missing column '" + columns[c] + "': the header must name " + expected + " (found " + Quote(csv.Header) + ")");
+                }
+                for (int c = 0; c < optional.Length; c++)
+                {
+                    index[columns.Length + c] = csv.IndexOf(optional[c], StringComparison.OrdinalIgnoreCase);
+                    present[c] = index[columns.Length + c] >= 0;
+                }
+                while (csv.Read())
+                {
+                    var picked = new string[index.Length];
+                    for (int c = 0; c < index.Length; c++) picked[c] = index[c] >= 0 ? csv[index[c]] : null;
+                    yield return new Row(csv.Line, csv.EndLine, picked);
+                }
+            }
+        }
+
         static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, string[] columns)
         {
             using (var csv = new CsvReader(reader, sourceName))

@@ -32,6 +32,28 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return text.ToString();
         }
 
+        /// <summary>The header of a scores file with conditions (issue 11): the condition after the participant.</summary>
+        public const string HeaderWithCondition = "participant,condition,questionnaire,score";
+
+        /// <summary>
+        /// The file's text with a condition column after the participant when <paramref name="withCondition"/>;
+        /// without it exactly <see cref="Format(IEnumerable{ParticipantScore})"/>.
+        /// </summary>
+        public static string Format(IEnumerable<ParticipantScore> scores, bool withCondition)
+        {
+            if (!withCondition) return Format(scores);
+            if (scores == null) throw new ArgumentNullException(nameof(scores));
+            var text = new StringBuilder(HeaderWithCondition).Append('\n');
+            foreach (var s in scores)
+            {
+                text.Append(CsvTable.Escape(s.Participant)).Append(',').Append(CsvTable.Escape(s.Condition)).Append(',')
+                    .Append(CsvTable.Escape(s.QuestionnaireId)).Append(',');
+                if (s.Score.HasValue) text.Append(FormatNumber(s.Score.Value));
+                text.Append('\n');
+            }
+            return text.ToString();
+        }
+
         /// <summary>Shortest round-trip invariant form: 4.6, 8, 3.3333333333333335.</summary>
         public static string FormatNumber(double value) => value.ToString("R", CultureInfo.InvariantCulture);
 

@@ -45,7 +45,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// "standard"; catch = 1 or 0; response = 1 or 0). psychometric needs only participant, standard,
     /// comparison and response (condition optional); the other columns are for the experimenter.
     /// </summary>
-    public static class TrialsCsv
+    public static partial class TrialsCsv
     {
         public const string Header = "participant,condition,trial,standard,comparison,first,catch,response";
 
