@@ -98,9 +98,23 @@ static class StudyCharts
         if (pbx.Count > 0) Charts.Line(plot, pbx, pby, "", Charts.Colour(0));
         Charts.Points(plot, jx, jy, "JND", Charts.Colour(1));
         if (jbx.Count > 0) Charts.Line(plot, jbx, jby, "", Charts.Colour(1));
-        if (rows.Count <= 30) plot.Axes.Bottom.SetTicks(ticks.ToArray(), labels.ToArray());
+        int longest = labels.Count > 0 ? labels.Max(l => l.Length) : 0;
+        if (rows.Count <= 60)
+        {
+            plot.Axes.Bottom.SetTicks(ticks.ToArray(), labels.ToArray());
+            if (longest > 4)
+            {
+                // Names turned, so that long ones do not run into each other.
+                plot.Axes.Bottom.TickLabelStyle.Rotation = 35;
+                plot.Axes.Bottom.TickLabelStyle.Alignment = ScottPlot.Alignment.MiddleLeft;
+                plot.Axes.Bottom.MinimumSize = 40 + 8 * Math.Min(longest, 30);
+            }
+        }
         plot.Axes.SetLimitsX(0.5, rows.Count + 0.5);
-        return Charts.Png(plot, Math.Clamp(300 + 40 * rows.Count, 900, 2400), Height);
+        var all = py.Concat(jy).Concat(pby).Concat(jby).Where(double.IsFinite).Append(0.0).ToList();
+        double low = all.Min(), high = all.Max(), span = Math.Max(high - low, 1e-9);
+        plot.Axes.SetLimitsY(low - 0.05 * span, high + 0.3 * span); // room above for the legend
+        return Charts.Png(plot, Math.Clamp(300 + 45 * rows.Count, 900, 3000), Height + (longest > 4 ? 6 * Math.Min(longest, 30) : 0));
     }
 
     /// <summary>One line per participant through their scores in each condition; the conditions' means in black.</summary>
@@ -136,12 +150,15 @@ static class StudyCharts
         }
         Charts.Line(plot, mx, my, "mean", Charts.Black);
         Charts.Points(plot, mx, my, "", Charts.Black);
-        foreach (var r in pairs)
+        // The pairs' mean differences and (Holm-corrected) Wilcoxon p in the axis label, where no line runs.
+        var notes = pairs.Where(r => double.IsFinite(r.Pair.MeanDifference))
+            .Select(r => $"{Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)} = {G(r.Pair.MeanDifference)}{(double.IsFinite(r.PHolm) ? $", p = {G(r.PHolm)}" : "")}").ToList();
+        plot.XLabel(notes.Count > 0 && notes.Count <= 3 ? "condition; " + string.Join("; ", notes) : "condition");
+        var finite = ly.Where(double.IsFinite).ToList();
+        if (finite.Count > 0)
         {
-            if (!double.IsFinite(r.PHolm)) continue;
-            int a = conditions.IndexOf(r.ConditionA) + 1, b = conditions.IndexOf(r.ConditionB) + 1;
-            double top = ly.Where(double.IsFinite).DefaultIfEmpty(0).Max();
-            Charts.Note(plot, (a + b) / 2.0 - 0.2, top, $"{Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)}: {G(r.Pair.MeanDifference)}, p = {G(r.PHolm)}");
+            double low = finite.Min(), high = finite.Max(), span = Math.Max(high - low, 1e-9);
+            plot.Axes.SetLimitsY(low - 0.05 * span, high + 0.3 * span); // room above for the legend
         }
         plot.Axes.Bottom.SetTicks(Enumerable.Range(1, conditions.Count).Select(i => (double)i).ToArray(), conditions.Select(c => Messages.OneLine(c.Length == 0 ? "(none)" : c)).ToArray());
         plot.Axes.SetLimitsX(0.5, conditions.Count + 0.5);
