@@ -202,9 +202,15 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public static FriedmanTest Compute(IReadOnlyList<IReadOnlyList<double>> rows)
         {
             if (rows == null) throw new ArgumentNullException(nameof(rows));
+            return Compute(rows, rows.Count > 0 ? rows[0].Count : 0);
+        }
+
+        /// <summary>As <see cref="Compute(IReadOnlyList{IReadOnlyList{double}})"/> for k conditions, also when there are no rows.</summary>
+        public static FriedmanTest Compute(IReadOnlyList<IReadOnlyList<double>> rows, int k)
+        {
+            if (rows == null) throw new ArgumentNullException(nameof(rows));
             int n = rows.Count;
-            int k = n > 0 ? rows[0].Count : 0;
-            if (n == 0) return new FriedmanTest(0, 0, double.NaN, double.NaN);
+            if (n == 0) return new FriedmanTest(0, k, double.NaN, double.NaN);
             if (k < 2) throw new ArgumentException("need at least two conditions", nameof(rows));
             var rankSums = new double[k];
             double ties = 0;

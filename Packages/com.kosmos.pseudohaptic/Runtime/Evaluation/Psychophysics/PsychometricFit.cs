@@ -127,6 +127,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
             double ss = 0;
             foreach (var l in merged) ss += l.Trials * (l.Level - mean) * (l.Level - mean);
             double sd = Math.Sqrt(ss / trials);
+            if (!IsFinite(mean) || !IsFinite(sd) || !(sd > 0))
+                return new PsychometricFit(merged, lapse, trials, "levels out of range: their spread cannot be computed in double precision");
             int m = merged.Length;
             var z = new double[m];
             var n = new int[m];
@@ -165,6 +167,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 if (lapse == 0) break; // concave: the first maximum is the maximum
             }
             if (!converged) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
+            // b is in units of the standardized levels, so 1e-9 means a σ a billion times their spread.
+            if (Math.Abs(b) < 1e-9) return new PsychometricFit(merged, lapse, trials, "flat: the answers do not change with the comparison (σ infinite)");
             if (!(b > 0)) return new PsychometricFit(merged, lapse, trials, "decreasing: the comparison was judged heavier less often as it grew");
             double mu = mean - sd * a / b;
             double sigma = sd / b;

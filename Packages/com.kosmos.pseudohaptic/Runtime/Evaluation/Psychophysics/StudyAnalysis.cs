@@ -293,7 +293,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         }
                         if (all) complete.Add(row);
                     }
-                    var f = complete.Count > 0 ? FriedmanTest.Compute(complete) : FriedmanTest.Compute(new List<IReadOnlyList<double>>());
+                    var f = FriedmanTest.Compute(complete, k);
                     rows.Add(new ComparisonRow(q, "*", "*", null, f, new string[0], new double[0], new double[0]));
                 }
 

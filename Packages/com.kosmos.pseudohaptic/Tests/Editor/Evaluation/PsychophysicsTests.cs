@@ -181,6 +181,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             var decreasing = PsychometricFit.Fit(new[] { 0.8, 0.8, 0.8, 1.0, 1.0, 1.2, 1.2, 1.2 }, new[] { 1, 1, 0, 1, 0, 0, 0, 1 });
             Assert.That(decreasing.Estimable, Is.False);
             Assert.That(decreasing.Reason, Does.StartWith("decreasing"));
+            Assert.That(PsychometricFit.Fit(new[] { 1.0, 1.0, 1.0000000000000002, 1.0000000000000002 }, new[] { 1, 0, 1, 0 }).Reason, Does.StartWith("flat"));
+            Assert.That(PsychometricFit.Fit(new[] { -0.1, -0.1, 0, 0.1, 0.1 }, new[] { 1, 0, 1, 1, 0 }).Reason, Does.StartWith("flat"));
+            Assert.That(PsychometricFit.Fit(new[] { 1e300, -1e300, 1e300, -1e300 }, new[] { 1, 0, 0, 1 }).Estimable, Is.False);
             var boot = PsychometricBootstrap.Run(decreasing, 100, 1);
             Assert.That(boot.HasIntervals, Is.False);
         }
