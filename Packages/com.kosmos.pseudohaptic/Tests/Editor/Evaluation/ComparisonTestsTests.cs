@@ -194,7 +194,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 finalStep = s.Step;
             }
             double mean = sum / runs;
-            TestContext.Progress.WriteLine("1-up-" + down + "-down: mean threshold " + mean + ", target " + target + ", final step " + finalStep);
+            TestContext.WriteLine("1-up-" + down + "-down: mean threshold " + mean + ", target " + target + ", final step " + finalStep);
             Assert.That(finalStep, Is.EqualTo(0.01).Within(1e-12));
             Assert.That(Math.Abs(mean - target), Is.LessThan(finalStep));
         }

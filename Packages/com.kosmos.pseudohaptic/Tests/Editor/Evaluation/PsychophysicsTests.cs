@@ -230,7 +230,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             }
             Assert.That(estimable, Is.GreaterThanOrEqualTo(195));
             double coverage = covered / 200.0;
-            TestContext.Progress.WriteLine("coverage " + coverage + ", estimable " + estimable);
+            TestContext.WriteLine("coverage " + coverage + ", estimable " + estimable);
             Assert.That(coverage, Is.InRange(0.92, 0.98));
         }
 
