@@ -8,8 +8,8 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The in-headset weight discrimination task (two-alternative forced choice, issue 11): two objects of the
     /// same look stand left and right; each trial gives them the masses of the plan's standard and comparison
-    /// (never shown), the participant lifts both and pokes the button on the side of the one that felt
-    /// heavier. A catch trial is answered like any other. All of the logic is in the engine-free
+    /// (never shown; from a constant-stimuli plan or a transformed staircase), the participant lifts both and
+    /// pokes the button on the side of the one that felt heavier. A catch trial is answered like any other. All of the logic is in the engine-free
     /// <see cref="DiscriminationSession"/> (plan from its seed, lift-then-answer, the trials file written by
     /// write-then-rename after every answer, resume): this component only applies the masses, forwards lifts
     /// and pokes, puts the objects back between trials, and shows the progress.
@@ -32,6 +32,20 @@ namespace Kosmos.PseudoHaptic
         [Tooltip("The trials file; a relative path is taken under Kosmos.PseudoHaptic in Application.persistentDataPath.")]
         [SerializeField] string _trialsFile = "trials.csv";
 
+        /// <summary>How comparisons are chosen.</summary>
+        public enum Procedure
+        {
+            /// <summary>The method of constant stimuli: the levels below, in a seeded order.</summary>
+            ConstantStimuli,
+            /// <summary>A 1-up-2-down staircase (converges on 70.7 % "heavier").</summary>
+            Staircase1Up2Down,
+            /// <summary>A 1-up-3-down staircase (converges on 79.4 % "heavier").</summary>
+            Staircase1Up3Down,
+        }
+
+        [Tooltip("Constant stimuli (the levels below) or a transformed staircase (the staircase settings below).")]
+        [SerializeField] Procedure _procedure = Procedure.ConstantStimuli;
+
         [Header("Plan (method of constant stimuli)")]
         [Tooltip("The standard's mass, kg.")]
         [SerializeField] float _standardKg = 0.5f;
@@ -45,6 +59,21 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] int _catchRepetitions = 0;
         [Tooltip("The plan's seed: the same seed gives the same order, so a session can resume.")]
         [SerializeField] int _seed = 1;
+
+        [Header("Staircase")]
+        [Tooltip("The comparison's first mass, kg.")]
+        [SerializeField] float _staircaseStartKg = 0.7f;
+        [Tooltip("The first step, kg; it halves at each of the first Halving Reversals reversals.")]
+        [SerializeField] float _staircaseStepKg = 0.08f;
+        [SerializeField] int _halvingReversals = 2;
+        [Tooltip("Smallest step, kg.")]
+        [SerializeField] float _minStepKg = 0.01f;
+        [Tooltip("The run stops after this many reversals.")]
+        [SerializeField] int _stopAfterReversals = 12;
+        [Tooltip("The threshold is the mean of the levels at the last this many reversals.")]
+        [SerializeField] int _lastReversals = 8;
+        [Tooltip("The run stops after this many trials in any case.")]
+        [SerializeField] int _maxTrials = 120;
 
         [Header("Scene")]
         [SerializeField] PseudoHapticWeight _left;
@@ -90,6 +119,12 @@ namespace Kosmos.PseudoHaptic
             Seed = _seed,
         };
 
+        /// <summary>The staircase these settings give for a participant and condition (the same for the same seed).</summary>
+        public Staircase MakeStaircase(string participant, string condition) => new Staircase(
+            participant, condition, _standardKg, _staircaseStartKg, _staircaseStepKg,
+            _procedure == Procedure.Staircase1Up3Down ? 3 : 2, _stopAfterReversals, _lastReversals, _seed,
+            _halvingReversals, _minStepKg, _maxTrials, minLevel: 0.001);
+
         /// <summary>The trials file's full path.</summary>
         public string TrialsPath
         {
@@ -125,7 +160,9 @@ namespace Kosmos.PseudoHaptic
             if (_left == null || _right == null) return Fail("the left and right objects are not set");
             try
             {
-                _session = new DiscriminationSession(_participant, _condition, TrialsPath, Plan());
+                _session = _procedure == Procedure.ConstantStimuli
+                    ? new DiscriminationSession(_participant, _condition, TrialsPath, Plan())
+                    : new DiscriminationSession(_participant, _condition, TrialsPath, MakeStaircase);
             }
             catch (Exception e) when (e is ArgumentException || e is EvaluationFormatException || e is IOException || e is UnauthorizedAccessException)
             {

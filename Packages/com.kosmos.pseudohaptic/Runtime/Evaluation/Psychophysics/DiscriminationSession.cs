@@ -16,7 +16,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// <summary>
     /// The logic of the in-headset weight discrimination task (issue 11), without the engine: one participant
     /// in one condition works through a plan of 2AFC trials (<see cref="ConstantStimuliPlan"/>, rebuilt from its
-    /// seed, so a session is reproducible). Each trial shows two objects of the same look, the standard and the
+    /// seed, so a session is reproducible), or through a transformed <see cref="Staircase"/> whose next
+    /// comparison depends on the answers (rebuilt from its settings and seed and fed the recorded answers on
+    /// resume). Each trial shows two objects of the same look, the standard and the
     /// comparison, left and right as the plan's counterbalancing says (the comparison on the left when it is
     /// "first"); their masses are never shown. The participant lifts each (<see cref="NoteLift"/>) and then
     /// answers which was heavier (<see cref="Answer"/>); a catch trial is answered like any other. Every answer
@@ -32,7 +34,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// </remarks>
     public sealed class DiscriminationSession
     {
-        readonly IReadOnlyList<Trial> plan;
+        readonly IReadOnlyList<Trial> plan;     // constant stimuli; null with a staircase
+        readonly Staircase staircase;           // null with constant stimuli
         readonly bool[] answered;
         readonly List<string> rows = new List<string>();
         readonly bool[] lifted = new bool[2];
@@ -43,14 +46,18 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Whether both objects must have been lifted before an answer is taken (default true).</summary>
         public bool RequireBothLifts { get; set; } = true;
 
+        /// <summary>The constant-stimuli plan; null when the session runs a staircase.</summary>
         public IReadOnlyList<Trial> Plan => plan;
-        public int TrialCount => plan.Count;
+        /// <summary>The staircase; null when the session runs a constant-stimuli plan.</summary>
+        public Staircase Staircase => staircase;
+        /// <summary>Trials of the plan; with a staircase, the trials so far (its length is not known in advance).</summary>
+        public int TrialCount => plan != null ? plan.Count : staircase.Trials.Count + (staircase.Finished ? 0 : 1);
         public int AnsweredCount { get; private set; }
         public int ResumedCount { get; }
-        /// <summary>Index into <see cref="Plan"/> of the trial shown; <see cref="TrialCount"/> when finished.</summary>
+        /// <summary>Index into <see cref="Plan"/> of the trial shown (with a staircase, the number of trials answered); <see cref="TrialCount"/> when finished.</summary>
         public int CurrentIndex { get; private set; }
-        public bool IsFinished => CurrentIndex >= plan.Count;
-        public Trial Current => IsFinished ? null : plan[CurrentIndex];
+        public bool IsFinished => plan != null ? CurrentIndex >= plan.Count : staircase.Finished;
+        public Trial Current => IsFinished ? null : plan != null ? plan[CurrentIndex] : staircase.Next();
 
         /// <summary>The mass (or gain) of the object on <paramref name="side"/> in the current trial.</summary>
         public double MassAt(PairSide side)
@@ -66,9 +73,44 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public bool CanAnswer => !IsFinished && (!RequireBothLifts || (lifted[0] && lifted[1]));
 
         /// <summary>"12 / 84".</summary>
-        public string ProgressText => Math.Min(CurrentIndex + 1, plan.Count).ToString(CultureInfo.InvariantCulture) + " / " + plan.Count.ToString(CultureInfo.InvariantCulture);
+        public string ProgressText => plan != null
+            ? Math.Min(CurrentIndex + 1, plan.Count).ToString(CultureInfo.InvariantCulture) + " / " + plan.Count.ToString(CultureInfo.InvariantCulture)
+            : (staircase.Trials.Count + (staircase.Finished ? 0 : 1)).ToString(CultureInfo.InvariantCulture) + " (reversals " + staircase.ReversalLevels.Count.ToString(CultureInfo.InvariantCulture) + " / " + staircase.StopAfterReversals.ToString(CultureInfo.InvariantCulture) + ")";
 
         public DiscriminationSession(string participant, string condition, string trialsPath, ConstantStimuliPlan planSettings)
+        {
+            if (planSettings == null) throw new ArgumentNullException(nameof(planSettings));
+            Check(participant, ref condition, trialsPath);
+            Participant = participant;
+            Condition = condition;
+            TrialsPath = trialsPath;
+            plan = planSettings.Build(participant, condition);
+            answered = new bool[plan.Count];
+            LoadIfPresent();
+            ResumedCount = AnsweredCount;
+            CurrentIndex = NextUnanswered(0);
+        }
+
+        /// <summary>
+        /// A session run by a transformed staircase (1-up-2-down or 1-up-3-down), made by
+        /// <paramref name="makeStaircase"/> for this participant and condition; on resume the answers in the file
+        /// are fed to a new staircase again, so the same settings and seed must be given.
+        /// </summary>
+        public DiscriminationSession(string participant, string condition, string trialsPath, Func<string, string, Staircase> makeStaircase)
+        {
+            if (makeStaircase == null) throw new ArgumentNullException(nameof(makeStaircase));
+            Check(participant, ref condition, trialsPath);
+            Participant = participant;
+            Condition = condition;
+            TrialsPath = trialsPath;
+            staircase = makeStaircase(participant, condition) ?? throw new ArgumentException("no staircase made", nameof(makeStaircase));
+            answered = new bool[0];
+            LoadIfPresent();
+            ResumedCount = AnsweredCount;
+            CurrentIndex = AnsweredCount;
+        }
+
+        static void Check(string participant, ref string condition, string trialsPath)
         {
             if (string.IsNullOrWhiteSpace(participant)) throw new ArgumentException("the participant id is empty", nameof(participant));
             if (participant.Trim() != participant || participant.IndexOfAny(new[] { '\n', '\r' }) >= 0)
@@ -77,19 +119,13 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (condition.Trim() != condition || condition.IndexOfAny(new[] { '\n', '\r' }) >= 0)
                 throw new ArgumentException("the condition '" + condition + "' has surrounding spaces or a line break", nameof(condition));
             if (string.IsNullOrEmpty(trialsPath)) throw new ArgumentException("the trials file path is empty", nameof(trialsPath));
-            if (planSettings == null) throw new ArgumentNullException(nameof(planSettings));
-            Participant = participant;
-            Condition = condition;
-            TrialsPath = trialsPath;
-            plan = planSettings.Build(participant, condition);
-            answered = new bool[plan.Count];
-            if (File.Exists(trialsPath))
-            {
-                string text = File.ReadAllText(trialsPath, Encoding.UTF8);
-                if (text.Trim().Trim('\uFEFF').Length > 0) Load(text);
-            }
-            ResumedCount = AnsweredCount;
-            CurrentIndex = NextUnanswered(0);
+        }
+
+        void LoadIfPresent()
+        {
+            if (!File.Exists(TrialsPath)) return;
+            string text = File.ReadAllText(TrialsPath, Encoding.UTF8);
+            if (text.Trim().Trim('\uFEFF').Length > 0) Load(text);
         }
 
         /// <summary>The participant lifted the object on <paramref name="side"/>.</summary>
@@ -107,7 +143,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public bool Answer(PairSide heavier)
         {
             if (!CanAnswer) return false;
-            var trial = plan[CurrentIndex];
+            var trial = Current;
             bool comparisonLeft = trial.ComparisonFirst;
             int response = (heavier == PairSide.Left) == comparisonLeft ? 1 : 0;
             trial.Response = response;
@@ -125,10 +161,18 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 trial.Response = -1;
                 throw;
             }
-            answered[CurrentIndex] = true;
             AnsweredCount++;
             lifted[0] = lifted[1] = false;
-            CurrentIndex = NextUnanswered(CurrentIndex + 1);
+            if (plan != null)
+            {
+                answered[CurrentIndex] = true;
+                CurrentIndex = NextUnanswered(CurrentIndex + 1);
+            }
+            else
+            {
+                staircase.Record(response);
+                CurrentIndex = AnsweredCount;
+            }
             return true;
         }
 
@@ -161,6 +205,17 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 rows.Add(verbatim.ToString());
                 if (row[0].Trim() != Participant || row[1].Trim() != Condition) continue;
                 int index;
+                if (staircase != null)
+                {
+                    // The staircase is run again on the recorded answers, which must follow it trial by trial.
+                    var next = staircase.Next();
+                    if (next == null || !int.TryParse(row[2].Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out index) || index != next.Index
+                        || double.Parse(row[4].Trim(), NumberStyles.Float, CultureInfo.InvariantCulture) != next.Comparison)
+                        throw new EvaluationFormatException(TrialsPath, row.Line, "this row does not follow the staircase (trial " + (next != null ? next.Index.ToString(CultureInfo.InvariantCulture) + " at " + next.Comparison.ToString("R", CultureInfo.InvariantCulture) : "none: it had finished") + "): was the file written with other settings or seed?");
+                    staircase.Record(row[7].Trim() == "1" ? 1 : 0);
+                    AnsweredCount++;
+                    continue;
+                }
                 if (!int.TryParse(row[2].Trim(), NumberStyles.None, CultureInfo.InvariantCulture, out index) || index < 1 || index > plan.Count)
                     throw new EvaluationFormatException(TrialsPath, row.Line, "trial '" + row[2] + "' is not one of this plan's 1 … " + plan.Count.ToString(CultureInfo.InvariantCulture));
                 var t = plan[index - 1];

@@ -92,6 +92,29 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.Throws<EvaluationFormatException>(() => new DiscriminationSession("P1", "", Path1, Plan()), "psychometric would refuse it");
         }
 
+        static Staircase MakeStaircase(string participant, string condition)
+            => new Staircase(participant, condition, 0.5, 0.7, 0.08, 2, 8, 6, 5, halvingReversals: 2);
+
+        [Test]
+        public void AStaircaseSessionResumesByReplayingItsAnswers()
+        {
+            var observer = new SimulatedObserver(0.55, 0.05, 2);
+            var first = new DiscriminationSession("P1", "on", Path1, MakeStaircase);
+            for (int i = 0; i < 10; i++) AnswerLikeTheObserver(first, observer);
+            double levelAfterTen = first.Current.Comparison;
+            var resumed = new DiscriminationSession("P1", "on", Path1, MakeStaircase);
+            Assert.That(resumed.ResumedCount, Is.EqualTo(10));
+            Assert.That(resumed.Current.Comparison, Is.EqualTo(levelAfterTen), "the replayed staircase stands where the first one stopped");
+            Assert.That(resumed.Staircase.ReversalLevels, Is.EqualTo(first.Staircase.ReversalLevels));
+            while (!resumed.IsFinished) AnswerLikeTheObserver(resumed, observer);
+            Assert.That(resumed.Staircase.ReversalLevels.Count, Is.EqualTo(8));
+            var answers = TrialsCsv.Read(new StringReader(File.ReadAllText(Path1)), "trials.csv");
+            Assert.That(answers.Count, Is.EqualTo(resumed.Staircase.Trials.Count));
+            // Another seed (another side order) still replays: sides are not part of the check; another start is refused.
+            Assert.Throws<EvaluationFormatException>(() => new DiscriminationSession("P1", "on", Path1,
+                (p, c) => new Staircase(p, c, 0.5, 0.65, 0.08, 2, 8, 6, 5, halvingReversals: 2)));
+        }
+
         static void AnswerLikeTheObserver(DiscriminationSession s, SimulatedObserver observer)
         {
             s.NoteLift(PairSide.Left);
