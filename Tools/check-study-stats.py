@@ -2,7 +2,7 @@
 """Independent check of `pseudohaptic psychometric` and `compare` (issue 11), with mpmath at 40 digits.
 
 Usage:
-  python3 Tools/check-study-stats.py generate DIR      # writes DIR/trials.csv and DIR/scores.csv (seeded)
+  python3 Tools/check-study-stats.py generate DIR [SEED]  # writes DIR/trials.csv and DIR/scores.csv (seeded)
   python3 Tools/check-study-stats.py psychometric T.csv FITS.csv
   python3 Tools/check-study-stats.py compare S.csv COMPARISONS.csv
 
@@ -231,8 +231,8 @@ def check_compare(scores_path, comparisons_path):
     print(f'compare: {seen} rows; largest relative differences:', ', '.join(f'{k} {v:.2e}' for k, v in sorted(worst.items())))
 
 # ---------------------------------------------------------------- data
-def generate(folder):
-    rnd = random.Random(20261123)
+def generate(folder, seed=20261123):
+    rnd = random.Random(seed)
     with open(f'{folder}/trials.csv', 'w', newline='') as f:
         w = csv.writer(f, lineterminator='\n'); w.writerow(['participant', 'condition', 'standard', 'comparison', 'response'])
         for p in range(1, 41):
@@ -259,7 +259,7 @@ def generate(folder):
 
 if __name__ == '__main__':
     cmd = sys.argv[1] if len(sys.argv) > 1 else ''
-    if cmd == 'generate': generate(sys.argv[2])
+    if cmd == 'generate': generate(sys.argv[2], int(sys.argv[3]) if len(sys.argv) > 3 else 20261123)
     elif cmd == 'psychometric': check_psychometric(sys.argv[2], sys.argv[3])
     elif cmd == 'compare': check_compare(sys.argv[2], sys.argv[3])
     else: print(__doc__); sys.exit(2)
