@@ -28,6 +28,7 @@ namespace Kosmos.PseudoHaptic.Editor
             Experiment1();
             Experiment2();
             Playground();
+            Discrimination();
         }
 
         [MenuItem(Menu + "Calibration", priority = 20)]
@@ -62,6 +63,14 @@ namespace Kosmos.PseudoHaptic.Editor
             var sources = new List<IHandPoseSource>(hands);
             SampleContent.Playground(root, Profile("Playground", NamedProfiles.PaperName), sources);
             Save(scene, "Playground");
+        }
+
+        [MenuItem(Menu + "Discrimination (2AFC weight task)", priority = 24)]
+        public static void Discrimination()
+        {
+            if (!NewScene(out Scene scene, out Transform root, out _)) return;
+            DiscriminationStation.Build(root, Profile(NamedProfiles.PaperName, NamedProfiles.PaperName), "P1");
+            Save(scene, "Discrimination");
         }
 
         /// <summary>The profile asset of that name, created or reset to <paramref name="preset"/>.</summary>

@@ -1,4 +1,5 @@
 using System.Globalization;
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
 namespace Kosmos.PseudoHaptic.Cli;
@@ -7,7 +8,9 @@ namespace Kosmos.PseudoHaptic.Cli;
 /// <c>pseudohaptic score --responses R.csv --out S.csv [--questionnaires DIR]</c>: the paper's scoring of
 /// questionnaire answers (reverse coding, per-participant mean per part, incomplete parts unscored).
 /// R.csv: participant,questionnaire,item,response; S.csv: participant,questionnaire,score, one row per
-/// participant × questionnaire answered, the score empty when the part is incomplete. A malformed R.csv
+/// participant × questionnaire answered, the score empty when the part is incomplete. With an optional
+/// <c>condition</c> column in R.csv, S.csv is participant,condition,questionnaire,score (one row per
+/// participant × condition × questionnaire); without it the output is unchanged. A malformed R.csv
 /// exits 2 with one line "R.csv:LINE: reason" on stderr and writes nothing. Contract in
 /// Packages/com.kosmos.pseudohaptic/Documentation~/evaluation.md; other programs depend on it.
 /// </summary>
@@ -20,16 +23,29 @@ public static class ScoreCommand
         var o = new Options(args, "--responses", "--out", "--questionnaires");
         string responsesPath = o.Require("--responses");
         string output = o.Require("--out");
+        var target = OutputFile.Check("--out", output, new NamedPath("--responses", responsesPath));
         var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
 
-        var responses = ResponsesCsv.Parse(EvaluationInputs.ReadText(responsesPath), responsesPath, catalog);
-        var scores = ScoreCalculator.ScoreAll(responses);
-        EvaluationInputs.WriteText(output, ScoresCsv.Format(scores));
+        // R.csv may have a condition column (issue 11); S.csv then carries it after the participant. Without
+        // it there is one set and the output is the scores file as before, byte for byte.
+        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition);
+        var scores = hasCondition ? ScoreCalculator.ScoreAll(sets) : ScoreCalculator.ScoreAll(sets[0].Value);
+        target.Write(w => w.Write(ScoresCsv.Format(scores, hasCondition)));
+        var participants = new HashSet<string>(StringComparer.Ordinal);
+        int answers = 0;
+        foreach (var (_, set) in sets)
+        {
+            participants.UnionWith(set.Participants);
+            answers += set.Count;
+        }
 
         int incomplete = scores.Count(s => !s.IsComplete);
-        Console.Out.WriteLine($"{output}: {scores.Count} scores of {responses.Participants.Count} participants from {responses.Count} answers, {incomplete} incomplete");
+        // With --out - the scores go to standard output, so the summary goes to standard error.
+        var summary = target.IsStandardOutput ? Console.Error : Console.Out;
+        output = Messages.OneLine(output);
+        summary.WriteLine($"{output}: {scores.Count} scores of {participants.Count} participants from {answers} answers{(hasCondition ? $" in {sets.Count} conditions" : "")}, {incomplete} incomplete");
         foreach (var s in scores.Where(s => !s.IsComplete))
-            Console.Out.WriteLine($"  {s.Participant} {s.QuestionnaireId}: incomplete, unanswered items {string.Join(", ", s.MissingItems.Select(i => i.ToString(CultureInfo.InvariantCulture)))}");
+            summary.WriteLine($"  {Messages.OneLine(s.Participant)}{(hasCondition ? " " + Messages.OneLine(s.Condition) : "")} {s.QuestionnaireId}: incomplete, unanswered items {string.Join(", ", s.MissingItems.Select(i => i.ToString(CultureInfo.InvariantCulture)))}");
         return 0;
     });
 }

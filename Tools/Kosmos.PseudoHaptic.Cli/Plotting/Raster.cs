@@ -211,17 +211,19 @@ public sealed class Raster
         double pos = 0;
         while (pos < length)
         {
+            // A step below the resolution of pos would not move it: then the pattern moves on instead, so the
+            // walk always ends (a long segment with p a hair below a boundary used to loop for ever).
             if (p < dashOn)
             {
                 double end = Math.Min(length, pos + (dashOn - p));
-                DrawLine(x0 + ux * pos, y0 + uy * pos, x0 + ux * end, y0 + uy * end, colour, thickness);
-                p += end - pos;
+                if (end > pos) DrawLine(x0 + ux * pos, y0 + uy * pos, x0 + ux * end, y0 + uy * end, colour, thickness);
+                p = end > pos ? p + (end - pos) : dashOn;
                 pos = end;
             }
             else
             {
                 double end = Math.Min(length, pos + (period - p));
-                p += end - pos;
+                p = end > pos ? p + (end - pos) : period;
                 pos = end;
             }
 

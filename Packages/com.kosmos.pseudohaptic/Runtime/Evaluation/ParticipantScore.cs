@@ -13,6 +13,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         public string Participant { get; }
         public string QuestionnaireId { get; }
+        /// <summary>The study condition the answers were given in ("" when the study has none).</summary>
+        public string Condition { get; }
         /// <summary>The mean, or null when the part is incomplete: an incomplete part is never scored.</summary>
         public double? Score { get; }
         public bool IsComplete => Score.HasValue;
@@ -20,11 +22,17 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public IReadOnlyList<int> MissingItems { get; }
 
         public ParticipantScore(string participant, string questionnaireId, double? score, IReadOnlyList<int> missingItems = null)
+            : this(participant, "", questionnaireId, score, missingItems)
+        {
+        }
+
+        public ParticipantScore(string participant, string condition, string questionnaireId, double? score, IReadOnlyList<int> missingItems = null)
         {
             if (score.HasValue && (double.IsNaN(score.Value) || double.IsInfinity(score.Value)))
                 throw new ArgumentException("score must be finite", nameof(score));
             Participant = participant;
             QuestionnaireId = questionnaireId;
+            Condition = condition ?? "";
             Score = score;
             MissingItems = missingItems ?? None;
         }

@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.Globalization;
 using System.IO;
 using System.Text;
@@ -20,29 +21,66 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Reads every answer of <paramref name="text"/> into a set checked against <paramref name="catalog"/>.</summary>
         public static ResponseSet Parse(string text, string sourceName, QuestionnaireCatalog catalog)
         {
+            if (text == null) throw new ArgumentNullException(nameof(text));
+            return Parse(new StringReader(text), sourceName, catalog);
+        }
+
+        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it.</summary>
+        public static ResponseSet Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog)
+        {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
-            var table = CsvTable.Parse(text, sourceName, Columns);
+            var rows = CsvTable.Stream(reader, sourceName, Columns);
             var set = new ResponseSet(catalog);
-            foreach (var row in table.Rows)
-            {
-                string participant = row[0], questionnaireId = row[1], itemText = row[2], responseText = row[3];
-                int item;
-                if (!int.TryParse(itemText, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out item))
-                    throw Fail(sourceName, row, "item '" + itemText + "' is not a whole number");
-                double value;
-                if (!double.TryParse(responseText, NumberStyles.Float, CultureInfo.InvariantCulture, out value)
-                    || double.IsNaN(value) || double.IsInfinity(value))
-                    throw Fail(sourceName, row, responseText.Length == 0
-                        ? "response is empty (leave an unanswered item out instead)"
-                        : "response '" + responseText + "' is not a number");
-                string why = set.TryAdd(participant, questionnaireId, item, value);
-                if (why != null) throw Fail(sourceName, row, why);
-            }
+            foreach (var row in rows) Add(set, sourceName, row);
             return set;
         }
 
+        /// <summary>
+        /// Reads a responses file that may have a <c>condition</c> column (issue 11): one set per condition, in
+        /// the order the conditions first appear. Without the column (<paramref name="hasCondition"/> false)
+        /// there is one set, condition "", read exactly as <see cref="Parse(TextReader, string, QuestionnaireCatalog)"/>.
+        /// </summary>
+        public static IReadOnlyList<KeyValuePair<string, ResponseSet>> ParseByCondition(TextReader reader, string sourceName, QuestionnaireCatalog catalog, out bool hasCondition)
+        {
+            if (catalog == null) throw new ArgumentNullException(nameof(catalog));
+            var present = new bool[1];
+            var sets = new List<KeyValuePair<string, ResponseSet>>();
+            var byCondition = new Dictionary<string, ResponseSet>(StringComparer.Ordinal);
+            foreach (var row in CsvTable.Stream(reader, sourceName, Columns, new[] { "condition" }, present))
+            {
+                string condition = row[4] ?? "";
+                ResponseSet set;
+                if (!byCondition.TryGetValue(condition, out set))
+                {
+                    set = new ResponseSet(catalog);
+                    byCondition.Add(condition, set);
+                    sets.Add(new KeyValuePair<string, ResponseSet>(condition, set));
+                }
+                Add(set, sourceName, row);
+            }
+            hasCondition = present[0];
+            if (sets.Count == 0) sets.Add(new KeyValuePair<string, ResponseSet>("", new ResponseSet(catalog)));
+            return sets;
+        }
+
+        static void Add(ResponseSet set, string sourceName, CsvTable.Row row)
+        {
+            string participant = row[0], questionnaireId = row[1], itemText = row[2], responseText = row[3];
+            int item;
+            if (!int.TryParse(itemText, NumberStyles.AllowLeadingSign, CultureInfo.InvariantCulture, out item))
+                throw Fail(sourceName, row, "item '" + itemText + "' is not a whole number");
+            double value;
+            if (!double.TryParse(responseText, NumberStyles.Float, CultureInfo.InvariantCulture, out value)
+                || double.IsNaN(value) || double.IsInfinity(value))
+                throw Fail(sourceName, row, responseText.Length == 0
+                    ? "response is empty (leave an unanswered item out instead)"
+                    : "response '" + responseText + "' is not a number");
+            string why = set.TryAdd(participant, questionnaireId, item, value);
+            if (why != null) throw Fail(sourceName, row, why);
+        }
+
         public static ResponseSet Load(string path, QuestionnaireCatalog catalog)
-            => Parse(File.ReadAllText(path, Encoding.UTF8), path, catalog);
+            => Parse(new StreamReader(path, Encoding.UTF8), path, catalog);
 
         /// <summary>One row, as a panel appends it (no trailing newline).</summary>
         public static string FormatRow(Response response)

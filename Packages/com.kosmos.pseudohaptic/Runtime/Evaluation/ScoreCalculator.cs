@@ -37,6 +37,24 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return ParticipantOrder.Sort(scores, s => s.Participant);
         }
 
+        /// <summary>
+        /// Scores answers given in several conditions (issue 11): participants in <see cref="ParticipantOrder"/>,
+        /// each one's conditions in the order given, each condition's parts in catalog order; every score
+        /// carries its condition.
+        /// </summary>
+        public static IReadOnlyList<ParticipantScore> ScoreAll(IReadOnlyList<KeyValuePair<string, ResponseSet>> byCondition)
+        {
+            if (byCondition == null) throw new ArgumentNullException(nameof(byCondition));
+            var scores = new List<ParticipantScore>();
+            foreach (var pair in byCondition)
+                foreach (var sheet in pair.Value.Sheets())
+                {
+                    var s = Score(sheet);
+                    scores.Add(new ParticipantScore(s.Participant, pair.Key, s.QuestionnaireId, s.Score, s.MissingItems));
+                }
+            return ParticipantOrder.Sort(scores, s => s.Participant);
+        }
+
         /// <summary>Scores plain answers; throws <see cref="ArgumentException"/> on one that does not fit.</summary>
         public static IReadOnlyList<ParticipantScore> ScoreAll(QuestionnaireCatalog catalog, IEnumerable<Response> responses)
         {

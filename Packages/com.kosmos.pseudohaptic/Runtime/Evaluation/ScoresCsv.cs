@@ -32,17 +32,46 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return text.ToString();
         }
 
+        /// <summary>The header of a scores file with conditions (issue 11): the condition after the participant.</summary>
+        public const string HeaderWithCondition = "participant,condition,questionnaire,score";
+
+        /// <summary>
+        /// The file's text with a condition column after the participant when <paramref name="withCondition"/>;
+        /// without it exactly <see cref="Format(IEnumerable{ParticipantScore})"/>.
+        /// </summary>
+        public static string Format(IEnumerable<ParticipantScore> scores, bool withCondition)
+        {
+            if (!withCondition) return Format(scores);
+            if (scores == null) throw new ArgumentNullException(nameof(scores));
+            var text = new StringBuilder(HeaderWithCondition).Append('\n');
+            foreach (var s in scores)
+            {
+                text.Append(CsvTable.Escape(s.Participant)).Append(',').Append(CsvTable.Escape(s.Condition)).Append(',')
+                    .Append(CsvTable.Escape(s.QuestionnaireId)).Append(',');
+                if (s.Score.HasValue) text.Append(FormatNumber(s.Score.Value));
+                text.Append('\n');
+            }
+            return text.ToString();
+        }
+
         /// <summary>Shortest round-trip invariant form: 4.6, 8, 3.3333333333333335.</summary>
         public static string FormatNumber(double value) => value.ToString("R", CultureInfo.InvariantCulture);
 
         /// <summary>Reads the scores, in file order, checked against <paramref name="catalog"/>.</summary>
         public static IReadOnlyList<ParticipantScore> Parse(string text, string sourceName, QuestionnaireCatalog catalog)
         {
+            if (text == null) throw new ArgumentNullException(nameof(text));
+            return Parse(new StringReader(text), sourceName, catalog);
+        }
+
+        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it.</summary>
+        public static IReadOnlyList<ParticipantScore> Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog)
+        {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
-            var table = CsvTable.Parse(text, sourceName, Columns);
-            var scores = new List<ParticipantScore>(table.Rows.Count);
+            var rows = CsvTable.Stream(reader, sourceName, Columns);
+            var scores = new List<ParticipantScore>();
             var seen = new Dictionary<string, int>(StringComparer.Ordinal);
-            foreach (var row in table.Rows)
+            foreach (var row in rows)
             {
                 string participant = row[0], questionnaireId = row[1], scoreText = row[2];
                 if (participant.Length == 0) throw Fail(sourceName, row, "participant is empty");
@@ -74,7 +103,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         public static IReadOnlyList<ParticipantScore> Load(string path, QuestionnaireCatalog catalog)
-            => Parse(File.ReadAllText(path, Encoding.UTF8), path, catalog);
+            => Parse(new StreamReader(path, Encoding.UTF8), path, catalog);
 
         static EvaluationFormatException Fail(string sourceName, CsvTable.Row row, string reason)
             => new EvaluationFormatException(sourceName, row.Line, reason);

@@ -1,0 +1,324 @@
+using System;
+using System.Collections.Generic;
+
+namespace Kosmos.PseudoHaptic.Evaluation
+{
+    /// <summary>The answers at one comparison level: <see cref="Trials"/> trials, <see cref="Heavier"/> of them "heavier".</summary>
+    public readonly struct StimulusLevel
+    {
+        public double Level { get; }
+        public int Trials { get; }
+        public int Heavier { get; }
+        public double Proportion => Trials > 0 ? (double)Heavier / Trials : 0;
+
+        public StimulusLevel(double level, int trials, int heavier)
+        {
+            if (double.IsNaN(level) || double.IsInfinity(level)) throw new ArgumentException("level must be finite", nameof(level));
+            if (trials < 0 || heavier < 0 || heavier > trials) throw new ArgumentOutOfRangeException(nameof(heavier), heavier, "need 0 ≤ heavier ≤ trials");
+            Level = level;
+            Trials = trials;
+            Heavier = heavier;
+        }
+
+        /// <summary>Binary answers grouped by level (exactly equal levels together), ascending.</summary>
+        public static StimulusLevel[] Group(IReadOnlyList<double> levels, IReadOnlyList<int> responses)
+        {
+            if (levels == null) throw new ArgumentNullException(nameof(levels));
+            if (responses == null) throw new ArgumentNullException(nameof(responses));
+            if (levels.Count != responses.Count) throw new ArgumentException("levels and responses differ in length");
+            var n = new SortedDictionary<double, int>();
+            var k = new Dictionary<double, int>();
+            for (int i = 0; i < levels.Count; i++)
+            {
+                if (responses[i] != 0 && responses[i] != 1) throw new ArgumentException("responses must be 0 or 1", nameof(responses));
+                double x = levels[i] == 0 ? 0 : levels[i]; // −0 and 0 are one level
+                int c;
+                n.TryGetValue(x, out c);
+                n[x] = c + 1;
+                k.TryGetValue(x, out c);
+                k[x] = c + responses[i];
+            }
+            var result = new StimulusLevel[n.Count];
+            int j = 0;
+            foreach (var pair in n) result[j++] = new StimulusLevel(pair.Key, pair.Value, k[pair.Key]);
+            return result;
+        }
+    }
+
+    /// <summary>
+    /// The maximum-likelihood fit of a cumulative Gaussian psychometric function to binary answers,
+    /// Ψ(x) = γ + (1 − γ − λ)·Φ((x − μ)/σ) with γ = λ = <c>lapse</c> fixed (0 by default). PSE = μ,
+    /// JND = σ·Φ⁻¹(0.75), deviance = 2·Σ [k·ln(k/(n·Ψ)) + (n − k)·ln((n − k)/(n·(1 − Ψ)))] over the levels
+    /// (the binomial deviance against the saturated model, as R's glm reports it for grouped data).
+    /// The fit is on the probit scale, η = a + b·z with z the levels standardized, by Newton's method with
+    /// Levenberg damping and step halving (the log-likelihood is concave in (a, b) when γ = λ = 0, so the
+    /// maximum found is the unique one); μ = mean − sd·a/b, σ = sd/b. Data that have no finite maximum (no
+    /// trials, a single level, all answers alike, levels perfectly separated by the answer) or a decreasing
+    /// fit are <see cref="Estimable"/> = false with a <see cref="Reason"/>; their numbers are NaN and are
+    /// never written.
+    /// </summary>
+    public sealed class PsychometricFit
+    {
+        /// <summary>Φ⁻¹(0.75): JND = σ·this.</summary>
+        public static readonly double JndFactor = Normal.Quantile(0.75);
+
+        public bool Estimable { get; }
+        /// <summary>"yes" when estimable, else why not.</summary>
+        public string Reason { get; }
+        public double Lapse { get; }
+        public int Trials { get; }
+        public double Mu { get; }
+        public double Sigma { get; }
+        public double Pse => Mu;
+        public double Jnd => Sigma * JndFactor;
+        public double Deviance { get; }
+        public double LogLikelihood { get; }
+        public int Iterations { get; }
+        public IReadOnlyList<StimulusLevel> Levels { get; }
+
+        PsychometricFit(IReadOnlyList<StimulusLevel> levels, double lapse, int trials, string reason)
+        {
+            Levels = levels;
+            Lapse = lapse;
+            Trials = trials;
+            Estimable = false;
+            Reason = reason;
+            Mu = Sigma = Deviance = LogLikelihood = double.NaN;
+        }
+
+        PsychometricFit(IReadOnlyList<StimulusLevel> levels, double lapse, int trials, double mu, double sigma, double deviance, double logLikelihood, int iterations)
+        {
+            Levels = levels;
+            Lapse = lapse;
+            Trials = trials;
+            Estimable = true;
+            Reason = "yes";
+            Mu = mu;
+            Sigma = sigma;
+            Deviance = deviance;
+            LogLikelihood = logLikelihood;
+            Iterations = iterations;
+        }
+
+        /// <summary>Ψ(x) of this fit.</summary>
+        public double Psi(double x) => Lapse + (1 - 2 * Lapse) * Normal.Cdf((x - Mu) / Sigma);
+
+        public static PsychometricFit Fit(IReadOnlyList<double> levels, IReadOnlyList<int> responses, double lapse = 0)
+            => Fit(StimulusLevel.Group(levels, responses), lapse);
+
+        /// <summary>Fits <paramref name="levels"/> (any order; equal levels are merged).</summary>
+        public static PsychometricFit Fit(IReadOnlyList<StimulusLevel> levels, double lapse = 0)
+            => Fit(levels, lapse, null, null);
+
+        internal static PsychometricFit Fit(IReadOnlyList<StimulusLevel> levels, double lapse, double? startMu, double? startSigma)
+        {
+            if (levels == null) throw new ArgumentNullException(nameof(levels));
+            if (!(lapse >= 0 && lapse < 0.5)) throw new ArgumentOutOfRangeException(nameof(lapse), lapse, "lapse must be in [0, 0.5)");
+            var merged = Merge(levels);
+            int trials = 0, heavier = 0, used = 0;
+            foreach (var l in merged) { trials += l.Trials; heavier += l.Heavier; if (l.Trials > 0) used++; }
+            string why = Degenerate(merged, trials, heavier, used);
+            if (why != null) return new PsychometricFit(merged, lapse, trials, why);
+
+            // Standardize the levels (trial-weighted) so that the optimisation does not depend on the unit.
+            double sum = 0;
+            foreach (var l in merged) sum += l.Level * l.Trials;
+            double mean = sum / trials;
+            double ss = 0;
+            foreach (var l in merged) ss += l.Trials * (l.Level - mean) * (l.Level - mean);
+            double sd = Math.Sqrt(ss / trials);
+            if (!IsFinite(mean) || !IsFinite(sd) || !(sd > 0))
+                return new PsychometricFit(merged, lapse, trials, "levels out of range: their spread cannot be computed in double precision");
+            int m = merged.Length;
+            var z = new double[m];
+            var n = new int[m];
+            var k = new int[m];
+            for (int i = 0; i < m; i++) { z[i] = (merged[i].Level - mean) / sd; n[i] = merged[i].Trials; k[i] = merged[i].Heavier; }
+
+            // Starts: the caller's (a bootstrap's original fit), the plain (0, 1), and with lapses also the
+            // lapse-free maximum; the highest converged maximum wins (with γ = λ = 0 there is only one).
+            var starts = new List<double[]>();
+            if (startMu.HasValue && startSigma.HasValue && startSigma.Value > 0 && IsFinite(startMu.Value))
+                starts.Add(new[] { -(startMu.Value - mean) / startSigma.Value, sd / startSigma.Value });
+            starts.Add(new[] { 0.0, 1.0 });
+            double a = 0, b = 1, best = double.NegativeInfinity;
+            bool converged = false;
+            int iterations = 0;
+            for (int s = 0; s < starts.Count; s++)
+            {
+                double sa = starts[s][0], sb = starts[s][1];
+                int it;
+                bool ok;
+                if (lapse > 0 && s == starts.Count - 1)
+                {
+                    ok = Maximize(z, n, k, 0, ref sa, ref sb, out it) && Maximize(z, n, k, lapse, ref sa, ref sb, out it);
+                    double ta = 0, tb = 1;
+                    int it2;
+                    if (Maximize(z, n, k, lapse, ref ta, ref tb, out it2))
+                    {
+                        double lt = LogLik(z, n, k, lapse, ta, tb);
+                        if (!ok || lt > LogLik(z, n, k, lapse, sa, sb)) { sa = ta; sb = tb; ok = true; it = it2; }
+                    }
+                }
+                else ok = Maximize(z, n, k, lapse, ref sa, ref sb, out it);
+                if (!ok) continue;
+                double ll = LogLik(z, n, k, lapse, sa, sb);
+                if (!converged || ll > best) { a = sa; b = sb; best = ll; iterations = it; converged = true; }
+                if (lapse == 0) break; // concave: the first maximum is the maximum
+            }
+            if (!converged) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
+            // b is in units of the standardized levels, so 1e-9 means a σ a billion times their spread.
+            if (Math.Abs(b) < 1e-9) return new PsychometricFit(merged, lapse, trials, "flat: the answers do not change with the comparison (σ infinite)");
+            if (!(b > 0)) return new PsychometricFit(merged, lapse, trials, "decreasing: the comparison was judged heavier less often as it grew");
+            double mu = mean - sd * a / b;
+            double sigma = sd / b;
+            if (!IsFinite(mu) || !IsFinite(sigma)) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
+
+            double logLik = LogLik(z, n, k, lapse, a, b);
+            double deviance = 0;
+            for (int i = 0; i < m; i++)
+            {
+                if (n[i] == 0) continue;
+                double eta = a + b * z[i];
+                double p = lapse + (1 - 2 * lapse) * Normal.Cdf(eta);
+                double q = lapse + (1 - 2 * lapse) * Normal.UpperTail(eta);
+                if (k[i] > 0) deviance += k[i] * Math.Log(k[i] / (n[i] * p));
+                if (n[i] - k[i] > 0) deviance += (n[i] - k[i]) * Math.Log((n[i] - k[i]) / (n[i] * q));
+            }
+            deviance = Math.Max(0, 2 * deviance);
+            return new PsychometricFit(merged, lapse, trials, mu, sigma, deviance, logLik, iterations);
+        }
+
+        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
+
+        static StimulusLevel[] Merge(IReadOnlyList<StimulusLevel> levels)
+        {
+            var byLevel = new SortedDictionary<double, int[]>();
+            foreach (var l in levels)
+            {
+                double x = l.Level == 0 ? 0 : l.Level;
+                int[] c;
+                if (!byLevel.TryGetValue(x, out c)) byLevel.Add(x, c = new int[2]);
+                c[0] += l.Trials;
+                c[1] += l.Heavier;
+            }
+            var result = new StimulusLevel[byLevel.Count];
+            int j = 0;
+            foreach (var pair in byLevel) result[j++] = new StimulusLevel(pair.Key, pair.Value[0], pair.Value[1]);
+            return result;
+        }
+
+        /// <summary>Why the likelihood has no finite maximum, or null if it has one.</summary>
+        internal static string Degenerate(StimulusLevel[] levels, int trials, int heavier, int used)
+        {
+            if (trials == 0) return "no trials";
+            if (used < 2) return "a single level";
+            if (heavier == 0) return "all answers the same (0)";
+            if (heavier == trials) return "all answers the same (1)";
+            // Separation: every "not heavier" at or below every "heavier" (or the reverse).
+            double maxNo = double.NegativeInfinity, minYes = double.PositiveInfinity;
+            double maxYes = double.NegativeInfinity, minNo = double.PositiveInfinity;
+            foreach (var l in levels)
+            {
+                if (l.Heavier > 0) { minYes = Math.Min(minYes, l.Level); maxYes = Math.Max(maxYes, l.Level); }
+                if (l.Trials - l.Heavier > 0) { maxNo = Math.Max(maxNo, l.Level); minNo = Math.Min(minNo, l.Level); }
+            }
+            if (maxNo <= minYes) return "perfect separation: every 'heavier' answer lies at or above every 'not heavier' one";
+            if (maxYes <= minNo) return "perfect separation: every 'heavier' answer lies at or below every 'not heavier' one";
+            return null;
+        }
+
+        static double LogLik(double[] z, int[] n, int[] k, double lapse, double a, double b)
+        {
+            double ll = 0;
+            for (int i = 0; i < z.Length; i++)
+            {
+                double eta = a + b * z[i];
+                if (k[i] > 0)
+                {
+                    double p = lapse + (1 - 2 * lapse) * Normal.Cdf(eta);
+                    ll += k[i] * Math.Log(p);
+                }
+                if (n[i] - k[i] > 0)
+                {
+                    double q = lapse + (1 - 2 * lapse) * Normal.UpperTail(eta);
+                    ll += (n[i] - k[i]) * Math.Log(q);
+                }
+            }
+            return double.IsNaN(ll) ? double.NegativeInfinity : ll;
+        }
+
+        /// <summary>Newton–Levenberg ascent of the log-likelihood in (a, b); true when it converged.</summary>
+        static bool Maximize(double[] z, int[] n, int[] k, double lapse, ref double a, ref double b, out int iterations)
+        {
+            double ll = LogLik(z, n, k, lapse, a, b);
+            if (double.IsNegativeInfinity(ll)) { a = 0; b = 1; ll = LogLik(z, n, k, lapse, a, b); }
+            double damping = 0;
+            for (iterations = 1; iterations <= 500; iterations++)
+            {
+                // Gradient and Hessian through η: ℓ_i(p) with p = γ + (1 − 2γ)Φ(η).
+                double ga = 0, gb = 0, haa = 0, hab = 0, hbb = 0;
+                double c = 1 - 2 * lapse;
+                for (int i = 0; i < z.Length; i++)
+                {
+                    if (n[i] == 0) continue;
+                    double eta = a + b * z[i];
+                    double p = lapse + c * Normal.Cdf(eta);
+                    double q = lapse + c * Normal.UpperTail(eta);
+                    double d1 = c * Normal.Pdf(eta);           // dp/dη
+                    double d2 = -eta * d1;                      // d²p/dη²
+                    double yes = k[i], no = n[i] - k[i];
+                    double lp = (yes > 0 ? yes / p : 0) - (no > 0 ? no / q : 0);
+                    double lpp = -(yes > 0 ? yes / (p * p) : 0) - (no > 0 ? no / (q * q) : 0);
+                    double g = lp * d1;
+                    double h = lpp * d1 * d1 + lp * d2;
+                    if (double.IsNaN(g) || double.IsNaN(h)) { g = 0; h = 0; }
+                    ga += g; gb += g * z[i];
+                    haa += h; hab += h * z[i]; hbb += h * z[i] * z[i];
+                }
+                double gradNorm = Math.Sqrt(ga * ga + gb * gb);
+                if (gradNorm < 1e-11) return true;
+
+                // Solve (−H + τ·I) δ = g; raise τ until the matrix is positive definite.
+                double A = -haa, B = -hab, C = -hbb;
+                double tau = damping;
+                double da = 0, db = 0;
+                for (int attempt = 0; attempt < 60; attempt++)
+                {
+                    double aa = A + tau, cc = C + tau;
+                    double det = aa * cc - B * B;
+                    if (aa > 0 && det > 1e-300 * Math.Max(1, aa * cc))
+                    {
+                        da = (cc * ga - B * gb) / det;
+                        db = (aa * gb - B * ga) / det;
+                        break;
+                    }
+                    tau = tau == 0 ? 1e-6 * (Math.Abs(A) + Math.Abs(C) + 1) : tau * 10;
+                }
+                double scale = 1;
+                bool improved = false;
+                for (int half = 0; half < 60; half++)
+                {
+                    double na = a + scale * da, nb = b + scale * db;
+                    double nll = LogLik(z, n, k, lapse, na, nb);
+                    if (nll >= ll)
+                    {
+                        double moved = Math.Abs(na - a) + Math.Abs(nb - b);
+                        a = na; b = nb;
+                        double gain = nll - ll;
+                        ll = nll;
+                        improved = true;
+                        if (moved < 1e-14 * (1 + Math.Abs(a) + Math.Abs(b)) && gain <= 1e-15 * (1 + Math.Abs(ll))) return gradNorm < 1e-6;
+                        break;
+                    }
+                    scale *= 0.5;
+                }
+                damping = improved && scale == 1 ? tau * 0.1 : Math.Max(tau * 10, 1e-6);
+                if (damping < 1e-12) damping = 0;
+                if (!improved) return gradNorm < 1e-6; // no ascent direction left: at the maximum to rounding
+                if (Math.Abs(a) > 1e8 || Math.Abs(b) > 1e8) return false;
+            }
+            return false;
+        }
+    }
+}

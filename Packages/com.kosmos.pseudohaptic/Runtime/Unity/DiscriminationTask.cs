@@ -1,0 +1,263 @@
+using System;
+using System.IO;
+using Kosmos.PseudoHaptic.Evaluation;
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// The in-headset weight discrimination task (two-alternative forced choice, issue 11): two objects of the
+    /// same look stand left and right; each trial gives them the masses of the plan's standard and comparison
+    /// (never shown; from a constant-stimuli plan or a transformed staircase), the participant lifts both and
+    /// pokes the button on the side of the one that felt heavier. A catch trial is answered like any other. All of the logic is in the engine-free
+    /// <see cref="DiscriminationSession"/> (plan from its seed, lift-then-answer, the trials file written by
+    /// write-then-rename after every answer, resume): this component only applies the masses, forwards lifts
+    /// and pokes, puts the objects back between trials, and shows the progress.
+    /// </summary>
+    /// <remarks>
+    /// The two objects must take their mass from <c>Explicit Mass Kg</c> (Mass = Explicit); the task sets it
+    /// for every trial. The trials file is read by <c>pseudohaptic psychometric</c>.
+    /// </remarks>
+    [DisallowMultipleComponent]
+    [AddComponentMenu("Kosmos/Pseudo-Haptic/Discrimination Task")]
+    public sealed class DiscriminationTask : MonoBehaviour
+    {
+        [Header("Participant and file")]
+        [Tooltip("The participant's id as the trials file names it.")]
+        [SerializeField] string _participant = "";
+        [Tooltip("The study condition of this session (e.g. 'with effect', 'without'); may be empty.")]
+        [SerializeField] string _condition = "";
+        [Tooltip("Begin (or resume) at Start when a participant is set; otherwise call Begin from code.")]
+        [SerializeField] bool _beginOnStart = true;
+        [Tooltip("The trials file; a relative path is taken under Kosmos.PseudoHaptic in Application.persistentDataPath.")]
+        [SerializeField] string _trialsFile = "trials.csv";
+
+        /// <summary>How comparisons are chosen.</summary>
+        public enum Procedure
+        {
+            /// <summary>The method of constant stimuli: the levels below, in a seeded order.</summary>
+            ConstantStimuli,
+            /// <summary>A 1-up-2-down staircase (converges on 70.7 % "heavier").</summary>
+            Staircase1Up2Down,
+            /// <summary>A 1-up-3-down staircase (converges on 79.4 % "heavier").</summary>
+            Staircase1Up3Down,
+        }
+
+        [Tooltip("Constant stimuli (the levels below) or a transformed staircase (the staircase settings below).")]
+        [SerializeField] Procedure _procedure = Procedure.ConstantStimuli;
+
+        [Header("Plan (method of constant stimuli)")]
+        [Tooltip("The standard's mass, kg.")]
+        [SerializeField] float _standardKg = 0.5f;
+        [Tooltip("The comparison masses, kg (Samad et al. 2019 used 0.7 … 1.3 × the standard in 7 steps).")]
+        [SerializeField] float[] _comparisonKg = { 0.35f, 0.4f, 0.45f, 0.5f, 0.55f, 0.6f, 0.65f };
+        [Tooltip("Repetitions of each comparison.")]
+        [SerializeField] int _repetitions = 12;
+        [Tooltip("Catch comparisons, kg: differences no attentive participant misses (e.g. 0.5× and 2× the standard).")]
+        [SerializeField] float[] _catchKg = new float[0];
+        [Tooltip("Repetitions of each catch comparison.")]
+        [SerializeField] int _catchRepetitions = 0;
+        [Tooltip("The plan's seed: the same seed gives the same order, so a session can resume.")]
+        [SerializeField] int _seed = 1;
+
+        [Header("Staircase")]
+        [Tooltip("The comparison's first mass, kg.")]
+        [SerializeField] float _staircaseStartKg = 0.7f;
+        [Tooltip("The first step, kg; it halves at each of the first Halving Reversals reversals.")]
+        [SerializeField] float _staircaseStepKg = 0.08f;
+        [SerializeField] int _halvingReversals = 2;
+        [Tooltip("Smallest step, kg.")]
+        [SerializeField] float _minStepKg = 0.01f;
+        [Tooltip("The run stops after this many reversals.")]
+        [SerializeField] int _stopAfterReversals = 12;
+        [Tooltip("The threshold is the mean of the levels at the last this many reversals.")]
+        [SerializeField] int _lastReversals = 8;
+        [Tooltip("The run stops after this many trials in any case.")]
+        [SerializeField] int _maxTrials = 120;
+
+        [Header("Scene")]
+        [SerializeField] PseudoHapticWeight _left;
+        [SerializeField] PseudoHapticWeight _right;
+        [SerializeField] DiscriminationButton _leftButton;
+        [SerializeField] DiscriminationButton _rightButton;
+        [Tooltip("Shows the instructions and progress; optional.")]
+        [SerializeField] TextMesh _display;
+
+        [Header("Poking")]
+        [SerializeField] float _cooldown = (float)PokeDebounce.DefaultCooldown;
+        [SerializeField] float _releaseTime = (float)PokeDebounce.DefaultReleaseTime;
+
+        DiscriminationSession _session;
+        PokeDebounce _debounce;
+        string _error;
+        Vector3 _leftHome, _rightHome;
+
+        public DiscriminationSession Session => _session;
+        public string Error => _error;
+
+        public string Participant { get => _participant; set => _participant = value; }
+        public string Condition { get => _condition; set => _condition = value; }
+
+        /// <summary>Sets the scene's objects in code (scene builders, tests).</summary>
+        public void Inject(PseudoHapticWeight left, PseudoHapticWeight right, DiscriminationButton leftButton, DiscriminationButton rightButton, TextMesh display)
+        {
+            _left = left;
+            _right = right;
+            _leftButton = leftButton;
+            _rightButton = rightButton;
+            _display = display;
+        }
+
+        /// <summary>The plan these settings give (the same for the same seed).</summary>
+        public ConstantStimuliPlan Plan() => new ConstantStimuliPlan
+        {
+            Standard = _standardKg,
+            Levels = ToDoubles(_comparisonKg),
+            Repetitions = _repetitions,
+            CatchLevels = ToDoubles(_catchKg),
+            CatchRepetitions = _catchRepetitions,
+            Seed = _seed,
+        };
+
+        /// <summary>The staircase these settings give for a participant and condition (the same for the same seed).</summary>
+        public Staircase MakeStaircase(string participant, string condition) => new Staircase(
+            participant, condition, _standardKg, _staircaseStartKg, _staircaseStepKg,
+            _procedure == Procedure.Staircase1Up3Down ? 3 : 2, _stopAfterReversals, _lastReversals, _seed,
+            _halvingReversals, _minStepKg, _maxTrials, minLevel: 0.001);
+
+        /// <summary>The trials file's full path.</summary>
+        public string TrialsPath
+        {
+            get
+            {
+                string file = string.IsNullOrEmpty(_trialsFile) ? "trials.csv" : _trialsFile;
+                return Path.IsPathRooted(file) ? file : Path.Combine(Application.persistentDataPath, "Kosmos.PseudoHaptic", file);
+            }
+        }
+
+        void Awake()
+        {
+            _debounce = new PokeDebounce(_cooldown, _releaseTime);
+            if (_leftButton != null) _leftButton.Initialize(this, PairSide.Left);
+            if (_rightButton != null) _rightButton.Initialize(this, PairSide.Right);
+            if (_left != null) _leftHome = _left.transform.position;
+            if (_right != null) _rightHome = _right.transform.position;
+        }
+
+        void OnEnable() => PseudoHapticWeight.HoldBegan += OnHoldBegan;
+
+        void OnDisable() => PseudoHapticWeight.HoldBegan -= OnHoldBegan;
+
+        void Start()
+        {
+            if (_beginOnStart && !string.IsNullOrEmpty(_participant)) Begin();
+            else Show();
+        }
+
+        /// <summary>Begins or resumes the session of <see cref="Participant"/> in <see cref="Condition"/>. False (and <see cref="Error"/>) when it cannot.</summary>
+        public bool Begin()
+        {
+            if (_left == null || _right == null) return Fail("the left and right objects are not set");
+            try
+            {
+                _session = _procedure == Procedure.ConstantStimuli
+                    ? new DiscriminationSession(_participant, _condition, TrialsPath, Plan())
+                    : new DiscriminationSession(_participant, _condition, TrialsPath, MakeStaircase);
+            }
+            catch (Exception e) when (e is ArgumentException || e is EvaluationFormatException || e is IOException || e is UnauthorizedAccessException)
+            {
+                _session = null;
+                return Fail(e.Message);
+            }
+            _error = null;
+            ApplyTrial();
+            Show();
+            return true;
+        }
+
+        void OnHoldBegan(PseudoHapticWeight weight)
+        {
+            if (_session == null) return;
+            if (weight == _left) _session.NoteLift(PairSide.Left);
+            else if (weight == _right) _session.NoteLift(PairSide.Right);
+            else return;
+            Show();
+        }
+
+        /// <summary>A fingertip's contact with a button begins: a poke answers (see <see cref="PokeDebounce"/>).</summary>
+        public void Touch(DiscriminationButton button, double now)
+        {
+            if (button != null && _debounce != null && _debounce.Touch(now)) Answer(button.Side);
+        }
+
+        /// <summary>A fingertip's contact with a button lasts.</summary>
+        public void Stay(double now) => _debounce?.Stay(now);
+
+        /// <summary>Answers "the object on <paramref name="heavier"/> was heavier". True when the answer was saved.</summary>
+        public bool Answer(PairSide heavier)
+        {
+            if (_session == null || !_session.CanAnswer) { Show(); return false; }
+            if (_left.IsHeld || _right.IsHeld) return false; // put both down first
+            try
+            {
+                _session.Answer(heavier);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                Fail("the answer could not be saved: " + e.Message);
+                return false;
+            }
+            _error = null;
+            ApplyTrial();
+            Show();
+            return true;
+        }
+
+        /// <summary>The current trial's masses on the objects, which go back to where they started.</summary>
+        void ApplyTrial()
+        {
+            if (_session == null || _session.IsFinished) return;
+            Place(_left, _leftHome, (float)_session.MassAt(PairSide.Left));
+            Place(_right, _rightHome, (float)_session.MassAt(PairSide.Right));
+        }
+
+        static void Place(PseudoHapticWeight weight, Vector3 home, float massKg)
+        {
+            weight.ExplicitMassKg = massKg;
+            weight.transform.position = home;
+            var body = weight.GetComponent<Rigidbody>();
+            if (body != null && !body.isKinematic)
+            {
+                body.velocity = Vector3.zero;
+                body.angularVelocity = Vector3.zero;
+            }
+        }
+
+        bool Fail(string error)
+        {
+            _error = error;
+            Debug.LogError("Discrimination task '" + name + "': " + error, this);
+            Show();
+            return false;
+        }
+
+        void Show()
+        {
+            if (_display == null) return;
+            if (_error != null) { _display.text = _error; return; }
+            if (_session == null) { _display.text = "Waiting for a participant."; return; }
+            if (_session.IsFinished) { _display.text = "Done. Thank you!"; return; }
+            string lifts = _session.CanAnswer ? "Which was heavier? Poke the button on its side."
+                : "Lift both objects, then put them down." + (_session.WasLifted(PairSide.Left) ? " (left: done)" : "") + (_session.WasLifted(PairSide.Right) ? " (right: done)" : "");
+            _display.text = "Trial " + _session.ProgressText + "\n" + lifts;
+        }
+
+        static double[] ToDoubles(float[] values)
+        {
+            if (values == null) return new double[0];
+            var result = new double[values.Length];
+            for (int i = 0; i < values.Length; i++) result[i] = values[i];
+            return result;
+        }
+    }
+}

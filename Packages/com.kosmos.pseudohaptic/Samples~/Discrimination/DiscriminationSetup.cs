@@ -1,0 +1,26 @@
+using Kosmos.PseudoHaptic.Samples;
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic.SampleScenes
+{
+    /// <summary>
+    /// Builds the weight discrimination task (two-alternative forced choice) when the scene starts: two balls of
+    /// the same look on a table, a "heavier" button in front of each, and a <see cref="DiscriminationTask"/>
+    /// for the participant given here. Put it on an empty GameObject in a scene that has a hand rig with a
+    /// <see cref="FingertipPoker"/> on the index fingertip.
+    /// </summary>
+    public sealed class DiscriminationSetup : MonoBehaviour
+    {
+        [Tooltip("The balls' profile; the paper preset when empty.")]
+        [SerializeField] PseudoHapticProfile _profile = null;
+        [Tooltip("The participant's id.")]
+        [SerializeField] string _participant = "P1";
+
+        void Awake()
+        {
+            SampleContent.HandsInScene();
+            PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
+            DiscriminationStation.Build(transform, profile, _participant);
+        }
+    }
+}
