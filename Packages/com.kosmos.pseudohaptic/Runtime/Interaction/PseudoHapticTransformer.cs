@@ -40,7 +40,7 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_grabbable == null || _weight == null || !TryGrabCentre(out Vector3 grab)) return;
             _grabOffset = _weight.transform.position - grab;
             _lastTime = Time.timeAsDouble;
-            _holding = _weight.BeginHold(grab, double.NaN, PseudoHapticWeight.RigidbodyControl.External);
+            _holding = _weight.BeginHold(grab, double.NaN, RigidbodyControl.External);
         }
 
         public void UpdateTransform()

@@ -50,7 +50,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(box.transform.position.x, Is.EqualTo(lifted.x).Within(1e-4f), "x follows the hand");
 
             hand.IsPinching = false;
-            grab.Tick(FrameTime);
+            for (int i = 0; i < 9; i++) grab.Tick(FrameTime); // 0.1 s: the pinch opens after its hysteresis
             Assert.That(grab.Held, Is.Null);
             Assert.That(box.IsHeld, Is.False);
             Assert.That(box.GetComponent<Rigidbody>().isKinematic, Is.False);
@@ -121,7 +121,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 }
                 heights[k] = box.transform.localPosition.y;
                 hand.IsPinching = false;
-                yield return null;
+                for (int i = 0; i < 9; i++) yield return null; // 0.1 s: the pinch opens after its hysteresis
                 Assert.That(box.IsHeld, Is.False);
             }
             Time.captureDeltaTime = 0;

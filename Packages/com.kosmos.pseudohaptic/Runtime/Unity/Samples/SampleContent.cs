@@ -67,7 +67,7 @@ namespace Kosmos.PseudoHaptic.Samples
             visual.localPosition = new Vector3(0, size.y / 2, 0);
 
             Label(go.transform, name, new Vector3(0, size.y + 0.05f, 0));
-            return Weight(go, PseudoHapticWeight.MassSource.DensityTimesVolume, density, 0, profile);
+            return Weight(go, MassSource.DensityTimesVolume, density, 0, profile);
         }
 
         /// <summary>
@@ -100,7 +100,7 @@ namespace Kosmos.PseudoHaptic.Samples
             body.transform.localPosition = new Vector3(0, height / 2, 0);
 
             Label(go.transform, name, new Vector3(0, height + 0.05f, 0));
-            var weight = Weight(go, PseudoHapticWeight.MassSource.DensityTimesVolume, WaterDensity, 0, profile);
+            var weight = Weight(go, MassSource.DensityTimesVolume, WaterDensity, 0, profile);
             weight.VolumeCollider = mesh;
             return weight;
         }
@@ -119,7 +119,7 @@ namespace Kosmos.PseudoHaptic.Samples
             visual.localScale = Vector3.one * (2 * radius);
             visual.localPosition = new Vector3(0, radius, 0);
             Label(go.transform, name, new Vector3(0, 2 * radius + 0.05f, 0));
-            return Weight(go, PseudoHapticWeight.MassSource.Explicit, 0, massKg, profile);
+            return Weight(go, MassSource.Explicit, 0, massKg, profile);
         }
 
         /// <summary>The calibration station: a table, a marker where the golf ball rests, instructions, the calibrator.</summary>
@@ -210,7 +210,7 @@ namespace Kosmos.PseudoHaptic.Samples
             return hands;
         }
 
-        static PseudoHapticWeight Weight(GameObject go, PseudoHapticWeight.MassSource source, float density, float massKg, PseudoHapticProfile profile)
+        static PseudoHapticWeight Weight(GameObject go, MassSource source, float density, float massKg, PseudoHapticProfile profile)
         {
             var weight = go.AddComponent<PseudoHapticWeight>();
             weight.Mass = source;
