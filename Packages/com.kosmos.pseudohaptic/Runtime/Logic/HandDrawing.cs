@@ -71,7 +71,7 @@ namespace Kosmos.PseudoHaptic
             double left = _residual.Length;
             if (left == 0 || !(dt > 0) || double.IsInfinity(dt)) return;
             double step = Math.Min(MaxStep, Math.Max(_returnSpeed, 1e-3) * dt);
-            _residual = step >= left ? Vector3d.Zero : _residual * ((left - step) / left);
+            _residual = step >= left - 1e-12 ? Vector3d.Zero : _residual * ((left - step) / left);
         }
 
         /// <summary>Back to the tracked hand at once (a teleport, a new scene).</summary>
