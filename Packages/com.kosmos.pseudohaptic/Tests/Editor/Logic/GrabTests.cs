@@ -292,19 +292,21 @@ namespace Kosmos.PseudoHaptic.Tests
             var grab = new HandGrab();
             var drawing = new HandDrawing();
             var scene = new BoxScene();
-            Allocation.AssertNone(n =>
+            Allocation.AssertNone(n => Frames(box.Hold, grab, drawing, scene, n), "frames");
+        }
+
+        static void Frames(HeldObject hold, HandGrab grab, HandDrawing drawing, BoxScene scene, int n)
+        {
+            for (int i = 0; i < n; i++)
             {
-                for (int i = 0; i < n; i++)
-                {
-                    var p = Table + new Vector3d(0, 0.001 * (i % 100), 0);
-                    box.Hold.Step(1, p, i % 7 != 0, true, double.NaN, 0.011);
-                    box.Hold.Step(2, p, true, true, double.NaN, 0.011);
-                    box.Hold.TrackObject(p);
-                    grab.Tick(true, i % 2, 0.011, null);
-                    drawing.Update(HandDrawingMode.HandOnObject, i % 50 < 25, new Vector3d(0, -0.05, 0), 0.011);
-                    GrabSelection.Nearest(p, 0.06, 2, scene);
-                }
-            }, "frames");
+                var p = Table + new Vector3d(0, 0.001 * (i % 100), 0);
+                hold.Step(1, p, i % 7 != 0, true, double.NaN, 0.011);
+                hold.Step(2, p, true, true, double.NaN, 0.011);
+                hold.TrackObject(p);
+                grab.Tick(true, i % 2, 0.011, null);
+                drawing.Update(HandDrawingMode.HandOnObject, i % 50 < 25, new Vector3d(0, -0.05, 0), 0.011);
+                GrabSelection.Nearest(p, 0.06, 2, scene);
+            }
         }
     }
 }
