@@ -91,7 +91,7 @@ namespace Kosmos.PseudoHaptic
 
         void ApplyBottom()
         {
-            // Enabled once the solver has the agreed property (branch i9): Solver.BottomBelowPivot = BottomBelowPivot;
+            Solver.BottomBelowPivot = BottomBelowPivot; // the agreed solver property (issue 9): the floor keeps the bottom up
         }
 
         /// <summary>Whether hand <paramref name="hand"/> is on the object.</summary>

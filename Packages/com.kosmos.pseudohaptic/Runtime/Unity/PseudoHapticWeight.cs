@@ -55,7 +55,7 @@ namespace Kosmos.PseudoHaptic
         public double WeightNewtons => Solver != null ? Solver.Model.WeightNewtons : double.NaN;
         public double Gain => Solver != null ? Solver.Gain : double.NaN;
         public double StandardSpeed => Solver != null ? Solver.StandardSpeed : double.NaN;
-        /// <summary>hand − object − grab offset in the parent's space, m; 0 when not held.</summary>
+        /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
         public double Offset => IsHeld ? Solver.Offset : 0;
         public HandSample LastHand => Hold.LastHand;
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
