@@ -1,7 +1,10 @@
-// Compile-only. Transcribed from the Meta XR Interaction SDK (com.meta.xr.sdk.interaction 85.0.0), as mirrored in
-// darktable-mirror/com.meta.xr.sdk.interaction: Runtime/Scripts/Interaction/Grabbable/ITransformer.cs,
+// Compile-only. Transcribed from the Meta XR Interaction SDK (com.meta.xr.sdk.interaction 68.0.0), as mirrored in
+// darktable-mirror/com.meta.xr.sdk.interaction at tag v68.0.0: Runtime/Scripts/Interaction/Grabbable/ITransformer.cs,
 // Runtime/Scripts/Interaction/Grabbable/IGrabbable.cs, Runtime/Scripts/Interaction/Pointable/IPointable.cs
-// (PointerEventType, PointerEvent, IPointable) and Runtime/Scripts/Interaction/Core/IEvent.cs (assembly Oculus.Interaction).
+// (PointerEventType, PointerEvent, IPointable), Runtime/Scripts/Interaction/Core/IEvent.cs,
+// Runtime/Scripts/Input/Hands/IHand.cs (IHand), Runtime/Scripts/Interaction/Models/HandGrab/IHandGrabState.cs,
+// IHandGrabInteractor.cs and HandGrabInteraction.cs (assembly Oculus.Interaction). Interfaces list only the members
+// the package calls (the real ones have more); nothing here implements them.
 using System;
 using System.Collections.Generic;
 using UnityEngine;
@@ -40,7 +43,6 @@ namespace Oculus.Interaction
     public struct PointerEvent : IEvent
     {
         public int Identifier => throw null;
-        public UInt64 EventId => throw null;
         public PointerEventType Type => throw null;
         public Pose Pose => throw null;
         public object Data => throw null;
@@ -50,5 +52,34 @@ namespace Oculus.Interaction
     public interface IPointable
     {
         event Action<PointerEvent> WhenPointerEventRaised;
+    }
+}
+
+namespace Oculus.Interaction.Input
+{
+    public interface IHand
+    {
+        bool IsHighConfidence { get; }
+        bool IsTrackedDataValid { get; }
+    }
+}
+
+namespace Oculus.Interaction.HandGrab
+{
+    using Oculus.Interaction.Input;
+
+    public interface IHandGrabState
+    {
+        Pose WristToGrabPoseOffset { get; }
+    }
+
+    public interface IHandGrabInteractor : IHandGrabState
+    {
+        IHand Hand { get; }
+    }
+
+    public static class HandGrabInteraction
+    {
+        public static Pose GetHandGrabPose(this IHandGrabInteractor handGrabInteractor) => throw null;
     }
 }

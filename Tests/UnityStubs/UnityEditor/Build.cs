@@ -1,6 +1,6 @@
 // Compile-only. Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Editor/Mono/EditorSceneManager.cs + EditorSceneManager.bindings.cs (EditorSceneManager, NewSceneSetup, NewSceneMode),
-//   Editor/Mono/AssetDatabase/AssetDatabase.bindings.cs, Editor/Mono/Prefabs/PrefabUtility.cs,
+//   Modules/AssetDatabase/Editor/ScriptBindings/AssetDatabase.bindings.cs, Editor/Mono/Prefabs/PrefabUtility.cs,
 //   Editor/Mono/EditorBuildSettings.bindings.cs, Editor/Mono/EditorApplication.bindings.cs,
 //   Editor/Mono/EditorUserBuildSettings.bindings.cs (EditorUserBuildSettings, MobileTextureSubtarget),
 //   Editor/Mono/BuildTarget.cs, Editor/Mono/BuildTargetGroup.cs, Editor/Mono/BuildPipeline.bindings.cs
@@ -56,6 +56,8 @@ namespace UnityEditor
     public partial class EditorBuildSettings : Object
     {
         public static EditorBuildSettingsScene[] scenes { get => throw null; set => throw null; }
+        public static void AddConfigObject(string name, Object obj, bool overwrite) => throw null;
+        public static bool TryGetConfigObject<T>(string name, out T result) where T : Object => throw null;
     }
 
     public sealed partial class EditorApplication
@@ -66,7 +68,6 @@ namespace UnityEditor
     public partial class EditorUserBuildSettings : Object
     {
         public static BuildTarget activeBuildTarget => throw null;
-        public static bool SwitchActiveBuildTarget(BuildTargetGroup targetGroup, BuildTarget target) => throw null;
         public static MobileTextureSubtarget androidBuildSubtarget { get => throw null; set => throw null; }
     }
 
@@ -132,9 +133,7 @@ namespace UnityEditor
     /// <summary>Only the levels the package names.</summary>
     public enum AndroidSdkVersions
     {
-        AndroidApiLevelAuto = 0,
         AndroidApiLevel29 = 29,
-        AndroidApiLevel32 = 32,
     }
 
     public sealed partial class PlayerSettings : Object

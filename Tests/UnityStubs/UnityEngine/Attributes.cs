@@ -1,7 +1,7 @@
 // Compile-only. Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Runtime/Export/Serialization/Serialization.cs (SerializeField), Runtime/Export/PropertyDrawer/PropertyAttribute.cs
 //   (PropertyAttribute, TooltipAttribute, HeaderAttribute), Runtime/Export/Scripting/Attributes.cs (AddComponentMenu,
-//   DisallowMultipleComponent, CreateAssetMenuAttribute, ContextMenu), Runtime/Export/Scripting/RuntimeInitializeOnLoadAttribute.cs
+//   DisallowMultipleComponent, CreateAssetMenuAttribute, ContextMenu, HideInInspector), Runtime/Export/Scripting/RuntimeInitializeOnLoadAttribute.cs
 // Attribute targets as declared there, so misplaced attributes fail here as they would in Unity.
 using System;
 
@@ -31,6 +31,10 @@ namespace UnityEngine
     public sealed class AddComponentMenu : Attribute
     {
         public AddComponentMenu(string menuName) => throw null;
+    }
+
+    public sealed class HideInInspector : Attribute
+    {
     }
 
     [AttributeUsage(AttributeTargets.Class, Inherited = false)]

@@ -1,7 +1,9 @@
 // Compile-only. Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Runtime/Export/Graphics/Mesh.cs + Mesh.bindings.cs (Mesh), Runtime/Export/Graphics/GraphicsComponents.bindings.cs
 //   (MeshFilter), Runtime/Export/Graphics/GraphicsRenderers.bindings.cs (Renderer, MeshRenderer),
-//   Runtime/Export/Shaders/Material.bindings.cs (Material), Runtime/Export/Camera/Camera.bindings.cs (Camera),
+//   Runtime/Export/Shaders/Material.bindings.cs (Material), Runtime/Export/Shaders/MaterialPropertyBlock.cs
+//   (MaterialPropertyBlock), Runtime/Export/Shaders/Shader.bindings.cs (Shader.PropertyToID),
+//   Runtime/Export/Camera/Camera.bindings.cs (Camera),
 //   Modules/TextRendering/TextRendering.bindings.cs (Font, TextMesh, TextAnchor, TextAlignment),
 //   Runtime/Export/Gizmos/Gizmos.bindings.cs (Gizmos)
 namespace UnityEngine
@@ -20,8 +22,14 @@ namespace UnityEngine
 
     public class Renderer : Component
     {
-        public Material material { get => throw null; set => throw null; }
         public Material sharedMaterial { get => throw null; set => throw null; }
+        public void SetPropertyBlock(MaterialPropertyBlock properties) => throw null;
+    }
+
+    public sealed partial class MaterialPropertyBlock
+    {
+        public MaterialPropertyBlock() => throw null;
+        public void SetColor(int nameID, Color value) => throw null;
     }
 
     public class MeshRenderer : Renderer
@@ -30,7 +38,11 @@ namespace UnityEngine
 
     public class Material : Object
     {
-        public Color color { get => throw null; set => throw null; }
+    }
+
+    public sealed partial class Shader : Object
+    {
+        public static int PropertyToID(string name) => throw null;
     }
 
     public sealed class Camera : Behaviour

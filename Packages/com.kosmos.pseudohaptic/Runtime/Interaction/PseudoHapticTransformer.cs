@@ -1,4 +1,6 @@
+using System.Collections.Generic;
 using Oculus.Interaction;
+using Oculus.Interaction.HandGrab;
 using UnityEngine;
 
 namespace Kosmos.PseudoHaptic.Interaction
@@ -6,8 +8,14 @@ namespace Kosmos.PseudoHaptic.Interaction
     /// <summary>
     /// The pseudo-haptic weight as a transformer of Meta's Interaction SDK: put it on a <c>Grabbable</c> that
     /// also has a <see cref="PseudoHapticWeight"/> and make it the Grabbable's one-grab transformer (and its
-    /// two-grab one, for lifting with both hands). x and z follow the grab point (the mean of the grab points),
+    /// two-grab one, for lifting with both hands). x and z follow the hand (the mean of the grabbing hands),
     /// keeping the offset they had at the grab; the object's rotation is left as it is; y comes from the solver.
+    /// The hand is the tracked one: a hand grab interactor's grab point is not the hand at the start of a grab
+    /// (its movement provider, <c>MoveTowardsTargetProvider</c> by default, slides it from the object toward the
+    /// hand), so for every grab by an <see cref="IHandGrabInteractor"/> (the pointer event's data) the solver
+    /// gets <see cref="HandGrabInteraction.GetHandGrabPose"/>: the tracked wrist times the offset from the wrist to
+    /// the hand's pinch or palm point taken at the grab (a point fixed to the hand), the pose that movement slides
+    /// toward. Grabs by other interactors (controllers) use the Grabbable's grab points, as they have no such slide.
     /// The Grabbable keeps owning the Rigidbody (Kinematic While Selected, Throw When Unselected), so the
     /// weight's release setting does not apply here. Compiled only when com.meta.xr.sdk.interaction is installed.
     /// </summary>
@@ -18,6 +26,10 @@ namespace Kosmos.PseudoHaptic.Interaction
         [SerializeField] PseudoHapticWeight _weight;
 
         IGrabbable _grabbable;
+        IPointable _pointable;
+        // The hand grab interactors selecting the object, by pointer id (from the Grabbable's Select events).
+        readonly List<int> _handIds = new List<int>(4);
+        readonly List<IHandGrabInteractor> _hands = new List<IHandGrabInteractor>(4);
         Vector3 _grabOffset;
         double _lastTime;
         bool _holding;
@@ -28,7 +40,11 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void Initialize(IGrabbable grabbable)
         {
+            // Called once per role: the same transformer may be the Grabbable's one-grab and two-grab transformer.
+            if (_pointable != null) _pointable.WhenPointerEventRaised -= OnPointerEvent;
             _grabbable = grabbable;
+            _pointable = grabbable as IPointable; // Grabbable is a PointableElement
+            if (_pointable != null) _pointable.WhenPointerEventRaised += OnPointerEvent;
             if (_weight == null && grabbable.Transform != null) _weight = grabbable.Transform.GetComponent<PseudoHapticWeight>();
             if (_weight == null) _weight = GetComponent<PseudoHapticWeight>();
             if (_weight == null) Debug.LogError("Pseudo-Haptic Transformer on '" + name + "' found no PseudoHapticWeight on the grabbed object.", this);
@@ -37,7 +53,7 @@ namespace Kosmos.PseudoHaptic.Interaction
         public void BeginTransform()
         {
             _holding = false;
-            if (_grabbable == null || _weight == null || !TryGrabCentre(out Vector3 grab)) return;
+            if (_grabbable == null || _weight == null || !TryHandCentre(out Vector3 grab, out _, out _)) return;
             _grabOffset = _weight.transform.position - grab;
             _lastTime = Time.timeAsDouble;
             _holding = _weight.BeginHold(grab, double.NaN, RigidbodyControl.External);
@@ -45,7 +61,7 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void UpdateTransform()
         {
-            if (!_holding || !TryGrabCentre(out Vector3 grab)) return;
+            if (!_holding || !TryHandCentre(out Vector3 grab, out bool tracked, out bool highConfidence)) return;
             double now = Time.timeAsDouble;
             float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
             _lastTime = now;
@@ -55,10 +71,9 @@ namespace Kosmos.PseudoHaptic.Interaction
             Vector3 follow = grab + _grabOffset;
             p.x = follow.x;
             p.z = follow.z;
-            if (IsFinite(p.x) && IsFinite(p.z)) target.position = p;
+            if (tracked && IsFinite(p.x) && IsFinite(p.z)) target.position = p;
 
-            // The grab interactor stops selecting when it loses the hand: a grab point is a tracked pose.
-            _weight.Step(grab, true, true, double.NaN, dt);
+            _weight.Step(grab, tracked, highConfidence, double.NaN, dt);
         }
 
         public void EndTransform()
@@ -67,13 +82,60 @@ namespace Kosmos.PseudoHaptic.Interaction
             _holding = false;
         }
 
-        bool TryGrabCentre(out Vector3 centre)
+        void OnDestroy()
+        {
+            if (_pointable != null) _pointable.WhenPointerEventRaised -= OnPointerEvent;
+        }
+
+        // The Grabbable raises Select after adding the grab point and before BeginTransform, Unselect and Cancel
+        // after removing it.
+        void OnPointerEvent(PointerEvent evt)
+        {
+            if (evt.Type == PointerEventType.Select)
+            {
+                if (evt.Data is IHandGrabInteractor hand && !_handIds.Contains(evt.Identifier))
+                {
+                    _handIds.Add(evt.Identifier);
+                    _hands.Add(hand);
+                }
+            }
+            else if (evt.Type == PointerEventType.Unselect || evt.Type == PointerEventType.Cancel)
+            {
+                int i = _handIds.IndexOf(evt.Identifier);
+                if (i >= 0)
+                {
+                    _handIds.RemoveAt(i);
+                    _hands.RemoveAt(i);
+                }
+            }
+        }
+
+        /// <summary>
+        /// The mean of the grabbing hands: the tracked hands when every grab comes from a hand grab interactor,
+        /// else the Grabbable's grab points. Tracked (and high confidence) only when every hand is.
+        /// </summary>
+        bool TryHandCentre(out Vector3 centre, out bool tracked, out bool highConfidence)
         {
             var points = _grabbable.GrabPoints;
             centre = Vector3.zero;
+            tracked = true;
+            highConfidence = true;
             int n = points != null ? points.Count : 0;
             if (n == 0) return false;
-            for (int i = 0; i < n; i++) centre += points[i].position;
+            if (_hands.Count == n)
+            {
+                for (int i = 0; i < n; i++)
+                {
+                    IHandGrabInteractor hand = _hands[i];
+                    centre += hand.GetHandGrabPose().position;
+                    tracked &= hand.Hand.IsTrackedDataValid;
+                    highConfidence &= hand.Hand.IsHighConfidence;
+                }
+            }
+            else
+            {
+                for (int i = 0; i < n; i++) centre += points[i].position;
+            }
             centre /= n;
             return true;
         }

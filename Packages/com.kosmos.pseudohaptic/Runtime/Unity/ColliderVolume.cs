@@ -6,13 +6,22 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The volume V of a collider in world units (m³), for m = ρ·V (Son et al. 2022, §3.1). Box, sphere and
     /// capsule scale as PhysX scales them; a mesh's volume is the sum of the signed tetrahedra its triangles
-    /// span with the origin (divergence theorem), so it needs a closed mesh that is readable at run time.
-    /// Called when an object is configured, never per frame: reading a mesh allocates.
+    /// span with the origin (divergence theorem, <see cref="MeshVolume"/>), so it needs a closed mesh. A player build
+    /// strips meshes that are not marked Read/Write, so the volume is computed in the editor and stored with the
+    /// weight (<see cref="PseudoHapticWeight.StoreMeshVolume"/>); a readable mesh is read only when nothing was stored
+    /// for it. Called when an object is configured, never per frame: reading a mesh allocates.
     /// </summary>
     public static class ColliderVolume
     {
         /// <summary>The collider's volume in m³, or false with the reason it cannot be had.</summary>
-        public static bool TryGet(Collider collider, out double volume, out string error)
+        public static bool TryGet(Collider collider, out double volume, out string error) =>
+            TryGet(collider, null, 0, out volume, out error);
+
+        /// <summary>
+        /// The collider's volume in m³; for a mesh collider, <paramref name="storedMeshVolume"/> (mesh units³, stored
+        /// at edit time for <paramref name="storedFor"/>) when it was stored for this very mesh, else the mesh read.
+        /// </summary>
+        public static bool TryGet(Collider collider, Mesh storedFor, double storedMeshVolume, out double volume, out string error)
         {
             volume = 0;
             error = null;
@@ -41,8 +50,18 @@ namespace Kosmos.PseudoHaptic
             {
                 Mesh mesh = meshCollider.sharedMesh;
                 if (mesh == null) { error = "the MeshCollider has no mesh"; return false; }
-                if (!mesh.isReadable) { error = "mesh '" + mesh.name + "' is not readable: enable Read/Write in its import settings"; return false; }
-                volume = Math.Abs(Mesh(mesh.vertices, mesh.triangles)) * sx * sy * sz;
+                switch (MeshVolume.Choose(storedFor != null && storedFor == mesh, storedMeshVolume, mesh.isReadable))
+                {
+                    case MeshVolumeSource.Stored:
+                        volume = storedMeshVolume * sx * sy * sz;
+                        break;
+                    case MeshVolumeSource.ReadMesh:
+                        volume = Math.Abs(Mesh(mesh.vertices, mesh.triangles)) * sx * sy * sz;
+                        break;
+                    default:
+                        error = "mesh '" + mesh.name + "' is not readable and no volume was stored for it: select the object in the editor (the weight stores its volume) or enable Read/Write in the mesh's import settings";
+                        return false;
+                }
             }
             else
             {
@@ -68,24 +87,20 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>
-        /// The signed volume enclosed by a closed triangle mesh: Σ v0·(v1×v2)/6 over its triangles, in mesh
-        /// units. Its sign follows the winding; callers take the magnitude. Shared or split vertices (seams)
-        /// do not matter, only that the surface is closed.
+        /// The signed volume enclosed by a closed triangle mesh (<see cref="MeshVolume.Signed"/>), in mesh units. Its
+        /// sign follows the winding; callers take the magnitude. Allocates a copy of the vertices.
         /// </summary>
         public static double Mesh(Vector3[] vertices, int[] triangles)
         {
             if (vertices == null || triangles == null) return 0;
-            double sum = 0;
-            for (int i = 0; i + 2 < triangles.Length; i += 3)
+            var xyz = new float[3 * vertices.Length];
+            for (int i = 0; i < vertices.Length; i++)
             {
-                Vector3 a = vertices[triangles[i]], b = vertices[triangles[i + 1]], c = vertices[triangles[i + 2]];
-                // a · (b × c), in double.
-                double cx = (double)b.y * c.z - (double)b.z * c.y;
-                double cy = (double)b.z * c.x - (double)b.x * c.z;
-                double cz = (double)b.x * c.y - (double)b.y * c.x;
-                sum += a.x * cx + a.y * cy + a.z * cz;
+                xyz[3 * i] = vertices[i].x;
+                xyz[3 * i + 1] = vertices[i].y;
+                xyz[3 * i + 2] = vertices[i].z;
             }
-            return sum / 6.0;
+            return MeshVolume.Signed(xyz, triangles);
         }
     }
 }

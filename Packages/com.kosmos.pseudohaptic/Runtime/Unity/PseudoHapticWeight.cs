@@ -24,6 +24,11 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] float _densityKgPerCubicMetre = 1000f;
         [Tooltip("The collider whose volume counts and that a hand reaches for; this object's first collider when empty.")]
         [SerializeField] Collider _volumeCollider;
+        // A mesh collider's volume (mesh units³) computed in the editor, and the mesh it is of: a player build strips
+        // meshes that are not Read/Write, so it uses this instead of reading the mesh (ColliderVolume, MeshVolume.Choose).
+        [SerializeField, HideInInspector] double _storedMeshVolume;
+        [SerializeField, HideInInspector] Mesh _storedVolumeMesh;
+
         [Header("Effects")]
         [Tooltip("The scene's effects and where the hand is drawn; the 'paper' preset when empty.")]
         [SerializeField] PseudoHapticProfile _profile;
@@ -86,13 +91,35 @@ namespace Kosmos.PseudoHaptic
 
         void OnEnable() { s_enabled.Add(this); UserCalibrationStore.Changed += MarkDirty; }
         void OnDisable() { Hold.EndAll(); s_enabled.Remove(this); UserCalibrationStore.Changed -= MarkDirty; }
-        void OnValidate() => _dirty = true;
         void MarkDirty() => _dirty = true;
+
+        void OnValidate()
+        {
+            _dirty = true;
+#if UNITY_EDITOR
+            if (_massSource == MassSource.DensityTimesVolume) StoreMeshVolume();
+#endif
+        }
+
+        /// <summary>
+        /// Stores the volume collider's mesh volume with this component (read in the editor, where every mesh is readable), so a
+        /// player build, where the mesh may be stripped, needs no readable mesh. False without a readable closed mesh. Allocates.
+        /// </summary>
+        public bool StoreMeshVolume()
+        {
+            Mesh mesh = Collider is MeshCollider meshCollider ? meshCollider.sharedMesh : null;
+            double v = mesh != null && mesh.isReadable ? Math.Abs(ColliderVolume.Mesh(mesh.vertices, mesh.triangles)) : 0;
+            if (!(v > 0) || double.IsInfinity(v)) return false;
+            _storedMeshVolume = v;
+            _storedVolumeMesh = mesh;
+            _dirty = true;
+            return true;
+        }
 
         /// <summary>The weight model of this object's settings, or false with the reason. Reading a mesh's volume allocates.</summary>
         public bool TryCreateModel(out WeightModel model, out string error) =>
             WeightSettings.TryCreateModel(_massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
-                                          (out double v, out string e) => ColliderVolume.TryGet(Collider, out v, out e), name, out model, out error);
+                                          (out double v, out string e) => ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out v, out e), name, out model, out error);
 
         /// <summary>The profile this object uses: its asset's, or the "paper" preset.</summary>
         public bool TryGetProfile(out WeightProfile profile, out string error)

@@ -288,7 +288,7 @@ namespace Kosmos.PseudoHaptic
                 if (!active) continue;
                 b.Value = q.ScaleMin + i;
                 b.Label.text = b.Value.ToString(System.Globalization.CultureInfo.InvariantCulture);
-                b.Face.material.color = chosen.HasValue && chosen.Value == b.Value ? _chosenColor : _buttonColor;
+                Tint(b.Face, chosen.HasValue && chosen.Value == b.Value ? _chosenColor : _buttonColor);
             }
             float labelWidth = points > 0 ? Math.Max(0.12f, width / 2 - 0.02f) : 0;
             _minLabel.text = q != null ? TextWrap.Wrap(q.ScaleMinLabel, CharsPerLine(labelWidth, _textSize * 0.75f)) : "";
@@ -331,7 +331,7 @@ namespace Kosmos.PseudoHaptic
             background.transform.localPosition = new Vector3(0, 0, 0.006f);
             background.transform.localScale = new Vector3(_size.x, _size.y, 1);
             _background = background.GetComponent<Renderer>();
-            _background.material.color = _panelColor;
+            Tint(_background, _panelColor);
 
             float left = -_size.x / 2 + Margin, right = _size.x / 2 - Margin, top = _size.y / 2 - Margin;
             _title = Text("Title", new Vector3(left, top, 0), TextAnchor.UpperLeft, TextAlignment.Left, _textSize * 0.85f, _textColor);
@@ -369,6 +369,21 @@ namespace Kosmos.PseudoHaptic
             _maxLabel.transform.localPosition = new Vector3(edge, _maxLabel.transform.localPosition.y, 0);
         }
 
+        // The colours go through a property block: the primitives keep sharing Unity's default material (renderer.material
+        // would copy it per object, and leak those copies when called in edit mode). _Color is the built-in pipeline's
+        // colour, _BaseColor URP's; a shader ignores the one it lacks.
+        static readonly int ColorId = Shader.PropertyToID("_Color");
+        static readonly int BaseColorId = Shader.PropertyToID("_BaseColor");
+        static MaterialPropertyBlock s_tint;
+
+        static void Tint(Renderer renderer, Color color)
+        {
+            if (s_tint == null) s_tint = new MaterialPropertyBlock();
+            s_tint.SetColor(ColorId, color);
+            s_tint.SetColor(BaseColorId, color);
+            renderer.SetPropertyBlock(s_tint);
+        }
+
         TextMesh Text(string objectName, Vector3 localPosition, TextAnchor anchor, TextAlignment alignment, float characterSize, Color color)
         {
             var go = new GameObject(objectName);
@@ -401,7 +416,7 @@ namespace Kosmos.PseudoHaptic
             face.GetComponent<Collider>().enabled = false;
             face.transform.SetParent(root.transform, false);
             var renderer = face.GetComponent<Renderer>();
-            renderer.material.color = _buttonColor;
+            Tint(renderer, _buttonColor);
 
             var text = new GameObject("Label");
             text.transform.SetParent(root.transform, false);

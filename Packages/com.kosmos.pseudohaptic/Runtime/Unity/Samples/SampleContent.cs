@@ -72,7 +72,10 @@ namespace Kosmos.PseudoHaptic.Samples
 
         /// <summary>
         /// A water bottle of <paramref name="litres"/>: a cylinder mesh collider, mass = 1000 kg/m³ × the mesh's
-        /// volume (signed tetrahedra), its height set so the mesh holds that volume.
+        /// volume (signed tetrahedra), its height set so the mesh holds that volume. The volume is stored with the
+        /// weight here, at edit time when the editor builds the scene, so a player build never reads the mesh. Where
+        /// the mesh cannot be read (a setup script running in a player that stripped it), the height stays the
+        /// circle's and the mass is computed from the mesh at configuration if it can be, else it is reported.
         /// </summary>
         public static PseudoHapticWeight Bottle(Transform surface, string name, Vector3 localPosition, float litres, float radius, PseudoHapticProfile profile)
         {
@@ -102,6 +105,7 @@ namespace Kosmos.PseudoHaptic.Samples
             Label(go.transform, name, new Vector3(0, height + 0.05f, 0));
             var weight = Weight(go, MassSource.DensityTimesVolume, WaterDensity, 0, profile);
             weight.VolumeCollider = mesh;
+            weight.StoreMeshVolume();
             return weight;
         }
 
