@@ -48,6 +48,22 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_weight == null && grabbable.Transform != null) _weight = grabbable.Transform.GetComponent<PseudoHapticWeight>();
             if (_weight == null) _weight = GetComponent<PseudoHapticWeight>();
             if (_weight == null) Debug.LogError("Pseudo-Haptic Transformer on '" + name + "' found no PseudoHapticWeight on the grabbed object.", this);
+            ApplyHandDrawing();
+        }
+
+        /// <summary>
+        /// Where the hand is drawn (issue 14 item 4), through the Interaction SDK's wrist lock: while a hand grab selects, its
+        /// HandGrabStateVisual locks the synthetic hand's wrist to the grabbed object unless the interactable's HandAlignment
+        /// is None. The weight's profile chooses: hand on object → AlignOnGrab (the SDK's default), hand true → None. The
+        /// return to the tracked hand after the release is the SyntheticHand's wrist unlock curve. Initialize calls it; call
+        /// it again after changing the profile. Allocates (finds the interactables): not per frame.
+        /// </summary>
+        public void ApplyHandDrawing()
+        {
+            if (_grabbable == null || _grabbable.Transform == null || _weight == null) return;
+            HandAlignType align = _weight.HandDrawing == HandDrawingMode.HandOnObject ? HandAlignType.AlignOnGrab : HandAlignType.None;
+            foreach (HandGrabInteractable interactable in _grabbable.Transform.GetComponentsInChildren<HandGrabInteractable>())
+                interactable.HandAlignment = align;
         }
 
         public void BeginTransform()

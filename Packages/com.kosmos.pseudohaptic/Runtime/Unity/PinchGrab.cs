@@ -13,7 +13,7 @@ namespace Kosmos.PseudoHaptic
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pinch Grab")]
     public sealed class PinchGrab : MonoBehaviour, IGrabDriver, IGrabCandidates
     {
-        [Tooltip("An IPinchHandPoseSource (e.g. OvrHandPoseSource, XRHandPoseSource, TransformHandPoseSource).")]
+        [Tooltip("An IPinchHandPoseSource (OvrHandPoseSource, XRHandPoseSource, TransformHandPoseSource).")]
         [SerializeField] MonoBehaviour _hand;
         [Tooltip("How near the hand must be to an object's collider to grab it, m.")]
         [SerializeField] float _reach = 0.06f;
