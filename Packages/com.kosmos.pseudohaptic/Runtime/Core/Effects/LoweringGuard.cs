@@ -23,13 +23,13 @@ namespace Kosmos.PseudoHaptic
             Slack = ConfigurationGuard.InRange(slack, 0, 0.1, nameof(slack));
         }
 
-        /// <summary>For this long after it acted, s, the guard gives its pull back if the hand turns back up: a one-pose
+        /// <summary>For this long after it acted, s of pose time, the guard gives its pull back if the hand turns back up: a one-pose
         /// glitch down and back, or jitter, then leaves no trace (a one-sided pull would ratchet the object down).</summary>
         public const double GiveBackTime = 0.2;
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            state.GuardAge += frame.Dt;
+            state.GuardAge += frame.MotionInterval; // pose time: every frame clock expires the debt at the same pose
             if (state.GuardAge > GiveBackTime) state.GuardDebt = 0;
             if (frame.HandDelta > 0)
             {
