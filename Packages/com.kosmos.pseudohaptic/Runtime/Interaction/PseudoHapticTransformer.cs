@@ -81,14 +81,8 @@ namespace Kosmos.PseudoHaptic.Interaction
             double now = Time.timeAsDouble;
             float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
             _lastTime = now;
-
             Transform target = _weight.transform;
-            Vector3 p = target.position;
-            Vector3 follow = grab + _grabOffset;
-            p.x = follow.x;
-            p.z = follow.z;
-            if (tracked && IsFinite(p.x) && IsFinite(p.z)) target.position = p;
-
+            target.position = GrabFollow.Horizontal(target.position.ToDouble(), grab.ToDouble(), _grabOffset.ToDouble(), tracked, true).ToUnity();
             _weight.Step(grab, tracked, highConfidence, double.NaN, dt);
         }
 
@@ -127,35 +121,22 @@ namespace Kosmos.PseudoHaptic.Interaction
         }
 
         /// <summary>
-        /// The mean of the grabbing hands: the tracked hands when every grab comes from a hand grab interactor,
-        /// else the Grabbable's grab points. Tracked (and high confidence) only when every hand is.
+        /// The mean of the grabbing hands (<see cref="GrabCentre"/>): the tracked hands when every grab comes from a hand grab
+        /// interactor, else the Grabbable's grab points. Tracked (and high confidence) only when every hand is.
         /// </summary>
         bool TryHandCentre(out Vector3 centre, out bool tracked, out bool highConfidence)
         {
             var points = _grabbable.GrabPoints;
-            centre = Vector3.zero;
-            tracked = true;
-            highConfidence = true;
             int n = points != null ? points.Count : 0;
-            if (n == 0) return false;
-            if (_hands.Count == n)
-            {
-                for (int i = 0; i < n; i++)
-                {
-                    IHandGrabInteractor hand = _hands[i];
-                    centre += hand.GetHandGrabPose().position;
-                    tracked &= hand.Hand.IsTrackedDataValid;
-                    highConfidence &= hand.Hand.IsHighConfidence;
-                }
-            }
-            else
-            {
-                for (int i = 0; i < n; i++) centre += points[i].position;
-            }
-            centre /= n;
-            return true;
+            var mean = new GrabCentre();
+            for (int i = 0; i < n && _hands.Count == n; i++)
+                mean.Add(_hands[i].GetHandGrabPose().position.ToDouble(), _hands[i].Hand.IsTrackedDataValid, _hands[i].Hand.IsHighConfidence);
+            for (int i = 0; i < n && _hands.Count != n; i++)
+                mean.Add(points[i].position.ToDouble());
+            centre = mean.Point.ToUnity();
+            tracked = mean.IsTracked;
+            highConfidence = mean.IsHighConfidence;
+            return mean.Count > 0;
         }
-
-        static bool IsFinite(float v) => !float.IsNaN(v) && !float.IsInfinity(v);
     }
 }

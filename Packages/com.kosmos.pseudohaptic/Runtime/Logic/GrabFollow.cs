@@ -28,4 +28,28 @@ namespace Kosmos.PseudoHaptic
             return s < 0 ? 0 : s > 1 ? 1 : s;
         }
     }
+
+    /// <summary>
+    /// The point a grab of several hands follows (the Interaction SDK transformer's), engine-free: the mean of the hands
+    /// added, tracked (and high confidence) only when every one is. No allocation.
+    /// </summary>
+    public struct GrabCentre
+    {
+        Vector3d _sum;
+        int _count;
+        bool _untracked, _lowConfidence;
+
+        public void Add(Vector3d point, bool tracked = true, bool highConfidence = true)
+        {
+            _sum += point;
+            _count++;
+            _untracked |= !tracked;
+            _lowConfidence |= !highConfidence;
+        }
+
+        public int Count => _count;
+        public Vector3d Point => _count > 0 ? _sum / _count : Vector3d.NaN;
+        public bool IsTracked => _count > 0 && !_untracked;
+        public bool IsHighConfidence => IsTracked && !_lowConfidence;
+    }
 }

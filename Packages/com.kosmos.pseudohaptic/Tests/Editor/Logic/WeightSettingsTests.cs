@@ -95,5 +95,21 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(GrabFollow.PinchStrength(0.0275), Is.EqualTo(0.5).Within(1e-12));
             Assert.That(GrabFollow.PinchStrength(double.NaN), Is.EqualTo(0));
         }
+
+        [Test]
+        public void AGrabOfSeveralHandsFollowsTheirMeanAndIsTrackedOnlyWhenEveryHandIs()
+        {
+            var none = new GrabCentre();
+            Assert.That(none.Count, Is.EqualTo(0));
+            Assert.That(none.Point.IsFinite || none.IsTracked, Is.False, "no hand: no point, not tracked");
+            var two = new GrabCentre();
+            two.Add(new Vector3d(0, 1, 0));
+            two.Add(new Vector3d(0.2, 1.2, 0), true, false);
+            Assert.That(two.Point.X, Is.EqualTo(0.1).Within(1e-12));
+            Assert.That(two.Point.Y, Is.EqualTo(1.1).Within(1e-12));
+            Assert.That(two.IsTracked && !two.IsHighConfidence, Is.True);
+            two.Add(new Vector3d(0, 1, 0), false, false);
+            Assert.That(two.IsTracked, Is.False, "one lost hand makes the grab untracked");
+        }
     }
 }
