@@ -42,6 +42,7 @@ namespace Kosmos.PseudoHaptic
         static readonly List<PseudoHapticWeight> s_enabled = new List<PseudoHapticWeight>();
         HeldObject _hold;
         HeldBody _body;
+        RigidbodyControl _rigidbodyControl;
         bool _dirty = true;
         PseudoHapticProfile _configuredAsset;
         int _configuredVersion;
@@ -83,7 +84,7 @@ namespace Kosmos.PseudoHaptic
         HeldObject CreateHold()
         {
             var hold = new HeldObject(this);
-            hold.Began += () => Raise(HoldBegan);
+            hold.Began += () => { _body = new HeldBody(_rigidbodyControl == RigidbodyControl.ByThisComponent ? Body : null); _body.Take(); Raise(HoldBegan); };
             hold.Stepped += () => Raise(HoldStepped);
             hold.Ended += () => { _body.Restore(Hold.ReleaseVelocity(_releaseVelocity).ToUnity()); Raise(HoldEnded); };
             return hold;
@@ -101,19 +102,13 @@ namespace Kosmos.PseudoHaptic
 #endif
         }
 
-        /// <summary>
-        /// Stores the volume collider's mesh volume with this component (read in the editor, where every mesh is readable), so a
-        /// player build, where the mesh may be stripped, needs no readable mesh. False without a readable closed mesh. Allocates.
-        /// </summary>
+        /// <summary>Stores the mesh collider's volume with the component (read in the editor), so a player build that strips the mesh needs none. Allocates.</summary>
         public bool StoreMeshVolume()
         {
-            Mesh mesh = Collider is MeshCollider meshCollider ? meshCollider.sharedMesh : null;
-            double v = mesh != null && mesh.isReadable ? Math.Abs(ColliderVolume.Mesh(mesh.vertices, mesh.triangles)) : 0;
-            if (!(v > 0) || double.IsInfinity(v)) return false;
-            _storedMeshVolume = v;
+            if (!ColliderVolume.TryReadMesh(Collider, out Mesh mesh, out double volume)) return false; // keeps what was stored
             _storedVolumeMesh = mesh;
-            _dirty = true;
-            return true;
+            _storedMeshVolume = volume;
+            return _dirty = true;
         }
 
         /// <summary>The weight model of this object's settings, or false with the reason. Reading a mesh's volume allocates.</summary>
@@ -150,14 +145,12 @@ namespace Kosmos.PseudoHaptic
         public bool BeginHold(int hand, Vector3 handWorld, double poseTime = double.NaN, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
         {
             if (NeedsConfiguration) Configure();
-            bool first = !IsHeld;
             Collider c = Collider;
-            Hold.BottomBelowPivot = c != null ? Math.Max(0, transform.position.y - c.bounds.min.y) : 0;
-            if (first) _body = new HeldBody(rigidbody == RigidbodyControl.ByThisComponent ? Body : null);
-            if (!Hold.Begin(hand, handWorld.ToDouble(), poseTime, transform.position.ToDouble(), transform.localPosition.y)) return false;
-            if (first) _body.Take();
-            SetLocalY(Solver.ObjectY); // the floor may have lifted the start
-            return true;
+            Hold.BottomBelowPivot = c != null ? Math.Max(0, transform.position.y - c.bounds.min.y) : 0; // the floor keeps the bottom up
+            _rigidbodyControl = rigidbody; // the first hand's Began takes the Rigidbody
+            bool began = Hold.Begin(hand, handWorld.ToDouble(), poseTime, transform.position.ToDouble(), transform.localPosition.y);
+            SetLocalY(began ? Solver.ObjectY : double.NaN); // the floor may have lifted the start
+            return began;
         }
 
         public bool BeginHold(Vector3 handWorld, double poseTime = double.NaN, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
