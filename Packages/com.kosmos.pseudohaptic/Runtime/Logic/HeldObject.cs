@@ -108,7 +108,7 @@ namespace Kosmos.PseudoHaptic
         public bool Begin(int hand, Vector3d handWorld, double poseTime, Vector3d objectWorld, double objectLocalY)
         {
             if (Solver == null || Slot(hand) >= 0 || _count >= MaxHands) return false;
-            bool usable = handWorld.IsFinite;
+            bool usable = Usable(handWorld);
             if (_count > 0)
             {
                 Add(hand, handWorld, usable);
@@ -146,7 +146,7 @@ namespace Kosmos.PseudoHaptic
         {
             int slot = Slot(hand);
             if (slot < 0 || !IsHeld) return double.NaN;
-            bool usable = tracked && handWorld.IsFinite;
+            bool usable = tracked && Usable(handWorld);
             _tracked[slot] = usable;
             if (usable) _pos[slot] = handWorld;
             Refresh();
@@ -204,6 +204,10 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>The velocity a released body gets under <paramref name="kind"/>.</summary>
         public Vector3d ReleaseVelocity(ReleaseVelocity kind) => WeightSettings.Release(kind, HandVelocity, ObjectVelocity);
+
+        /// <summary>A pose the hands' point may follow: finite and within ±<see cref="WeightSolver.MaxCoordinate"/> m (the solver's rule for heights).</summary>
+        static bool Usable(Vector3d p) =>
+            HandSample.IsUsableHeight(p.Y) && HandSample.IsUsableHeight(p.X) && HandSample.IsUsableHeight(p.Z);
 
         int Slot(int hand)
         {
