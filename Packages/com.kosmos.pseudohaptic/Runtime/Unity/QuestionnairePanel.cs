@@ -56,10 +56,8 @@ namespace Kosmos.PseudoHaptic
         QuestionnairePanelParts _parts;
 
         public QuestionnairePanelModel Model => _model ?? (_model = CreateModel());
-        /// <summary>The running session; null before <see cref="Begin(string)"/>.</summary>
-        public QuestionnaireSession Session => Model.Session;
-        /// <summary>Why the panel cannot run or the last answer was not saved; null when all is well.</summary>
-        public string Error => Model.Error;
+        public QuestionnaireSession Session => Model.Session; // null before Begin
+        public string Error => Model.Error; // why the panel cannot run or the last answer was not saved; null when all is well
         public PokeDebounce Debounce => Model.Debounce;
         public IReadOnlyList<PokeButton> ScaleButtons => Parts.Scale;
         public PokeButton BackButton => Parts.Back;
@@ -126,8 +124,7 @@ namespace Kosmos.PseudoHaptic
             if (Model.Touch(now)) Press(button);
         }
 
-        /// <summary>A fingertip's contact with a button lasts.</summary>
-        public void Stay(double now) => Model.Stay(now);
+        public void Stay(double now) => Model.Stay(now); // a fingertip's contact with a button lasts
 
         /// <summary>A poke that selected the panel's surface at <paramref name="world"/> (the Interaction SDK's): presses the button there, if any, outside the cooldown.</summary>
         public bool PokeAt(Vector3 world, double now)
@@ -136,8 +133,7 @@ namespace Kosmos.PseudoHaptic
             return button != null && Model.Poke(now) && Press(button);
         }
 
-        /// <summary>The active button whose face contains <paramref name="world"/>, or null.</summary>
-        public PokeButton ButtonAt(Vector3 world) => Parts.ButtonAt(world);
+        public PokeButton ButtonAt(Vector3 world) => Parts.ButtonAt(world); // the active button whose face contains it, or null
 
         /// <summary>Does what <paramref name="button"/> stands for, without the debounce. True when something changed.</summary>
         public bool Press(PokeButton button) => button != null && Shown(Model.Press(button.Kind, button.Value));
