@@ -24,6 +24,7 @@ public class BuiltInModuleTests
         ("com.unity.test-framework", "1.1.33"),
         ("com.unity.xr.management", "4.4.0"),
         ("com.unity.xr.oculus", "4.2.0"),
+        ("com.unity.xr.hands", "1.5.0"), // the second hand source (Runtime/XRHands); needs OpenXR to report hands
     };
 
     /// <summary>
@@ -47,7 +48,7 @@ public class BuiltInModuleTests
         ("particlesystem", "ParticleSystemRenderer: ISDK Runtime/Sample/Scripts/PoseUseSample.cs (assembly Oculus.Interaction.Samples, always compiled)"),
         ("physics", "Collider, Rigidbody: Core Scripts/OVRInput.cs, ISDK throughout; this package"),
         ("physics2d", "Physics2D.GetRayIntersectionAll: Core Scripts/Util/OVRRaycaster.cs"),
-        ("subsystems", "SubsystemManager: Core Scripts/OVRManager.cs; ISubsystem: XR Management Runtime/XRLoader.cs"),
+        ("subsystems", "SubsystemManager: Core Scripts/OVRManager.cs; ISubsystem: XR Management Runtime/XRLoader.cs; SubsystemWithProvider: XR Hands Runtime/XRHandSubsystem.cs"),
         ("ui", "Canvas: Core Scripts/OVROverlayCanvas.cs, ISDK Runtime/Scripts/Unity/PointableCanvas.cs (and com.unity.ugui)"),
         ("uielements", "UnityEngine.UIElements: Core Editor/Utils/StatusMenu/StatusIcon.cs, XR Management Runtime/XRManagerSettings.cs"),
         ("unitywebrequest", "UnityWebRequest: Core Editor/OVRPlatformTool.cs, Editor/BuildingBlocks/BlocksContentManager.cs"),
@@ -82,7 +83,7 @@ public class BuiltInModuleTests
         ("xr", @"InputDevices?|XRNode|InputTracking|XRDisplaySubsystem"),
     };
 
-    static readonly string[] UnityFacingFolders = { "Runtime/Unity", "Runtime/Meta", "Runtime/Interaction", "Editor", "Tests/Runtime", "Samples~" };
+    static readonly string[] UnityFacingFolders = { "Runtime/Unity", "Runtime/Meta", "Runtime/Interaction", "Runtime/XRHands", "Editor", "Tests/Runtime", "Samples~" };
 
     static Dictionary<string, string> Dependencies(string path)
     {
@@ -163,6 +164,7 @@ public class BuiltInModuleTests
         ("Unity.XR.Management", "com.unity.xr.management 4.4.0: Runtime/Unity.XR.Management.asmdef"),
         ("Unity.XR.Management.Editor", "com.unity.xr.management 4.4.0: Editor/Unity.XR.Management.Editor.asmdef"),
         ("Unity.XR.Oculus", "com.unity.xr.oculus 4.2.0: Runtime/Unity.XR.Oculus.asmdef"),
+        ("Unity.XR.Hands", "com.unity.xr.hands 1.5.0: Runtime/Unity.XR.Hands.asmdef"),
         ("UnityEngine.TestRunner", "com.unity.test-framework 1.1.33: UnityEngine.TestRunner/UnityEngine.TestRunner.asmdef"),
         ("UnityEditor.TestRunner", "com.unity.test-framework 1.1.33: UnityEditor.TestRunner/UnityEditor.TestRunner.asmdef"),
     };

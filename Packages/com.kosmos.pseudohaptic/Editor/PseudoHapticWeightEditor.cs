@@ -52,7 +52,7 @@ namespace Kosmos.PseudoHaptic.Editor
             EditorGUILayout.LabelField("W_std / W", F(model.StandardWeightRatio, "0.###"));
             EditorGUILayout.LabelField("Gain G", F(preview.Gain, "0.###") + (preview.Gain < 1 ? "  (lags the hand)" : preview.Gain > 1 ? "  (leads the hand)" : ""));
             EditorGUILayout.LabelField("Standard speed v_std", F(speed, "0.###") + " m/s"
-                + (weight.SpeedSource == PseudoHapticWeight.StandardSpeedSource.UserCalibration && UserCalibrationStore.Current == null ? "  (default: not calibrated)" : ""));
+                + (weight.SpeedSource == StandardSpeedSource.UserCalibration && UserCalibrationStore.Current == null ? "  (default: not calibrated)" : ""));
             EditorGUILayout.LabelField("Profile", profile.ToString(), EditorStyles.wordWrappedMiniLabel);
 
             DrawCurve(profile, speed, model.MassKg, preview.Gain);

@@ -58,6 +58,11 @@ namespace Kosmos.PseudoHaptic.Editor
         public static bool BuildApk(string apkPath)
         {
             ConfigureProject();
+#if KOSMOS_XR_HANDS
+            // Issue 14: Unity XR Hands reads hands through OpenXR (the Hand Tracking Subsystem feature); this build assigns the
+            // Oculus loader, under which no XRHandSubsystem runs.
+            Debug.LogWarning("Quest 2 build: com.unity.xr.hands is installed, but this build assigns the Oculus XR loader: XRHandPoseSource components will read no hand. Use OvrHandPoseSource (the sample scenes' default), or build with the OpenXR loader and its Hand Tracking Subsystem and Meta Quest features yourself.");
+#endif
             string[] scenes = EnabledScenes();
             if (scenes.Length == 0)
             {

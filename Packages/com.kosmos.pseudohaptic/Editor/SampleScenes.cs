@@ -9,8 +9,10 @@ namespace Kosmos.PseudoHaptic.Editor
 {
     /// <summary>
     /// Menu items that build the sample scenes from code into <see cref="Folder"/>, the same way every time:
-    /// a rig (Meta's OVRCameraRig with OVRHand prefabs when the Meta XR Core SDK is installed, simulated hands
-    /// otherwise), the content of <see cref="SampleContent"/>, the profile assets, and the build settings.
+    /// a rig (Meta's OVRCameraRig with OVRHand prefabs when the Meta XR Core SDK is installed; Unity XR Hands sources
+    /// with "Build All (Unity XR Hands)" when com.unity.xr.hands is installed; simulated hands otherwise), each hand
+    /// with a <see cref="PinchGrab"/> (and, for OVRHand, a visual root it draws on the object under a hand-on-object
+    /// profile), the content of <see cref="SampleContent"/>, the profile assets, and the build settings.
     /// </summary>
     public static class SampleScenes
     {
@@ -30,6 +32,20 @@ namespace Kosmos.PseudoHaptic.Editor
             Playground();
             Discrimination();
         }
+
+#if KOSMOS_XR_HANDS
+        /// <summary>Builds every sample with Unity XR Hands sources instead of OVRHand (OpenXR projects).</summary>
+        [MenuItem(Menu + "Build All (Unity XR Hands)", priority = 1)]
+        public static void BuildAllWithXRHands()
+        {
+            UseXRHands = true;
+            try { BuildAll(); }
+            finally { UseXRHands = false; }
+        }
+#endif
+
+        /// <summary>Whether the rigs use Unity XR Hands sources (set by "Build All (Unity XR Hands)").</summary>
+        public static bool UseXRHands { get; set; }
 
         [MenuItem(Menu + "Calibration", priority = 20)]
         public static void Calibration()
@@ -61,7 +77,11 @@ namespace Kosmos.PseudoHaptic.Editor
         {
             if (!NewScene(out Scene scene, out Transform root, out List<IPinchHandPoseSource> hands)) return;
             var sources = new List<IHandPoseSource>(hands);
-            SampleContent.Playground(root, Profile("Playground", NamedProfiles.PaperName), sources);
+            PseudoHapticProfile handOnObject = Profile("Playground-HandOnObject", NamedProfiles.PaperName);
+            handOnObject.HandDrawing = HandDrawingMode.HandOnObject; // the same effects, the hand drawn at the object
+            EditorUtility.SetDirty(handOnObject);
+            AssetDatabase.SaveAssets();
+            SampleContent.Playground(root, Profile("Playground", NamedProfiles.PaperName), sources, handOnObject);
             Save(scene, "Playground");
         }
 
@@ -119,6 +139,15 @@ namespace Kosmos.PseudoHaptic.Editor
         static List<IPinchHandPoseSource> CreateRig()
         {
             var hands = new List<IPinchHandPoseSource>(2);
+#if KOSMOS_XR_HANDS
+            if (UseXRHands)
+            {
+                // Put both under the XR Origin's Camera Offset and set their Tracking Space to it (joint poses are in that space).
+                hands.Add(XRHand("Left Hand (XR Hands)", UnityEngine.XR.Hands.Handedness.Left));
+                hands.Add(XRHand("Right Hand (XR Hands)", UnityEngine.XR.Hands.Handedness.Right));
+                return hands;
+            }
+#endif
 #if KOSMOS_META_XR_CORE
             var rigPrefab = AssetDatabase.LoadAssetAtPath<GameObject>(OvrCameraRigPrefab);
             var handPrefab = AssetDatabase.LoadAssetAtPath<GameObject>(OvrHandPrefab);
@@ -154,18 +183,35 @@ namespace Kosmos.PseudoHaptic.Editor
             return source;
         }
 
+#if KOSMOS_XR_HANDS
+        static IPinchHandPoseSource XRHand(string name, UnityEngine.XR.Hands.Handedness side)
+        {
+            var go = new GameObject(name);
+            var source = go.AddComponent<XRHands.XRHandPoseSource>();
+            source.HandSide = side;
+            go.AddComponent<PinchGrab>().InjectHand(source);
+            return source;
+        }
+#endif
+
 #if KOSMOS_META_XR_CORE
         static void AddOvrHand(Transform anchor, GameObject handPrefab, int handType, List<IPinchHandPoseSource> hands)
         {
             if (anchor == null) return;
-            var go = (GameObject)PrefabUtility.InstantiatePrefab(handPrefab, anchor);
+            // anchor (tracked) → Hand Visual (offset by the Pinch Grab when the hand is drawn on the object) → OVRHandPrefab.
+            var visual = new GameObject("Hand Visual").transform;
+            visual.SetParent(anchor, false);
+            var go = (GameObject)PrefabUtility.InstantiatePrefab(handPrefab, visual);
             // OVRHand.HandType, OVRSkeleton._skeletonType, OVRMesh._meshType: 0 = left, 1 = right.
             SetInt(go, "HandType", handType);
             SetInt(go, "_skeletonType", handType);
             SetInt(go, "_meshType", handType);
             var source = go.AddComponent<Meta.OvrHandPoseSource>();
             source.InjectHand(go.GetComponent<OVRHand>());
-            go.AddComponent<PinchGrab>().InjectHand(source);
+            source.Tracked = anchor; // the solver follows the anchor, never the offset visual
+            var grab = go.AddComponent<PinchGrab>();
+            grab.InjectHand(source);
+            grab.HandVisual = visual;
             hands.Add(source);
         }
 

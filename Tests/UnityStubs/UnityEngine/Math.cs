@@ -103,6 +103,7 @@ namespace UnityEngine
 
     public struct Bounds : IEquatable<Bounds>
     {
+        public Vector3 min { get => throw null; set => throw null; }
         public Vector3 ClosestPoint(Vector3 point) => throw null;
 
         public bool Equals(Bounds other) => throw null;

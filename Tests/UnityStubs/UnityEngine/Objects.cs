@@ -26,6 +26,7 @@ namespace UnityEngine
     {
         public Transform transform => throw null;
         public GameObject gameObject => throw null;
+        public T[] GetComponentsInChildren<T>() => throw null;
         public T GetComponent<T>() => throw null;
         public T GetComponentInParent<T>() => throw null;
     }

@@ -48,6 +48,22 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_weight == null && grabbable.Transform != null) _weight = grabbable.Transform.GetComponent<PseudoHapticWeight>();
             if (_weight == null) _weight = GetComponent<PseudoHapticWeight>();
             if (_weight == null) Debug.LogError("Pseudo-Haptic Transformer on '" + name + "' found no PseudoHapticWeight on the grabbed object.", this);
+            ApplyHandDrawing();
+        }
+
+        /// <summary>
+        /// Where the hand is drawn (issue 14 item 4), through the Interaction SDK's wrist lock: while a hand grab selects, its
+        /// HandGrabStateVisual locks the synthetic hand's wrist to the grabbed object unless the interactable's HandAlignment
+        /// is None. The weight's profile chooses: hand on object → AlignOnGrab (the SDK's default), hand true → None. The
+        /// return to the tracked hand after the release is the SyntheticHand's wrist unlock curve. Initialize calls it; call
+        /// it again after changing the profile. Allocates (finds the interactables): not per frame.
+        /// </summary>
+        public void ApplyHandDrawing()
+        {
+            if (_grabbable == null || _grabbable.Transform == null || _weight == null) return;
+            HandAlignType align = _weight.HandDrawing == HandDrawingMode.HandOnObject ? HandAlignType.AlignOnGrab : HandAlignType.None;
+            foreach (HandGrabInteractable interactable in _grabbable.Transform.GetComponentsInChildren<HandGrabInteractable>())
+                interactable.HandAlignment = align;
         }
 
         public void BeginTransform()
@@ -56,7 +72,7 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_grabbable == null || _weight == null || !TryHandCentre(out Vector3 grab, out _, out _)) return;
             _grabOffset = _weight.transform.position - grab;
             _lastTime = Time.timeAsDouble;
-            _holding = _weight.BeginHold(grab, double.NaN, PseudoHapticWeight.RigidbodyControl.External);
+            _holding = _weight.BeginHold(grab, double.NaN, RigidbodyControl.External);
         }
 
         public void UpdateTransform()
@@ -65,14 +81,8 @@ namespace Kosmos.PseudoHaptic.Interaction
             double now = Time.timeAsDouble;
             float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
             _lastTime = now;
-
             Transform target = _weight.transform;
-            Vector3 p = target.position;
-            Vector3 follow = grab + _grabOffset;
-            p.x = follow.x;
-            p.z = follow.z;
-            if (tracked && IsFinite(p.x) && IsFinite(p.z)) target.position = p;
-
+            target.position = GrabFollow.Horizontal(target.position.ToDouble(), grab.ToDouble(), _grabOffset.ToDouble(), tracked, true).ToUnity();
             _weight.Step(grab, tracked, highConfidence, double.NaN, dt);
         }
 
@@ -111,35 +121,22 @@ namespace Kosmos.PseudoHaptic.Interaction
         }
 
         /// <summary>
-        /// The mean of the grabbing hands: the tracked hands when every grab comes from a hand grab interactor,
-        /// else the Grabbable's grab points. Tracked (and high confidence) only when every hand is.
+        /// The mean of the grabbing hands (<see cref="GrabCentre"/>): the tracked hands when every grab comes from a hand grab
+        /// interactor, else the Grabbable's grab points. Tracked (and high confidence) only when every hand is.
         /// </summary>
         bool TryHandCentre(out Vector3 centre, out bool tracked, out bool highConfidence)
         {
             var points = _grabbable.GrabPoints;
-            centre = Vector3.zero;
-            tracked = true;
-            highConfidence = true;
             int n = points != null ? points.Count : 0;
-            if (n == 0) return false;
-            if (_hands.Count == n)
-            {
-                for (int i = 0; i < n; i++)
-                {
-                    IHandGrabInteractor hand = _hands[i];
-                    centre += hand.GetHandGrabPose().position;
-                    tracked &= hand.Hand.IsTrackedDataValid;
-                    highConfidence &= hand.Hand.IsHighConfidence;
-                }
-            }
-            else
-            {
-                for (int i = 0; i < n; i++) centre += points[i].position;
-            }
-            centre /= n;
-            return true;
+            var mean = new GrabCentre();
+            for (int i = 0; i < n && _hands.Count == n; i++)
+                mean.Add(_hands[i].GetHandGrabPose().position.ToDouble(), _hands[i].Hand.IsTrackedDataValid, _hands[i].Hand.IsHighConfidence);
+            for (int i = 0; i < n && _hands.Count != n; i++)
+                mean.Add(points[i].position.ToDouble());
+            centre = mean.Point.ToUnity();
+            tracked = mean.IsTracked;
+            highConfidence = mean.IsHighConfidence;
+            return mean.Count > 0;
         }
-
-        static bool IsFinite(float v) => !float.IsNaN(v) && !float.IsInfinity(v);
     }
 }

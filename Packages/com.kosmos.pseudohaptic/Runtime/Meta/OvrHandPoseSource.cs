@@ -24,12 +24,17 @@ namespace Kosmos.PseudoHaptic.Meta
         [Tooltip("The OVRHand to read; found on this GameObject or its parents when empty.")]
         [SerializeField] OVRHand _hand;
         [SerializeField] PositionSource _position = PositionSource.HandTransform;
+        [Tooltip("Where the tracked hand is for Hand Transform: the hand anchor, when the OVRHand sits under a visual root that a Pinch Grab offsets (hand drawn on the object); empty: the OVRHand's own transform.")]
+        [SerializeField] Transform _tracked;
         [Tooltip("A pinch counts only while the index finger is tracked with high confidence.")]
         [SerializeField] bool _pinchNeedsHighConfidence = true;
 
         public OVRHand OvrHand => _hand;
 
         public void InjectHand(OVRHand hand) => _hand = hand;
+
+        /// <summary>The transform read as the tracked hand (the hand anchor), above any offset visual root.</summary>
+        public Transform Tracked { get => _tracked; set => _tracked = value; }
 
         void Awake()
         {
@@ -47,12 +52,14 @@ namespace Kosmos.PseudoHaptic.Meta
             {
                 if (_hand == null) return new Vector3(float.NaN, float.NaN, float.NaN);
                 if (_position == PositionSource.PointerPose && _hand.IsPointerPoseValid) return _hand.PointerPose.position;
-                return _hand.transform.position;
+                return (_tracked != null ? _tracked : _hand.transform).position;
             }
         }
 
         public double PoseTime => double.NaN;
 
+        // The runtime's own pinch flag (its threshold on the strength is not documented): the grab's hysteresis
+        // then holds it through a dropped frame (PinchDetector.OpenAfter).
         public bool IsPinching =>
             IsTracked
             && _hand.GetFingerIsPinching(OVRHand.HandFinger.Index)

@@ -77,6 +77,20 @@ namespace Kosmos.PseudoHaptic
             return true;
         }
 
+        /// <summary>
+        /// The closed, readable mesh of a <see cref="MeshCollider"/> and its volume (mesh units³), for storing at edit time;
+        /// false (mesh null, volume 0) for any other collider or a mesh that cannot be read. Allocates.
+        /// </summary>
+        public static bool TryReadMesh(Collider collider, out Mesh mesh, out double volume)
+        {
+            mesh = collider is MeshCollider meshCollider && meshCollider.sharedMesh != null && meshCollider.sharedMesh.isReadable ? meshCollider.sharedMesh : null;
+            volume = mesh != null ? Math.Abs(Mesh(mesh.vertices, mesh.triangles)) : 0;
+            if (volume > 0 && !double.IsInfinity(volume)) return true;
+            mesh = null;
+            volume = 0;
+            return false;
+        }
+
         public static double Sphere(double radius) => 4.0 / 3.0 * Math.PI * radius * radius * radius;
 
         /// <summary>A capsule of total height <paramref name="height"/> (caps included); shorter than 2r it is a sphere, as in PhysX.</summary>

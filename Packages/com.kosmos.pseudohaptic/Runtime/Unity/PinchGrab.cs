@@ -3,38 +3,44 @@ using UnityEngine;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// A pinch grab for scenes without the Interaction SDK: one per hand. When the hand starts an index pinch
-    /// within reach of an enabled <see cref="PseudoHapticWeight"/> (nearest first), it holds that object: x and z
-    /// follow the hand, y comes from the weight's solver. Opening the hand releases it; while tracking is lost
-    /// the object is held still, and released after <see cref="_releaseAfterLost"/> seconds.
-    /// Runs in LateUpdate, after the hand SDK has updated its pose; nothing is allocated per frame.
+    /// A pinch grab for scenes without the Interaction SDK: one per hand. Glue over the engine-free
+    /// <see cref="HandGrab"/> (pinch with hysteresis, release on an opened hand, a long tracking loss or a
+    /// break-away), <see cref="GrabSelection"/> (the nearest enabled <see cref="PseudoHapticWeight"/> in reach; two
+    /// hands may share one) and <see cref="HandDrawing"/> (where the hand's visual root is drawn, per the held
+    /// object's profile). x and z follow the hand; y comes from the weight's solver. Runs in LateUpdate, after the
+    /// hand SDK has updated its pose; nothing is allocated per frame.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pinch Grab")]
-    public sealed class PinchGrab : MonoBehaviour
+    public sealed class PinchGrab : MonoBehaviour, IGrabDriver, IGrabCandidates
     {
-        [Tooltip("An IPinchHandPoseSource (e.g. OvrHandPoseSource, TransformHandPoseSource).")]
+        [Tooltip("An IPinchHandPoseSource (OvrHandPoseSource, XRHandPoseSource, TransformHandPoseSource).")]
         [SerializeField] MonoBehaviour _hand;
         [Tooltip("How near the hand must be to an object's collider to grab it, m.")]
         [SerializeField] float _reach = 0.06f;
         [Tooltip("Release after tracking has been lost this long, s.")]
-        [SerializeField] float _releaseAfterLost = 1f;
+        [SerializeField] float _releaseAfterLost = (float)HandGrab.DefaultReleaseAfterLost;
         [Tooltip("x and z follow the hand while held (the paper moves y only by the solver; x/z by the grab).")]
         [SerializeField] bool _followHorizontal = true;
+        [Tooltip("Optional: the hand's visual root (a transform the hand SDK does not drive, above the hand mesh), offset to the object when the held object's profile draws the hand on the object.")]
+        [SerializeField] Transform _handVisual;
 
+        static int s_nextId;
+        int _id;
         IPinchHandPoseSource _source;
+        readonly HandGrab _grab = new HandGrab();
+        readonly HandDrawing _drawing = new HandDrawing();
         PseudoHapticWeight _held;
-        Vector3 _grabOffset;
-        bool _wasPinching;
-        float _lostFor;
+        Vector3 _position, _grabOffset, _visualRest;
+        float _dt;
 
         public PseudoHapticWeight Held => _held;
+        public HandGrab Grab => _grab;
+        public HandDrawing Drawing => _drawing;
         public IPinchHandPoseSource Hand => _source ?? (_source = HandSourceField.Resolve<IPinchHandPoseSource>(_hand));
-
-        public float Reach
-        {
-            get => _reach;
-            set => _reach = value;
-        }
+        public float Reach { get => _reach; set => _reach = value; }
+        public float ReleaseAfterLost { get => _releaseAfterLost; set => _grab.ReleaseAfterLost = _releaseAfterLost = value; }
+        public Transform HandVisual { get => _handVisual; set { _handVisual = value; _visualRest = value != null ? value.localPosition : default; } }
+        int Id => _id != 0 ? _id : (_id = ++s_nextId);
 
         /// <summary>Sets the hand in code (tests, scene builders).</summary>
         public void InjectHand(IPinchHandPoseSource hand)
@@ -52,12 +58,12 @@ namespace Kosmos.PseudoHaptic
 
         void Awake()
         {
-            if (_hand != null && Hand == null)
-                Debug.LogError("Pinch Grab on '" + name + "': '" + _hand.name + "' has no IPinchHandPoseSource.", this);
+            HandVisual = _handVisual;
+            _grab.ReleaseAfterLost = _releaseAfterLost; // throws on an invalid setting, naming it
+            if (_hand != null && Hand == null) Debug.LogError("Pinch Grab on '" + name + "': '" + _hand.name + "' has no IPinchHandPoseSource.", this);
         }
 
         void OnDisable() => Release();
-
         void LateUpdate() => Tick(Time.deltaTime);
 
         /// <summary>One frame of the grab; LateUpdate calls it, tests may too.</summary>
@@ -65,80 +71,56 @@ namespace Kosmos.PseudoHaptic
         {
             IPinchHandPoseSource hand = Hand;
             if (hand == null) return;
-            bool tracked = hand.IsTracked;
-            bool pinching = tracked && hand.IsPinching;
-            Vector3 position = hand.Position;
-
-            if (_held != null && !_held.IsHeld) _held = null; // destroyed, disabled or released elsewhere
-            if (_held != null)
-            {
-                if (tracked && !pinching) Release();
-                else if (!tracked && (_lostFor += dt) >= _releaseAfterLost) Release();
-                else
-                {
-                    if (tracked)
-                    {
-                        _lostFor = 0;
-                        if (_followHorizontal) FollowHorizontal(position);
-                    }
-                    _held.Step(position, tracked, hand.IsHighConfidence, hand.PoseTime, dt);
-                }
-            }
-            else if (pinching && !_wasPinching)
-            {
-                TryGrab(hand, position);
-            }
-            _wasPinching = pinching;
+            _position = hand.Position;
+            _dt = dt;
+            _grab.Tick(hand.IsTracked, PinchSources.Strength(hand), dt, this);
+            Vector3d lag = _held != null ? GrabFollow.Lag(_held.transform.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble()) : Vector3d.Zero;
+            Vector3d offset = _drawing.Update(_held != null ? _held.HandDrawing : HandDrawingMode.HandTrue, _held != null, lag, dt);
+            if (_handVisual != null) _handVisual.localPosition = _visualRest;
+            if (_handVisual != null) _handVisual.position += offset.ToUnity();
         }
 
         /// <summary>Lets go of the held object, if any.</summary>
-        public void Release()
+        public void Release() => _grab.Release(this);
+
+        bool IGrabDriver.TryGrab()
         {
-            if (_held != null) _held.EndHold();
+            int i = GrabSelection.Nearest(_position.ToDouble(), _reach, HeldObject.MaxHands, this);
+            PseudoHapticWeight w = i >= 0 ? PseudoHapticWeight.Enabled[i] : null;
+            if (w == null || !w.BeginHold(Id, _position, Hand.PoseTime)) return false;
+            _held = w;
+            _grabOffset = w.transform.position - _position;
+            return true;
+        }
+
+        bool IGrabDriver.IsStillHeld => _held != null && _held.Hold.Holds(Id);
+        bool IGrabDriver.BrokeAway => false; // the solver reports no break-away yet (issue 10 adds it)
+
+        void IGrabDriver.Follow(bool tracked)
+        {
+            Transform t = _held.transform;
+            t.position = GrabFollow.Horizontal(t.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble(), tracked, _followHorizontal).ToUnity();
+            IPinchHandPoseSource hand = Hand;
+            _held.Step(Id, _position, tracked, hand.IsHighConfidence, hand.PoseTime, _dt);
+        }
+
+        void IGrabDriver.Release()
+        {
+            if (_held != null) _held.EndHold(Id);
             _held = null;
         }
 
-        void TryGrab(IPinchHandPoseSource hand, Vector3 position)
-        {
-            PseudoHapticWeight best = null;
-            float bestSq = _reach * _reach;
-            var all = PseudoHapticWeight.Enabled;
-            for (int i = 0; i < all.Count; i++)
-            {
-                PseudoHapticWeight w = all[i];
-                if (w.IsHeld) continue;
-                float d = (NearestPoint(w, position) - position).sqrMagnitude;
-                if (d <= bestSq)
-                {
-                    best = w;
-                    bestSq = d;
-                }
-            }
-            if (best == null || !best.BeginHold(position, hand.PoseTime)) return;
-            _held = best;
-            _grabOffset = best.transform.position - position;
-            _lostFor = 0;
-        }
+        int IGrabCandidates.Count => PseudoHapticWeight.Enabled.Count;
+        int IGrabCandidates.HandsOn(int index) => PseudoHapticWeight.Enabled[index].Hold.HandCount;
 
-        static Vector3 NearestPoint(PseudoHapticWeight w, Vector3 position)
+        Vector3d IGrabCandidates.ClosestPoint(int index, Vector3d hand)
         {
+            PseudoHapticWeight w = PseudoHapticWeight.Enabled[index];
             Collider c = w.Collider;
-            if (c == null || !c.enabled) return w.transform.position;
+            Vector3 p = hand.ToUnity();
             // PhysX answers ClosestPoint only for convex shapes.
-            if (c is MeshCollider mesh && !mesh.convex) return c.bounds.ClosestPoint(position);
-            return c.ClosestPoint(position);
+            if (c == null || !c.enabled) return w.transform.position.ToDouble();
+            return (c is MeshCollider mesh && !mesh.convex ? c.bounds.ClosestPoint(p) : c.ClosestPoint(p)).ToDouble();
         }
-
-        void FollowHorizontal(Vector3 hand)
-        {
-            Transform t = _held.transform;
-            Vector3 target = hand + _grabOffset;
-            Vector3 p = t.position;
-            p.x = target.x;
-            p.z = target.z;
-            if (IsFinite(p.x) && IsFinite(p.z)) t.position = p;
-        }
-
-        static bool IsFinite(float v) => !float.IsNaN(v) && !float.IsInfinity(v);
     }
 }

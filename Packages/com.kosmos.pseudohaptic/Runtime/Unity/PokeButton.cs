@@ -10,21 +10,11 @@ namespace Kosmos.PseudoHaptic
     [AddComponentMenu("")]
     public sealed class PokeButton : MonoBehaviour
     {
-        public enum Role
-        {
-            /// <summary>Answers the current item with <see cref="Value"/>.</summary>
-            Answer,
-            /// <summary>Goes back to the previous item.</summary>
-            Back,
-            /// <summary>Goes on to the next item without changing the answer.</summary>
-            Next,
-        }
-
         QuestionnairePanel _panel;
 
-        public Role Kind { get; private set; }
+        public PanelAction Kind { get; private set; }
 
-        /// <summary>The point on the scale, for <see cref="Role.Answer"/>.</summary>
+        /// <summary>The point on the scale, for <see cref="PanelAction.Answer"/>.</summary>
         public int Value { get; internal set; }
 
         /// <summary>The button's face, m (local x and y); a point within it counts as on the button.</summary>
@@ -34,7 +24,7 @@ namespace Kosmos.PseudoHaptic
         public Renderer Face { get; private set; }
         public TextMesh Label { get; private set; }
 
-        internal void Initialize(QuestionnairePanel panel, Role kind, BoxCollider collider, Renderer face, TextMesh label)
+        internal void Initialize(QuestionnairePanel panel, PanelAction kind, BoxCollider collider, Renderer face, TextMesh label)
         {
             _panel = panel;
             Kind = kind;

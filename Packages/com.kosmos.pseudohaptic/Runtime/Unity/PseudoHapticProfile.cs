@@ -62,6 +62,10 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] float _maxCatchUpGap;
         [SerializeField] float _maxCarry;
 
+        [Header("Where the hand is drawn")]
+        [Tooltip("Hand True (the paper): the rendered hand stays with the tracked hand and the object visibly lags. Hand On Object (Samad et al. 2019, Rietzler et al. 2018): the rendered hand is drawn at the object.")]
+        [SerializeField] HandDrawingMode _handDrawing = HandDrawingMode.HandTrue;
+
         [NonSerialized] WeightProfile _built;
         [NonSerialized] int _version;
 
@@ -69,6 +73,13 @@ namespace Kosmos.PseudoHaptic
         public PseudoHapticProfile()
         {
             CopyFrom(NamedProfiles.Paper);
+        }
+
+        /// <summary>Where the rendered hand is drawn while it holds an object of this profile (not a solver setting).</summary>
+        public HandDrawingMode HandDrawing
+        {
+            get => _handDrawing;
+            set { _handDrawing = value; MarkChanged(); }
         }
 
         /// <summary>Changes whenever a setting changes, so holders know to rebuild.</summary>

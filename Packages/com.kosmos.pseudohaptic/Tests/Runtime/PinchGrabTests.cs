@@ -50,7 +50,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(box.transform.position.x, Is.EqualTo(lifted.x).Within(1e-4f), "x follows the hand");
 
             hand.IsPinching = false;
-            grab.Tick(FrameTime);
+            for (int i = 0; i < 9; i++) grab.Tick(FrameTime); // 0.1 s: the pinch opens after its hysteresis
             Assert.That(grab.Held, Is.Null);
             Assert.That(box.IsHeld, Is.False);
             Assert.That(box.GetComponent<Rigidbody>().isKinematic, Is.False);
@@ -97,6 +97,53 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(grab.Held, Is.Null, "released after a long one");
         }
 
+        [Test]
+        public void TwoHandsHoldOneBoxUntilTheLastLetsGo()
+        {
+            PseudoHapticWeight box = Box("box", 1f);
+            var left = new ScriptedHand(box.transform.position + new Vector3(-0.04f, 0.05f, 0)) { IsPinching = true };
+            var right = new ScriptedHand(box.transform.position + new Vector3(0.04f, 0.05f, 0)) { IsPinching = true };
+            PinchGrab l = Grabber(left), r = Grabber(right);
+            l.Tick(FrameTime);
+            r.Tick(FrameTime);
+            Assert.That(l.Held, Is.SameAs(box));
+            Assert.That(r.Held, Is.SameAs(box), "the second hand joins");
+            Assert.That(box.Hold.HandCount, Is.EqualTo(2));
+            left.IsPinching = false;
+            for (int i = 0; i < 9; i++) { l.Tick(FrameTime); r.Tick(FrameTime); }
+            Assert.That(l.Held, Is.Null);
+            Assert.That(box.IsHeld, Is.True, "still held by the right hand");
+            right.IsPinching = false;
+            for (int i = 0; i < 9; i++) { l.Tick(FrameTime); r.Tick(FrameTime); }
+            Assert.That(box.IsHeld, Is.False);
+            Assert.That(box.GetComponent<Rigidbody>().isKinematic, Is.False);
+        }
+
+        [Test]
+        public void AHandOnObjectProfileDrawsTheHandVisualAtTheObjectAndReturnsIt()
+        {
+            PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
+            profile.HandDrawing = HandDrawingMode.HandOnObject;
+            PseudoHapticWeight box = Box("5 kg", 5f, default, profile);
+            Vector3 start = box.transform.position + new Vector3(0, 0.05f, 0);
+            var hand = new ScriptedHand(start) { IsPinching = true };
+            PinchGrab grab = Grabber(hand);
+            var visual = Track(new GameObject("Hand Visual")).transform;
+            visual.SetParent(grab.transform, false);
+            grab.HandVisual = visual;
+            grab.Tick(FrameTime);
+            Vector3 top = start + new Vector3(0, 0.2f, 0);
+            Frames(grab, hand, start, top, 0.6f);
+            Frames(grab, hand, top, top, 0.2f);
+            float lag = box.transform.position.y - (hand.Position.y - 0.05f);
+            Assert.That(lag, Is.LessThan(-0.02f), "5 kg lags a 0.2 m lift");
+            Assert.That(visual.localPosition.y, Is.EqualTo(lag).Within(1e-4f), "the visual is drawn where the object is");
+            hand.IsPinching = false;
+            Frames(grab, hand, top, top, 0.35f); // opens after 50 ms, back within 200 ms
+            Assert.That(grab.Held, Is.Null);
+            Assert.That(visual.localPosition.y, Is.EqualTo(0f).Within(1e-6f), "back on the tracked hand");
+        }
+
         /// <summary>In the player loop: the grab runs in LateUpdate and the hand moves between frames.</summary>
         [UnityTest]
         public IEnumerator InThePlayerLoopHeavierBoxesEndLower()
@@ -121,7 +168,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 }
                 heights[k] = box.transform.localPosition.y;
                 hand.IsPinching = false;
-                yield return null;
+                for (int i = 0; i < 9; i++) yield return null; // 0.1 s: the pinch opens after its hysteresis
                 Assert.That(box.IsHeld, Is.False);
             }
             Time.captureDeltaTime = 0;

@@ -50,9 +50,9 @@ namespace Kosmos.PseudoHaptic.Tests
             box.center = new Vector3(0, 0.05f, 0);
             go.AddComponent<Rigidbody>();
             var weight = go.AddComponent<PseudoHapticWeight>();
-            weight.Mass = PseudoHapticWeight.MassSource.Explicit;
+            weight.Mass = MassSource.Explicit;
             weight.ExplicitMassKg = massKg;
-            weight.SpeedSource = PseudoHapticWeight.StandardSpeedSource.Explicit;
+            weight.SpeedSource = StandardSpeedSource.Explicit;
             weight.Profile = profile;
             return weight;
         }

@@ -53,7 +53,7 @@ namespace Kosmos.PseudoHaptic.Tests
             PseudoHapticWeight box = Box("box", 1f);
             var body = box.GetComponent<Rigidbody>();
             body.velocity = new Vector3(0, -3f, 0);
-            box.Release = PseudoHapticWeight.ReleaseVelocity.Zero;
+            box.Release = ReleaseVelocity.Zero;
 
             Assert.That(box.BeginHold(box.transform.position + Vector3.up * 0.05f), Is.True);
             Assert.That(body.isKinematic, Is.True);
@@ -66,7 +66,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void ReleaseGivesTheHandsVelocityWhenAskedTo()
         {
             PseudoHapticWeight box = Box("box", 0.2f);
-            box.Release = PseudoHapticWeight.ReleaseVelocity.Hand;
+            box.Release = ReleaseVelocity.Hand;
             var hand = new ScriptedHand(box.transform.position);
             Vector3 start = hand.Position;
             Assert.That(box.BeginHold(hand), Is.True);
@@ -99,7 +99,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void DensityTimesVolumeGivesTheMass()
         {
             PseudoHapticWeight box = Box("water cube", 1f);
-            box.Mass = PseudoHapticWeight.MassSource.DensityTimesVolume;
+            box.Mass = MassSource.DensityTimesVolume;
             box.DensityKgPerCubicMetre = 1000f; // 0.1 m cube of water: 1 kg
             Assert.That(box.Configure(), Is.True, box.ConfigurationError);
             Assert.That(box.MassKg, Is.EqualTo(1.0).Within(1e-4));
@@ -111,7 +111,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             PseudoHapticWeight box = Box("rb", 1f);
             box.GetComponent<Rigidbody>().mass = 2.5f;
-            box.Mass = PseudoHapticWeight.MassSource.Rigidbody;
+            box.Mass = MassSource.Rigidbody;
             Assert.That(box.Configure(), Is.True, box.ConfigurationError);
             Assert.That(box.MassKg, Is.EqualTo(2.5).Within(1e-6));
         }

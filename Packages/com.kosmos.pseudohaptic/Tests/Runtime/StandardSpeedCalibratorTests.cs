@@ -64,7 +64,7 @@ namespace Kosmos.PseudoHaptic.Tests
             float[] durations = { 0.50f, 0.55f, 0.48f, 0.52f, 0.50f };
             foreach (float d in durations) LiftOnce(c, hand, rest, 0.3f, d);
 
-            Assert.That(c.CurrentPhase, Is.EqualTo(StandardSpeedCalibrator.Phase.Accepted), c.Message);
+            Assert.That(c.CurrentPhase, Is.EqualTo(CalibrationPhase.Accepted), c.Message);
             Assert.That(completed.HasValue, Is.True);
             // 90 % of a 0.3 m minimum-jerk rise between 5 % and 95 % takes ~0.62 of the duration: ~0.87 m/s at 0.5 s.
             Assert.That(c.Result.StandardSpeed, Is.InRange(0.6, 1.2));
@@ -91,7 +91,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(c.Measurements[0].IsAccepted, Is.False);
             Assert.That(c.Measurements[0].Reason, Does.Contain("too short"));
             Assert.That(c.Message, Does.Contain("did not count").And.Contain("too short"));
-            Assert.That(c.CurrentPhase, Is.EqualTo(StandardSpeedCalibrator.Phase.Rest), "and asks for another lift");
+            Assert.That(c.CurrentPhase, Is.EqualTo(CalibrationPhase.Rest), "and asks for another lift");
         }
 
         [Test]
@@ -104,7 +104,7 @@ namespace Kosmos.PseudoHaptic.Tests
             LiftOnce(c, hand, rest, 0.3f, 0.25f); // ~1.7 m/s
             LiftOnce(c, hand, rest, 0.3f, 0.6f);  // ~0.7 m/s
             LiftOnce(c, hand, rest, 0.3f, 2.0f);  // ~0.2 m/s
-            Assert.That(c.CurrentPhase, Is.EqualTo(StandardSpeedCalibrator.Phase.Rejected), c.Message);
+            Assert.That(c.CurrentPhase, Is.EqualTo(CalibrationPhase.Rejected), c.Message);
             Assert.That(c.Message, Does.Contain("inconsistent"));
             Assert.That(File.Exists(UserCalibrationStore.PathFor(UserCalibrationStore.CurrentUserId)), Is.False);
         }

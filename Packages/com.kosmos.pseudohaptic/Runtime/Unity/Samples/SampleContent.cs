@@ -67,7 +67,7 @@ namespace Kosmos.PseudoHaptic.Samples
             visual.localPosition = new Vector3(0, size.y / 2, 0);
 
             Label(go.transform, name, new Vector3(0, size.y + 0.05f, 0));
-            return Weight(go, PseudoHapticWeight.MassSource.DensityTimesVolume, density, 0, profile);
+            return Weight(go, MassSource.DensityTimesVolume, density, 0, profile);
         }
 
         /// <summary>
@@ -103,7 +103,7 @@ namespace Kosmos.PseudoHaptic.Samples
             body.transform.localPosition = new Vector3(0, height / 2, 0);
 
             Label(go.transform, name, new Vector3(0, height + 0.05f, 0));
-            var weight = Weight(go, PseudoHapticWeight.MassSource.DensityTimesVolume, WaterDensity, 0, profile);
+            var weight = Weight(go, MassSource.DensityTimesVolume, WaterDensity, 0, profile);
             weight.VolumeCollider = mesh;
             weight.StoreMeshVolume();
             return weight;
@@ -123,7 +123,7 @@ namespace Kosmos.PseudoHaptic.Samples
             visual.localScale = Vector3.one * (2 * radius);
             visual.localPosition = new Vector3(0, radius, 0);
             Label(go.transform, name, new Vector3(0, 2 * radius + 0.05f, 0));
-            return Weight(go, PseudoHapticWeight.MassSource.Explicit, 0, massKg, profile);
+            return Weight(go, MassSource.Explicit, 0, massKg, profile);
         }
 
         /// <summary>The calibration station: a table, a marker where the golf ball rests, instructions, the calibrator.</summary>
@@ -176,7 +176,8 @@ namespace Kosmos.PseudoHaptic.Samples
         }
 
         /// <summary>The playground: objects from 10 g to 5 kg sharing one profile, and a switch for every effect.</summary>
-        public static List<PseudoHapticWeight> Playground(Transform root, PseudoHapticProfile profile, IReadOnlyList<IHandPoseSource> hands)
+        /// <remarks>With <paramref name="handOnObject"/> (a profile drawing the hand on the object), a 2 kg box under it too.</remarks>
+        public static List<PseudoHapticWeight> Playground(Transform root, PseudoHapticProfile profile, IReadOnlyList<IHandPoseSource> hands, PseudoHapticProfile handOnObject = null)
         {
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.4f, 0.6f));
             var objects = new List<PseudoHapticWeight>
@@ -188,6 +189,8 @@ namespace Kosmos.PseudoHaptic.Samples
                 Bottle(surface, "2 L water", new Vector3(0.2f, 0, 0.05f), 2f, 0.045f, profile),
                 Ball(surface, "5 kg", new Vector3(0.45f, 0, 0.05f), 0.06f, 5f, profile),
             };
+            if (handOnObject != null)
+                objects.Add(Box(surface, "2 kg (hand on object)", new Vector3(0.6f, 0, 0.05f), Vector3.one * 0.1f, 2000f, handOnObject));
 
             float x = -0.6f;
             foreach (string effect in PseudoHapticProfile.EffectNames)
@@ -214,7 +217,7 @@ namespace Kosmos.PseudoHaptic.Samples
             return hands;
         }
 
-        static PseudoHapticWeight Weight(GameObject go, PseudoHapticWeight.MassSource source, float density, float massKg, PseudoHapticProfile profile)
+        static PseudoHapticWeight Weight(GameObject go, MassSource source, float density, float massKg, PseudoHapticProfile profile)
         {
             var weight = go.AddComponent<PseudoHapticWeight>();
             weight.Mass = source;

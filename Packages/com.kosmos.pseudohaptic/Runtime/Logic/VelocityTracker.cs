@@ -1,5 +1,3 @@
-using UnityEngine;
-
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
@@ -13,39 +11,36 @@ namespace Kosmos.PseudoHaptic
         public const double Window = 0.05;
         public const double StillAfter = 0.1;
 
-        Vector3 _anchor, _last;
+        Vector3d _anchor, _last;
         double _anchorTime, _lastTime;
-        Vector3 _velocity;
+        Vector3d _velocity;
         bool _hasAnchor;
 
         /// <summary>The velocity at time <paramref name="now"/> (same clock as <see cref="Add"/>).</summary>
-        public Vector3 VelocityAt(double now) =>
-            _hasAnchor && now - _lastTime <= StillAfter ? _velocity : Vector3.zero;
+        public Vector3d VelocityAt(double now) =>
+            _hasAnchor && now - _lastTime <= StillAfter ? _velocity : Vector3d.Zero;
 
-        public void Reset(Vector3 position, double time)
+        public void Reset(Vector3d position, double time)
         {
-            _velocity = Vector3.zero;
-            _hasAnchor = IsFinite(position) && IsFinite(time);
+            _velocity = Vector3d.Zero;
+            _hasAnchor = position.IsFinite && double.IsFinite(time);
             _anchor = _last = position;
             _anchorTime = _lastTime = time;
         }
 
-        public void Add(Vector3 position, double time)
+        public void Add(Vector3d position, double time)
         {
-            if (!IsFinite(position) || !IsFinite(time)) return;
+            if (!position.IsFinite || !double.IsFinite(time)) return;
             if (!_hasAnchor || time < _lastTime) { Reset(position, time); return; }
-            if (position.x == _last.x && position.y == _last.y && position.z == _last.z) return; // a repeated pose
+            if (position.Equals(_last)) return; // a repeated pose
             _last = position;
             _lastTime = time;
             double elapsed = time - _anchorTime;
             if (elapsed < Window) return;
-            Vector3 v = (position - _anchor) / (float)elapsed;
-            if (IsFinite(v)) _velocity = v;
+            Vector3d v = (position - _anchor) / elapsed;
+            if (v.IsFinite) _velocity = v;
             _anchor = position;
             _anchorTime = time;
         }
-
-        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
-        static bool IsFinite(Vector3 v) => IsFinite(v.x) && IsFinite(v.y) && IsFinite(v.z);
     }
 }

@@ -1,0 +1,220 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Text;
+using Kosmos.PseudoHaptic.Evaluation;
+using Kosmos.PseudoHaptic.Simulation;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>
+    /// The session recorder's buffering and files, engine-free: each hold of a held object (the hand as the solver saw
+    /// it, the object's height, mass, profile) goes frame by frame into a preallocated <see cref="HoldRecording"/>
+    /// (two ready, for two hands; reused), and is written when the hold ends as one CSV in the replay trace format,
+    /// <c>&lt;folder&gt;/&lt;session&gt;/hold-001-&lt;object&gt;.csv</c>, with an index <c>holds.csv</c> naming each
+    /// hold's object, mass and profile. Files are written to a temporary name and renamed (<see cref="AtomicFile"/>);
+    /// <see cref="FlushActive"/> writes running holds as far as they got. Recording a frame allocates nothing
+    /// (until a hold outgrows its buffer, which then doubles).
+    /// </summary>
+    public sealed class SessionLog
+    {
+        /// <summary>The index's columns.</summary>
+        public const string IndexHeader = "hold,object,file,frames,duration_s,mass_kg,profile,standard_speed,started_at_s";
+
+        sealed class Hold
+        {
+            public object Key;
+            public readonly HoldRecording Recording;
+            public int Number;
+            public string File, ObjectName;
+            public double StartedAt;
+            public Hold(int capacity) => Recording = new HoldRecording(capacity);
+        }
+
+        readonly List<Hold> _active = new List<Hold>(2);
+        readonly Stack<Hold> _spare = new Stack<Hold>(2);
+        readonly StringBuilder _index = new StringBuilder();
+        readonly int _capacity;
+        string _folder = "", _sessionId = "", _sessionFolder;
+
+        public SessionLog(int framesPerHold = HoldRecording.DefaultCapacity)
+        {
+            _capacity = Math.Max(64, framesPerHold);
+            for (int i = 0; i < 2; i++) _spare.Push(new Hold(_capacity)); // two hands
+        }
+
+        /// <summary>The folder sessions are written under (absolute).</summary>
+        public string Folder { get => _folder; set { _folder = value ?? ""; _sessionFolder = null; } }
+
+        /// <summary>The session's name (its folder); setting it starts a new session, numbered from 1. Empty: the local date and time at the first hold.</summary>
+        public string SessionId
+        {
+            get => _sessionId;
+            set
+            {
+                _sessionId = value ?? "";
+                _sessionFolder = null;
+                HoldCount = 0;
+                _index.Length = 0;
+            }
+        }
+
+        /// <summary>The folder this session writes into; null until the first write.</summary>
+        public string SessionFolder => _sessionFolder;
+        /// <summary>Holds begun in this session.</summary>
+        public int HoldCount { get; private set; }
+        /// <summary>Objects being held and recorded now.</summary>
+        public int ActiveCount => _active.Count;
+        /// <summary>The last write error, or null.</summary>
+        public string LastError { get; private set; }
+
+        /// <summary>Invoked with the file's path after a hold's file is written.</summary>
+        public event Action<string> HoldWritten;
+        /// <summary>Invoked with the message when a file could not be written.</summary>
+        public event Action<string> WriteFailed;
+
+        /// <summary>Whether <paramref name="item"/> is to be recorded: every item when <paramref name="only"/> is null or empty.</summary>
+        public static bool IsListed<T>(T item, T[] only) where T : class
+        {
+            if (only == null || only.Length == 0) return true;
+            for (int i = 0; i < only.Length; i++)
+                if (ReferenceEquals(only[i], item)) return true;
+            return false;
+        }
+
+        /// <summary>A hold of <paramref name="key"/> began (a begin without an end first finishes the old one).</summary>
+        public void Began(object key, string objectName, WeightSolver solver, in HandSample hand, double startedAt)
+        {
+            if (key == null || solver == null) return;
+            int at = IndexOf(key);
+            if (at >= 0) Finish(at); // a begin without an end: keep what was recorded
+            Hold hold = _spare.Count > 0 ? _spare.Pop() : new Hold(_capacity);
+            hold.Key = key;
+            hold.Number = ++HoldCount;
+            hold.ObjectName = objectName;
+            hold.StartedAt = startedAt;
+            hold.File = null;
+            hold.Recording.Begin(solver, in hand);
+            _active.Add(hold);
+        }
+
+        /// <summary>One frame of <paramref name="key"/>'s hold; ignored when it is not being recorded.</summary>
+        public void Stepped(object key, WeightSolver solver, in HandSample hand, double dt)
+        {
+            int at = IndexOf(key);
+            if (at >= 0) _active[at].Recording.Step(solver, in hand, dt);
+        }
+
+        /// <summary><paramref name="key"/>'s hold ended: its file is written and indexed.</summary>
+        public void Ended(object key)
+        {
+            int at = IndexOf(key);
+            if (at >= 0) Finish(at);
+        }
+
+        /// <summary>Writes every running hold as far as it got (it goes on recording, and is written again at its end).</summary>
+        public void FlushActive()
+        {
+            for (int i = 0; i < _active.Count; i++) Write(_active[i]);
+        }
+
+        /// <summary>Writes and ends every running hold (the recorder was disabled): later frames are not recorded.</summary>
+        public void FinishAll()
+        {
+            for (int i = _active.Count - 1; i >= 0; i--) Finish(i);
+        }
+
+        int IndexOf(object key)
+        {
+            for (int i = 0; i < _active.Count; i++)
+                if (ReferenceEquals(_active[i].Key, key)) return i;
+            return -1;
+        }
+
+        void Finish(int at)
+        {
+            Hold hold = _active[at];
+            _active.RemoveAt(at);
+            Write(hold);
+            AppendIndex(hold);
+            hold.Key = null;
+            hold.Recording.Clear();
+            _spare.Push(hold);
+        }
+
+        void Write(Hold hold)
+        {
+            try
+            {
+                if (hold.File == null)
+                    hold.File = Path.Combine(EnsureSessionFolder(), "hold-" + hold.Number.ToString("000", CultureInfo.InvariantCulture) + "-" + SafeName(hold.ObjectName) + ".csv");
+                HoldRecording recording = hold.Recording;
+                AtomicFile.WriteWith(hold.File, temp =>
+                {
+                    using (var writer = new StreamWriter(temp, false, new UTF8Encoding(false)))
+                        recording.WriteCsv(writer);
+                });
+                LastError = null;
+                HoldWritten?.Invoke(hold.File);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
+            {
+                Fail("Session recorder: hold " + hold.Number + " of '" + hold.ObjectName + "' was not written: " + e.Message);
+            }
+        }
+
+        void AppendIndex(Hold hold)
+        {
+            if (hold.File == null) return; // its file could not be written either
+            HoldRecording r = hold.Recording;
+            RecordedFrame last = r.Count > 0 ? r[r.Count - 1] : default;
+            if (_index.Length == 0) _index.Append(IndexHeader).Append('\n');
+            _index.Append(hold.Number.ToString(CultureInfo.InvariantCulture)).Append(',')
+                .Append(SafeName(hold.ObjectName)).Append(',')
+                .Append(Path.GetFileName(hold.File)).Append(',')
+                .Append(r.Count.ToString(CultureInfo.InvariantCulture)).Append(',')
+                .Append(r.Duration.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                .Append(last.MassKg.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                .Append(SafeName(last.Profile)).Append(',')
+                .Append(last.StandardSpeed.ToString("R", CultureInfo.InvariantCulture)).Append(',')
+                .Append(hold.StartedAt.ToString("R", CultureInfo.InvariantCulture)).Append('\n');
+            try
+            {
+                AtomicFile.WriteAllText(Path.Combine(EnsureSessionFolder(), "holds.csv"), _index.ToString());
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
+            {
+                Fail("Session recorder: holds.csv was not written: " + e.Message);
+            }
+        }
+
+        void Fail(string message)
+        {
+            LastError = message;
+            WriteFailed?.Invoke(message);
+        }
+
+        string EnsureSessionFolder()
+        {
+            if (_sessionFolder != null) return _sessionFolder;
+            if (string.IsNullOrWhiteSpace(_sessionId)) _sessionId = DateTime.Now.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture);
+            _sessionFolder = Path.Combine(_folder, SafeName(_sessionId));
+            Directory.CreateDirectory(_sessionFolder);
+            return _sessionFolder;
+        }
+
+        /// <summary>
+        /// A name fit for a file name and a CSV field: letters, digits, '-', '_' and '.' are kept, anything else
+        /// (spaces, commas, slashes) becomes '_', and a leading '.' too (no hidden files, no "..").
+        /// </summary>
+        public static string SafeName(string name)
+        {
+            if (string.IsNullOrEmpty(name)) return "object";
+            var sb = new StringBuilder(name.Length);
+            foreach (char ch in name)
+                sb.Append((ch < 128 && char.IsLetterOrDigit(ch)) || ch == '-' || ch == '_' || (ch == '.' && sb.Length > 0) ? ch : '_');
+            return sb.ToString();
+        }
+    }
+}

@@ -1,0 +1,96 @@
+using System;
+
+namespace Kosmos.PseudoHaptic
+{
+    /// <summary>Where an object's mass comes from.</summary>
+    public enum MassSource
+    {
+        /// <summary>The Rigidbody's mass.</summary>
+        Rigidbody,
+        /// <summary>m = ρ·V with V the collider's volume (box, sphere, capsule or mesh); written to the Rigidbody if any.</summary>
+        DensityTimesVolume,
+        /// <summary>The mass given; written to the Rigidbody if any.</summary>
+        Explicit,
+    }
+
+    /// <summary>Where the user's standard speed v_std comes from.</summary>
+    public enum StandardSpeedSource
+    {
+        /// <summary>The current user's stored calibration, else the solver's default.</summary>
+        UserCalibration,
+        /// <summary>The speed given.</summary>
+        Explicit,
+    }
+
+    /// <summary>What the Rigidbody gets back when the hold ends (paper 3.3 removes inertia while held; release is a setting).</summary>
+    public enum ReleaseVelocity
+    {
+        Zero,
+        /// <summary>The object's own velocity over its last motion.</summary>
+        Object,
+        /// <summary>The hand's velocity over its last motion (a throw).</summary>
+        Hand,
+    }
+
+    /// <summary>Who makes the Rigidbody kinematic during a hold.</summary>
+    public enum RigidbodyControl
+    {
+        /// <summary>The weight component: kinematic while held, falling velocity removed, release velocity per setting.</summary>
+        ByThisComponent,
+        /// <summary>The grab system (e.g. the Interaction SDK's Grabbable): the weight leaves the Rigidbody alone.</summary>
+        External,
+    }
+
+    /// <summary>The volume of the object's collider, m³, or false with the reason (asked only when the mass needs it).</summary>
+    public delegate bool VolumeQuery(out double volume, out string error);
+
+    /// <summary>The decisions behind an object's weight settings: its mass, the user's speed, the release velocity.</summary>
+    public static class WeightSettings
+    {
+        /// <summary>
+        /// The weight model of an object's settings, or false with the reason (the core's message, naming the field).
+        /// <paramref name="rigidbodyMass"/> is NaN when the object has no Rigidbody; <paramref name="volume"/> is
+        /// asked only for <see cref="MassSource.DensityTimesVolume"/>.
+        /// </summary>
+        public static bool TryCreateModel(MassSource source, double rigidbodyMass, double density, double explicitMass,
+                                          VolumeQuery volume, string objectName, out WeightModel model, out string error)
+        {
+            model = null;
+            error = null;
+            try
+            {
+                switch (source)
+                {
+                    case MassSource.Rigidbody:
+                        if (double.IsNaN(rigidbodyMass)) { error = "Mass Source is Rigidbody, but there is no Rigidbody on '" + objectName + "'"; return false; }
+                        model = WeightModel.FromMass(rigidbodyMass);
+                        return true;
+                    case MassSource.DensityTimesVolume:
+                        if (volume == null) { error = "Mass Source is Density Times Volume, but there is no collider to take the volume from"; return false; }
+                        if (!volume(out double v, out error)) return false;
+                        model = WeightModel.FromDensity(density, v);
+                        return true;
+                    default:
+                        model = WeightModel.FromMass(explicitMass);
+                        return true;
+                }
+            }
+            catch (ArgumentException e)
+            {
+                error = e.Message;
+                return false;
+            }
+        }
+
+        /// <summary>Whether the resolved mass is written back to the Rigidbody (it came from elsewhere).</summary>
+        public static bool WritesRigidbodyMass(MassSource source) => source != MassSource.Rigidbody;
+
+        /// <summary>The user's v_std, m/s: the explicit one, or the stored calibration's.</summary>
+        public static double StandardSpeed(StandardSpeedSource source, double explicitSpeed, double storedOrDefault) =>
+            source == StandardSpeedSource.Explicit ? explicitSpeed : storedOrDefault;
+
+        /// <summary>The velocity a released body gets, world space, m/s.</summary>
+        public static Vector3d Release(ReleaseVelocity kind, Vector3d hand, Vector3d obj) =>
+            kind == ReleaseVelocity.Hand ? hand : kind == ReleaseVelocity.Object ? obj : Vector3d.Zero;
+    }
+}

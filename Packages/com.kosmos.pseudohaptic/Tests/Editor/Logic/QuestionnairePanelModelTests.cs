@@ -1,0 +1,192 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using Kosmos.PseudoHaptic.Evaluation;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>The questionnaire panel's paging, resume, pokes and view, engine-free (what the play-mode panel tests assert, run here).</summary>
+    public sealed class QuestionnairePanelModelTests
+    {
+        string _folder, _responses;
+
+        [SetUp]
+        public void UseTemporaryFolder()
+        {
+            _folder = Path.Combine(Path.GetTempPath(), "kosmos-pseudohaptic-panelmodel-" + Guid.NewGuid().ToString("N"));
+            Directory.CreateDirectory(_folder);
+            _responses = Path.Combine(_folder, "responses.csv");
+        }
+
+        [TearDown]
+        public void RemoveTemporaryFolder()
+        {
+            if (Directory.Exists(_folder)) Directory.Delete(_folder, true);
+        }
+
+        /// <summary>Two parts: three items on 1–5 with end labels, one item on 1–10.</summary>
+        static QuestionnaireCatalog Catalog()
+        {
+            var a = new Questionnaire("part-a", "Part A", 1, 5,
+                new[] { new QuestionnaireItem(1, "The box felt heavy.", false), new QuestionnaireItem(2, "The ball felt light.", false), new QuestionnaireItem(3, "Nothing felt real.", true) },
+                "How much do you agree?", "Strongly disagree", "Strongly agree");
+            var b = new Questionnaire("part-b", "Part B", 1, 10, new[] { new QuestionnaireItem(1, "How immersed were you?", false) });
+            return new QuestionnaireCatalog(new[] { a, b });
+        }
+
+        QuestionnairePanelModel Panel(string participant = "P1")
+        {
+            var model = new QuestionnairePanelModel();
+            Assert.That(model.Begin(Catalog(), participant, _responses, null), Is.True, model.Error);
+            return model;
+        }
+
+        string[] Rows()
+        {
+            string[] lines = File.ReadAllLines(_responses);
+            return lines.Length > 0 ? new List<string>(lines).GetRange(1, lines.Length - 1).ToArray() : lines;
+        }
+
+        static PanelView View(QuestionnairePanelModel m) => m.View(0.6f, 0.004f);
+
+        [Test]
+        public void APageShowsTheItemItsProgressAndTheScaleWithItsLabels()
+        {
+            PanelView v = View(Panel());
+            Assert.That(v.Title, Is.EqualTo("Part A"));
+            Assert.That(v.Progress, Is.EqualTo("1 / 3"));
+            Assert.That(v.Main, Is.EqualTo("The box felt heavy."));
+            Assert.That(v.Points, Is.EqualTo(5));
+            Assert.That(v.ScaleMin, Is.EqualTo(1));
+            Assert.That(v.MinLabel, Is.EqualTo("Strongly disagree"));
+            Assert.That(v.MaxLabel, Is.EqualTo("Strongly agree"));
+            Assert.That(v.CanBack, Is.False, "nothing to go back to");
+            Assert.That(v.CanNext, Is.False, "an unanswered item cannot be skipped");
+            Assert.That(v.Chosen, Is.Null);
+            float x0 = QuestionnairePanelModel.ScaleLayout(0, 5, 0.6f, out float w, out float edge);
+            float x4 = QuestionnairePanelModel.ScaleLayout(4, 5, 0.6f, out _, out _);
+            Assert.That(x0, Is.LessThan(x4), "1 on the left");
+            Assert.That(x4 + w / 2, Is.EqualTo(edge).Within(1e-6), "the row is centred and the labels sit at its ends");
+            Assert.That(2 * edge, Is.LessThanOrEqualTo(0.6f - 2 * QuestionnairePanelModel.Margin + 1e-6), "inside the panel");
+        }
+
+        [Test]
+        public void PressingAnAnswerSavesItTurnsThePageAndBackShowsTheAnswer()
+        {
+            QuestionnairePanelModel m = Panel();
+            Assert.That(m.Press(PanelAction.Answer, 4), Is.True);
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,4" }));
+            Assert.That(View(m).Progress, Is.EqualTo("2 / 3"));
+            Assert.That(View(m).CanBack, Is.True);
+            Assert.That(m.Press(PanelAction.Back, 0), Is.True);
+            Assert.That(View(m).Progress, Is.EqualTo("1 / 3"));
+            Assert.That(View(m).Chosen, Is.EqualTo(4));
+            Assert.That(View(m).CanNext, Is.True);
+            Assert.That(m.Press(PanelAction.Answer, 2), Is.True, "a changed answer");
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2" }), "replaces its row");
+            Assert.That(m.Press(PanelAction.Back, 0) && m.Press(PanelAction.Next, 0), Is.True);
+        }
+
+        [Test]
+        public void ATenPointScaleAndTheEndSaysThankYouOnce()
+        {
+            QuestionnairePanelModel m = Panel();
+            int completed = 0;
+            m.Completed += s => completed++;
+            m.Answer(3); m.Answer(3); m.Answer(3);
+            PanelView v = View(m);
+            Assert.That(v.Title, Is.EqualTo("Part B"));
+            Assert.That(v.Points, Is.EqualTo(10));
+            Assert.That(v.MinLabel, Is.Empty, "this scale has no labels");
+            m.Answer(8);
+            v = View(m);
+            Assert.That(completed, Is.EqualTo(1));
+            Assert.That(v.Points, Is.EqualTo(0));
+            Assert.That(v.Progress, Is.Empty);
+            Assert.That(v.Main, Does.Contain("Thank you"));
+            Assert.That(m.Answer(9), Is.False, "nothing left to answer");
+            m.Press(PanelAction.Back, 0);
+            m.Answer(7);
+            Assert.That(completed, Is.EqualTo(1), "raised once");
+            Assert.That(Rows()[3], Is.EqualTo("P1,part-b,1,7"));
+        }
+
+        [Test]
+        public void APanelStartedAgainResumesWhereItStopped()
+        {
+            QuestionnairePanelModel first = Panel();
+            first.Answer(2); first.Answer(5);
+            PanelView v = View(Panel());
+            Assert.That(v.Progress, Is.EqualTo("3 / 3"));
+            Assert.That(v.Main, Is.EqualTo("Nothing felt real."));
+            var done = Panel("P2");
+            Assert.That(View(done).Progress, Is.EqualTo("1 / 3"), "another participant starts at the beginning");
+        }
+
+        [Test]
+        public void OnePokeIsOneAnswer()
+        {
+            QuestionnairePanelModel m = Panel();
+            if (m.Touch(10.0)) m.Press(PanelAction.Answer, 3);
+            for (double t = 10.02; t < 10.3; t += 0.02) m.Stay(t);
+            if (m.Touch(10.3)) m.Press(PanelAction.Answer, 4); // slid onto the neighbour on the next page
+            Assert.That(m.Session.AnsweredCount, Is.EqualTo(1));
+            if (m.Touch(11.0)) m.Press(PanelAction.Answer, 1); // withdrawn, then poked again
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,3", "P1,part-a,2,1" }));
+            Assert.That(m.Poke(11.05), Is.False, "an Interaction SDK poke within the cooldown");
+        }
+
+        [Test]
+        public void DefinitionsComeFromJsonAndABrokenOneSaysWhy()
+        {
+            var m = new QuestionnairePanelModel();
+            string failed = null;
+            m.Failed += e => failed = e;
+            var json = "{ \"id\": \"only\", \"title\": \"Only part\", \"scale\": { \"min\": 1, \"max\": 7, \"minLabel\": \"Never\", \"maxLabel\": \"Always\" }, " +
+                       "\"items\": [ { \"number\": 1, \"text\": \"I forgot where I was.\" } ] }";
+            Assert.That(m.Begin(new[] { new KeyValuePair<string, string>("only.json", json) }, "P9", _responses, null), Is.True, m.Error);
+            Assert.That(View(m).Points, Is.EqualTo(7));
+            Assert.That(View(m).MaxLabel, Is.EqualTo("Always"));
+            Assert.That(m.Begin(new[] { new KeyValuePair<string, string>("broken.json", "{ \"id\": \"broken\" }") }, "P9", _responses, null), Is.False);
+            Assert.That(m.Error, Does.Match("missing|required"));
+            Assert.That(failed, Is.EqualTo(m.Error));
+            Assert.That(m.Begin(new KeyValuePair<string, string>[0], "P9", _responses, null), Is.False);
+            Assert.That(m.Error, Does.Contain("no questionnaire definitions"));
+            Assert.That(View(m).Main, Does.Contain("no questionnaire definitions"), "shown in place of an item");
+        }
+
+        [Test]
+        public void AResponsesFileScoreWouldRefuseStopsThePanelWithTheReason()
+        {
+            File.WriteAllText(_responses, "participant,questionnaire,item,response\nP1,part-a,1,3\nP1,part-a,1,4\n");
+            var m = new QuestionnairePanelModel();
+            Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.False);
+            Assert.That(m.Error, Does.Contain("duplicate"));
+            PanelView v = View(m);
+            Assert.That(v.Main, Does.Contain("duplicate"));
+            Assert.That(v.Points, Is.EqualTo(0));
+            Assert.That(m.Press(PanelAction.Answer, 3), Is.False);
+        }
+
+        [Test]
+        public void AnAnswerThatCannotBeSavedIsSaidAndTheItemStays()
+        {
+            QuestionnairePanelModel m = Panel();
+            Directory.Delete(_folder, true);
+            File.WriteAllText(_folder, "a file where the responses folder was"); // nothing can be written under it
+            try
+            {
+                Assert.That(m.Answer(3), Is.False);
+                Assert.That(m.Error, Is.Not.Null);
+                PanelView v = View(m);
+                Assert.That(v.Message, Does.Contain("could not be saved"));
+                Assert.That(v.Progress, Is.EqualTo("1 / 3"), "the item is asked again");
+            }
+            finally
+            {
+                File.Delete(_folder);
+            }
+        }
+    }
+}

@@ -1,0 +1,203 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using Kosmos.PseudoHaptic.Simulation;
+using NUnit.Framework;
+#if UNITY_5_3_OR_NEWER
+using UnityEngine.TestTools.Constraints; // AllocatingGCMemory() is an extension method there
+#endif
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>The session recorder's buffering and files, fed by holds of scripted Quest hands (what the play-mode tests assert, run here).</summary>
+    public sealed class SessionLogTests
+    {
+        string _folder;
+
+        [SetUp]
+        public void UseTemporaryFolder() => _folder = Path.Combine(Path.GetTempPath(), "kosmos-pseudohaptic-log-" + Guid.NewGuid().ToString("N"));
+
+        [TearDown]
+        public void RemoveTemporaryFolder()
+        {
+            if (Directory.Exists(_folder)) Directory.Delete(_folder, true);
+        }
+
+        SessionLog Log(string session = "P1") => new SessionLog { Folder = _folder, SessionId = session };
+
+        /// <summary>A box held by one scripted hand whose hold events feed <paramref name="log"/>, as SessionRecorder wires them.</summary>
+        static BoxScene.Box Wired(SessionLog log, string name, double massKg)
+        {
+            var box = new BoxScene.Box(new Vector3d(0, 0.8, 0), massKg);
+            box.Hold.Began += () => { HandSample h = box.Hold.LastHand; log.Began(box, name, box.Hold.Solver, in h, 12.5); };
+            box.Hold.Stepped += () => { HandSample h = box.Hold.LastHand; log.Stepped(box, box.Hold.Solver, in h, box.Hold.LastDeltaTime); };
+            box.Hold.Ended += () => log.Ended(box);
+            return box;
+        }
+
+        /// <summary>Begins a hold and steps it through a 30 Hz, 45 ms late lift; returns the frames stepped and the last height.</summary>
+        static (int frames, double y) Lift(BoxScene.Box box, double rise, double seconds, double lostFrom = -1)
+        {
+            var hand = new QuestHand { Path = QuestHand.Lift(box.Position, rise, 0.1, seconds - 0.2) };
+            if (lostFrom >= 0) hand.Lose(lostFrom, 0.1);
+            HandFrame[] frames = hand.Render(seconds);
+            box.Hold.Begin(1, box.Position, double.NaN, box.Position, box.Position.Y);
+            double y = double.NaN;
+            foreach (HandFrame f in frames) y = box.Hold.Step(1, f.Position, f.Tracked, f.HighConfidence, double.NaN, f.Dt);
+            return (frames.Length, y);
+        }
+
+        static HoldRecording Read(string path)
+        {
+            using (var reader = new StreamReader(path)) return HoldRecording.ReadCsv(reader, path);
+        }
+
+        [Test]
+        public void EachHoldIsWrittenWhenItEndsAsAReplayTraceWithOneRowPerFrame()
+        {
+            SessionLog log = Log();
+            var written = new List<string>();
+            log.HoldWritten += written.Add;
+            BoxScene.Box box = Wired(log, "Box B", 1.5);
+            var (frames, y) = Lift(box, 0.3, 1.1);
+            Assert.That(written, Is.Empty, "nothing is written during the hold");
+            Assert.That(log.ActiveCount, Is.EqualTo(1));
+            box.Hold.End(1);
+
+            string path = Path.Combine(_folder, "P1", "hold-001-Box_B.csv");
+            Assert.That(written, Is.EqualTo(new[] { path }));
+            Assert.That(File.ReadAllText(path), Does.StartWith("t,hand_y,tracked,pose_t,object_y,mass_kg,profile"));
+            HoldRecording r = Read(path);
+            Assert.That(r.Count, Is.EqualTo(1 + frames), "the begin frame and one row per step");
+            Assert.That(r[r.Count - 1].ObjectY, Is.EqualTo(y).Within(1e-12));
+            Assert.That(r[1].MassKg, Is.EqualTo(1.5));
+            Assert.That(r[1].Profile, Is.EqualTo(NamedProfiles.PaperName));
+            string[] index = File.ReadAllLines(Path.Combine(_folder, "P1", "holds.csv"));
+            Assert.That(index[0], Is.EqualTo(SessionLog.IndexHeader));
+            Assert.That(index[1], Does.StartWith("1,Box_B,hold-001-Box_B.csv," + r.Count + ",").And.EndWith(",12.5"));
+            Assert.That(log.ActiveCount, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void TheRecordedHandReplaysToTheRecordedObject()
+        {
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "box", 2);
+            Lift(box, 0.3, 1.2, lostFrom: 0.5);
+            box.Hold.End(1);
+            HoldRecording r = Read(Path.Combine(_folder, "P1", "hold-001-box.csv"));
+            double[] replayed = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(2.0), NamedProfiles.Paper, 0.5), r.ToTrace());
+            for (int i = 0; i < r.Count; i++) Assert.That(replayed[i], Is.EqualTo(r[i].ObjectY).Within(1e-9), "frame " + i);
+            Assert.That(r[(int)(0.55 * 90)].Tracked, Is.False, "the loss is in the file");
+        }
+
+        [Test]
+        public void HoldsAreNumberedPerSessionAndOnlyListedObjectsAreRecorded()
+        {
+            SessionLog log = Log("S 1");
+            BoxScene.Box a = Wired(log, "a", 0.5), b = Wired(log, "b", 0.5);
+            Lift(a, 0.1, 0.4); a.Hold.End(1);
+            Lift(b, 0.1, 0.4); b.Hold.End(1);
+            Lift(a, 0.1, 0.4); a.Hold.End(1);
+            string folder = Path.Combine(_folder, "S_1");
+            Assert.That(File.Exists(Path.Combine(folder, "hold-001-a.csv")) && File.Exists(Path.Combine(folder, "hold-002-b.csv")) && File.Exists(Path.Combine(folder, "hold-003-a.csv")), Is.True);
+            Assert.That(File.ReadAllLines(Path.Combine(folder, "holds.csv")), Has.Length.EqualTo(4));
+            Assert.That(SessionLog.IsListed(a, new object[] { b }), Is.False);
+            Assert.That(SessionLog.IsListed(a, new object[0]), Is.True);
+            Assert.That(SessionLog.IsListed(a, null), Is.True);
+            log.SessionId = "S2";
+            Lift(b, 0.1, 0.4); b.Hold.End(1);
+            Assert.That(File.Exists(Path.Combine(_folder, "S2", "hold-001-b.csv")), Is.True, "a new session numbers from 1");
+        }
+
+        [Test]
+        public void AHoldRunningAtAPauseIsWrittenAsFarAsItGotThenWhole()
+        {
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "box", 1);
+            var (frames, _) = Lift(box, 0.2, 0.6);
+            log.FlushActive();
+            string path = Path.Combine(_folder, "P1", "hold-001-box.csv");
+            Assert.That(Read(path).Count, Is.EqualTo(1 + frames));
+            Assert.That(File.Exists(Path.Combine(_folder, "P1", "holds.csv")), Is.False, "the hold is not over");
+            box.Hold.Step(1, box.Position, true, true, double.NaN, 1 / 90.0);
+            box.Hold.End(1);
+            Assert.That(Read(path).Count, Is.EqualTo(2 + frames));
+            Assert.That(Directory.GetFiles(Path.Combine(_folder, "P1")), Has.Length.EqualTo(2), "the hold and the index; no temporary file");
+        }
+
+        [Test]
+        public void FinishingAllWritesTheRunningHoldsAndStopsRecordingThem()
+        {
+            SessionLog log = Log();
+            BoxScene.Box a = Wired(log, "a", 1), b = Wired(log, "b", 1);
+            Lift(a, 0.2, 0.4);
+            Lift(b, 0.2, 0.4);
+            Assert.That(log.ActiveCount, Is.EqualTo(2), "two hands, two holds");
+            log.FinishAll();
+            int count = Read(Path.Combine(_folder, "P1", "hold-001-a.csv")).Count;
+            a.Hold.Step(1, a.Position, true, true, double.NaN, 1 / 90.0);
+            a.Hold.End(1);
+            Assert.That(Read(Path.Combine(_folder, "P1", "hold-001-a.csv")).Count, Is.EqualTo(count));
+            Assert.That(File.ReadAllLines(Path.Combine(_folder, "P1", "holds.csv")), Has.Length.EqualTo(3));
+        }
+
+        [Test]
+        public void AFolderThatCannotBeWrittenIsReportedNotThrown()
+        {
+            string blocker = Path.Combine(Path.GetTempPath(), "kosmos-pseudohaptic-file-" + Guid.NewGuid().ToString("N"));
+            File.WriteAllText(blocker, "a file where the folder should be");
+            try
+            {
+                var log = new SessionLog { Folder = blocker, SessionId = "P1" };
+                string failed = null;
+                log.WriteFailed += m => failed = m;
+                BoxScene.Box box = Wired(log, "box", 1);
+                Lift(box, 0.1, 0.3);
+                Assert.That(() => box.Hold.End(1), Throws.Nothing);
+                Assert.That(log.LastError, Does.Contain("hold 1 of 'box' was not written"));
+                Assert.That(failed, Is.EqualTo(log.LastError));
+            }
+            finally
+            {
+                File.Delete(blocker);
+            }
+        }
+
+        [Test]
+        public void RecordingAFrameAllocatesNothing()
+        {
+            // Within its buffer (a hold of 200 000 frames here; 5400, one minute at 90 Hz, by default).
+            var log = new SessionLog(framesPerHold: 210000) { Folder = _folder, SessionId = "P1" };
+            var solver = Run.Solver(1);
+            solver.BeginHold(0.8, 0.8);
+            var hand = new HandSample(0.8);
+            object key = new object();
+            log.Began(key, "box", solver, in hand, 0);
+            Frames(log, key, solver, 1000);
+#if UNITY_5_3_OR_NEWER
+            Assert.That(() => Frames(log, key, solver, 10000), UnityEngine.TestTools.Constraints.Is.Not.AllocatingGCMemory());
+#else
+            // Fewer bytes than frames: any allocation per frame (24 bytes at least) fails; the runtime's one-off
+            // re-compilation of the hot loop, which lands on this thread now and then, does not.
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            Frames(log, key, solver, 100000);
+            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.LessThan(100000), "bytes allocated over 100 000 frames");
+#endif
+        }
+
+        static void Frames(SessionLog log, object key, WeightSolver solver, int n)
+        {
+            var hand = new HandSample(0.8);
+            for (int i = 0; i < n; i++) log.Stepped(key, solver, in hand, 1 / 90.0);
+        }
+
+        [Test]
+        public void SafeNamesKeepFilesAndCsvFieldsIntact()
+        {
+            Assert.That(SessionLog.SafeName("Box B, heavy/1"), Is.EqualTo("Box_B__heavy_1"));
+            Assert.That(SessionLog.SafeName("..hidden"), Is.EqualTo("_.hidden"));
+            Assert.That(SessionLog.SafeName(""), Is.EqualTo("object"));
+        }
+    }
+}

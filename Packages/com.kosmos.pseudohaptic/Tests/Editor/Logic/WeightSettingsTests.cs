@@ -1,0 +1,115 @@
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>Mass resolution, the user's speed and the release velocity, as PseudoHapticWeight asks for them.</summary>
+    public sealed class WeightSettingsTests
+    {
+        static bool Volume(out double v, out string e) { v = 0.008; e = null; return true; }
+
+        [Test]
+        public void MassComesFromTheRigidbodyTheDensityTimesTheVolumeOrTheExplicitValue()
+        {
+            int asked = 0;
+            VolumeQuery counting = (out double v, out string e) => { asked++; return Volume(out v, out e); };
+            Assert.That(WeightSettings.TryCreateModel(MassSource.Rigidbody, 1.5, 1000, 3, counting, "box", out WeightModel m, out string error), Is.True, error);
+            Assert.That(m.MassKg, Is.EqualTo(1.5));
+            Assert.That(WeightSettings.TryCreateModel(MassSource.Explicit, double.NaN, 1000, 3, counting, "box", out m, out error), Is.True, error);
+            Assert.That(m.MassKg, Is.EqualTo(3));
+            Assert.That(asked, Is.EqualTo(0), "the volume is read only when the mass needs it");
+            Assert.That(WeightSettings.TryCreateModel(MassSource.DensityTimesVolume, 1.5, 250, 3, counting, "box", out m, out error), Is.True, error);
+            Assert.That(m.MassKg, Is.EqualTo(2).Within(1e-12), "250 kg/m³ × 8 L");
+            Assert.That(asked, Is.EqualTo(1));
+        }
+
+        [Test]
+        public void EachFailureSaysWhy()
+        {
+            Assert.That(WeightSettings.TryCreateModel(MassSource.Rigidbody, double.NaN, 1000, 1, Volume, "crate", out _, out string error), Is.False);
+            Assert.That(error, Does.Contain("no Rigidbody").And.Contain("crate"));
+            VolumeQuery unreadable = (out double v, out string e) => { v = 0; e = "mesh 'bottle' is not readable"; return false; };
+            Assert.That(WeightSettings.TryCreateModel(MassSource.DensityTimesVolume, 1, 1000, 1, unreadable, "b", out _, out error), Is.False);
+            Assert.That(error, Does.Contain("not readable"));
+            Assert.That(WeightSettings.TryCreateModel(MassSource.DensityTimesVolume, 1, 1000, 1, null, "b", out _, out error), Is.False);
+            Assert.That(error, Does.Contain("collider"));
+            Assert.That(WeightSettings.TryCreateModel(MassSource.Explicit, 1, 1000, -2, Volume, "b", out _, out error), Is.False);
+            Assert.That(error, Is.Not.Empty, "the core's message");
+            Assert.That(WeightSettings.TryCreateModel(MassSource.DensityTimesVolume, 1, double.NaN, 1, Volume, "b", out _, out error), Is.False);
+        }
+
+        [Test]
+        public void TheMassIsWrittenBackUnlessItCameFromTheRigidbody()
+        {
+            Assert.That(WeightSettings.WritesRigidbodyMass(MassSource.Rigidbody), Is.False);
+            Assert.That(WeightSettings.WritesRigidbodyMass(MassSource.Explicit), Is.True);
+            Assert.That(WeightSettings.WritesRigidbodyMass(MassSource.DensityTimesVolume), Is.True);
+        }
+
+        [Test]
+        public void TheUsersSpeedIsTheExplicitOneOrTheStoredOne()
+        {
+            Assert.That(WeightSettings.StandardSpeed(StandardSpeedSource.Explicit, 0.7, 0.4), Is.EqualTo(0.7));
+            Assert.That(WeightSettings.StandardSpeed(StandardSpeedSource.UserCalibration, 0.7, 0.4), Is.EqualTo(0.4));
+        }
+
+        /// <summary>A hand rising at 0.5 m/s with 30 Hz poses under 90 Hz frames, released while rising.</summary>
+        [Test]
+        public void TheReleaseVelocityIsTheHandsTheObjectsOrZero()
+        {
+            var box = new BoxScene.Box(new Vector3d(0, 0.8, 0), 0.2);
+            HeldObject hold = box.Hold;
+            HandFrame[] frames = new QuestHand { Path = t => new Vector3d(0, 0.8 + 0.5 * t, 0) }.Render(0.4);
+            hold.Begin(1, frames[0].Position, double.NaN, box.Position, box.Position.Y);
+            foreach (HandFrame f in frames)
+            {
+                double y = hold.Step(1, f.Position, f.Tracked, true, double.NaN, f.Dt);
+                hold.TrackObject(new Vector3d(0, y, 0));
+            }
+            Assert.That(hold.ReleaseVelocity(ReleaseVelocity.Hand).Y, Is.EqualTo(0.5).Within(0.05));
+            Assert.That(hold.ReleaseVelocity(ReleaseVelocity.Object).Y, Is.GreaterThan(0.1), "the 0.2 kg object rises too");
+            Assert.That(hold.ReleaseVelocity(ReleaseVelocity.Zero), Is.EqualTo(Vector3d.Zero));
+        }
+
+        [Test]
+        public void AStillHandReleasesWithoutVelocityAndGarbageIsIgnored()
+        {
+            var v = new VelocityTracker();
+            v.Reset(new Vector3d(0, 1, 0), 0);
+            v.Add(new Vector3d(0, 1.1, 0), 0.1);
+            Assert.That(v.VelocityAt(0.1).Y, Is.EqualTo(1).Within(1e-9));
+            v.Add(Vector3d.NaN, 0.15);
+            v.Add(new Vector3d(0, 1.1, 0), 0.3); // a repeated pose is no news
+            Assert.That(v.VelocityAt(0.3), Is.EqualTo(Vector3d.Zero), "still for 0.2 s");
+        }
+
+        [Test]
+        public void FollowingMovesXAndZOnlyWithATrackedFiniteHand()
+        {
+            var obj = new Vector3d(1, 2, 3);
+            Assert.That(GrabFollow.Horizontal(obj, new Vector3d(5, 9, 7), new Vector3d(0.1, 0, 0), true, true), Is.EqualTo(new Vector3d(5.1, 2, 7)));
+            Assert.That(GrabFollow.Horizontal(obj, new Vector3d(5, 9, 7), Vector3d.Zero, false, true), Is.EqualTo(obj));
+            Assert.That(GrabFollow.Horizontal(obj, Vector3d.NaN, Vector3d.Zero, true, true), Is.EqualTo(obj));
+            Assert.That(GrabFollow.Horizontal(obj, new Vector3d(5, 9, 7), Vector3d.Zero, true, false), Is.EqualTo(obj));
+            Assert.That(GrabFollow.PinchStrength(0.01), Is.EqualTo(1));
+            Assert.That(GrabFollow.PinchStrength(0.05), Is.EqualTo(0));
+            Assert.That(GrabFollow.PinchStrength(0.0275), Is.EqualTo(0.5).Within(1e-12));
+            Assert.That(GrabFollow.PinchStrength(double.NaN), Is.EqualTo(0));
+        }
+
+        [Test]
+        public void AGrabOfSeveralHandsFollowsTheirMeanAndIsTrackedOnlyWhenEveryHandIs()
+        {
+            var none = new GrabCentre();
+            Assert.That(none.Count, Is.EqualTo(0));
+            Assert.That(none.Point.IsFinite || none.IsTracked, Is.False, "no hand: no point, not tracked");
+            var two = new GrabCentre();
+            two.Add(new Vector3d(0, 1, 0));
+            two.Add(new Vector3d(0.2, 1.2, 0), true, false);
+            Assert.That(two.Point.X, Is.EqualTo(0.1).Within(1e-12));
+            Assert.That(two.Point.Y, Is.EqualTo(1.1).Within(1e-12));
+            Assert.That(two.IsTracked && !two.IsHighConfidence, Is.True);
+            two.Add(new Vector3d(0, 1, 0), false, false);
+            Assert.That(two.IsTracked, Is.False, "one lost hand makes the grab untracked");
+        }
+    }
+}
