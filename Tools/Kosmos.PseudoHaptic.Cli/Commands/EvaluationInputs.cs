@@ -15,6 +15,12 @@ static class EvaluationInputs
     /// <summary>Exit code of a contract error: malformed input, bad option, unreadable file.</summary>
     public const int ContractError = 2;
 
+    /// <summary>
+    /// Most data rows score and report read from one file (200,000: a study of 9,000 participants answering all
+    /// 22 items), so their memory is bounded whatever the file; a row beyond is refused naming its line.
+    /// </summary>
+    public const int MaxRows = 200_000;
+
     /// <summary>The package's definitions as built in, or those of <paramref name="directory"/> when given.</summary>
     public static QuestionnaireCatalog Catalog(string? directory)
     {

@@ -24,7 +24,7 @@ public static class ScoreCommand
         var target = OutputFile.Check("--out", output, new NamedPath("--responses", responsesPath));
         var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
 
-        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog);
+        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows);
         var scores = ScoreCalculator.ScoreAll(responses);
         target.Write(w => w.Write(ScoresCsv.Format(scores)));
 
