@@ -56,6 +56,14 @@ static class EvaluationInputs
         return reader.ReadToEnd();
     }
 
+    /// <summary>The questionnaire definitions a --questionnaires folder holds, as inputs an output may not be.</summary>
+    public static IEnumerable<NamedPath> QuestionnaireFiles(string? directory)
+    {
+        if (directory == null || !Directory.Exists(directory)) yield break;
+        foreach (var file in Directory.GetFiles(directory, "*.json"))
+            yield return new NamedPath("--questionnaires", file);
+    }
+
     /// <summary>An input file named by <paramref name="option"/>, read as it is parsed (one row at a time).</summary>
     public static TextReader OpenText(string option, string path) => InputFile.OpenText(option, path);
 
