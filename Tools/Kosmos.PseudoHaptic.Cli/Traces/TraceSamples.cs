@@ -46,7 +46,9 @@ public static class TraceSamples
             }
             if (t - times[0] > maxSpan)
                 throw new CliException($"{Messages.OneLine(path)}:{reader.Line}: t = {NumberText.Format(t)} s lies {NumberText.Format(t - times[0])} s after the first usable row (line {firstLine}); {command} takes traces of at most {maxSpan:0} s (a glitched time, or times in milliseconds?)");
-            if (!(t >= times[^1] + MinStep)) continue;
+            // A step of 1 ms written in decimals may come out a hair short in binary: 1 ns of slack keeps every
+            // row of a 1 kHz trace (a trace at 1 kHz or slower is taken whole, as before).
+            if (!(t - times[^1] >= MinStep - 1e-9)) continue;
             times.Add(t);
             heights.Add(f.HandY);
         }
