@@ -32,7 +32,7 @@ public sealed record AccuracySource(string Name, string Description, HandPath Ha
     /// A trace in the replay format taken as the true hand: its usable rows (tracked, finite hand_y), at their
     /// pose time when the row has one (repeated poses count once) or else at their frame time, linearly
     /// interpolated; rows whose time does not advance are skipped. Parse errors name the file and line. Read in
-    /// bounded memory (<see cref="TraceSamples"/>: at most one sample per ms, a span of at most 180 s).
+    /// bounded memory (<see cref="TraceSamples"/>: at most one sample per ms, a span of at most 120 s).
     /// </summary>
     public static AccuracySource FromTrace(string name, string path, string option = "--trace")
     {
