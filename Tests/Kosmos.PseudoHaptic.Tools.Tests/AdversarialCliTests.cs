@@ -257,6 +257,22 @@ public class AdversarialCliTests
         Holds("in.csv", "o0.csv", "o1.csv", "o2.csv", "o3.csv");
     }
 
+    [Test]
+    public void TwoReportsIntoOneNewFolderBothSucceed()
+    {
+        Write("S.csv", Scores);
+        for (int round = 0; round < 3; round++)
+        {
+            string output = $"rep{round}";
+            var a = Task.Run(() => Run("report", "--scores", "S.csv", "--out", output));
+            var b = Task.Run(() => Run("report", "--scores", "S.csv", "--out", output));
+            Assert.That(a.Result.Code, Is.EqualTo(0), a.Result.Stderr);
+            Assert.That(b.Result.Code, Is.EqualTo(0), b.Result.Stderr);
+            Assert.That(File.Exists(Path.Combine(_dir, output, "report.md")), Is.True);
+        }
+        Holds("S.csv", "rep0", "rep1", "rep2");
+    }
+
     [TestCase(15, 143)]
     [TestCase(2, 130)]
     public void ASignalRemovesTheTemporaryFile(int signal, int exitCode)
