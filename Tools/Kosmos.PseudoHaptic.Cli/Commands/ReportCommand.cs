@@ -45,7 +45,7 @@ public static class ReportCommand
 
         OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>
         {
-            foreach (var (name, bytes) in files) File.WriteAllBytes(Path.Combine(temp, name), bytes);
+            foreach (var (name, bytes) in files) Temporaries.Guard(() => File.WriteAllBytes(Path.Combine(temp, name), bytes));
         });
 
         if (report.Disagreements.Count > 0)

@@ -84,8 +84,7 @@ public sealed class OutputFolder
         {
             if (parentId.Kind == FileKind.Missing) Directory.CreateDirectory(parent);
             string temp = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(parent);
-            Temporaries.Track(temp);
-            Directory.CreateDirectory(temp);
+            Temporaries.Create(temp, p => Directory.CreateDirectory(p));
             return new OutputFolder(option, path, target, temp);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
