@@ -100,6 +100,22 @@ public class MemoryCliTests
         File.Delete(Path.Combine(_dir, "S.csv"));
     }
 
+    [Test]
+    public void LongFieldsCannotAddUpPastTheBound()
+    {
+        // Rows near the 1 MiB row limit: what score keeps of them is bounded by characters, not only by rows.
+        string responses = Path.Combine(_dir, "R.csv");
+        using (var w = new StreamWriter(responses))
+        {
+            w.Write("participant,questionnaire,item,response\n");
+            for (int i = 0; i < 50; i++) w.Write($"P{i}{new string('x', 1_000_000)},immersion,1,4\n");
+        }
+        var r = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S.csv"));
+        Assert.That(r.Code, Is.EqualTo(2));
+        Assert.That(r.Stderr, Does.Contain("R.csv:8: more than 6400000 characters of data"));
+        File.Delete(responses);
+    }
+
     [TestCase("replay")]
     [TestCase("score")]
     [TestCase("report")]

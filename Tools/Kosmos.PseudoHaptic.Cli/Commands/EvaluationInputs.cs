@@ -29,6 +29,10 @@ static class EvaluationInputs
     /// </summary>
     public const int MaxRows = EvaluationInputsLimits.MaxRows;
 
+    /// <summary>Most characters the fields of one file may hold together (64 a row on average), so long fields cannot
+    /// add up past the memory bound either; the row that passes it is refused naming its line.</summary>
+    public const long MaxCharacters = 64L * MaxRows;
+
     /// <summary>The package's definitions as built in, or those of <paramref name="directory"/> when given.</summary>
     public static QuestionnaireCatalog Catalog(string? directory)
     {

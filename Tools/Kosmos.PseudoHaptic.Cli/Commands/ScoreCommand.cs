@@ -25,7 +25,7 @@ public static class ScoreCommand
             EvaluationInputs.QuestionnaireFiles(o.Get("--questionnaires")).Prepend(new NamedPath("--responses", responsesPath)).ToArray());
         var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
 
-        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows);
+        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
         var scores = ScoreCalculator.ScoreAll(responses);
         target.Write(w => w.Write(ScoresCsv.Format(scores)));
 

@@ -57,14 +57,23 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         /// <summary>As <see cref="Stream(TextReader, string, string[])"/>; a data row beyond <paramref name="maxRows"/> is an error naming its line.</summary>
         public static IEnumerable<Row> Stream(TextReader reader, string sourceName, int maxRows, params string[] columns)
+            => Stream(reader, sourceName, maxRows, long.MaxValue, columns);
+
+        /// <summary>
+        /// As <see cref="Stream(TextReader, string, int, string[])"/>; the requested fields of all rows together
+        /// may hold at most <paramref name="maxCharacters"/> characters (what a caller keeps stays bounded even
+        /// when every row is near the 1 MiB row limit).
+        /// </summary>
+        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, int maxRows, long maxCharacters, params string[] columns)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (columns == null || columns.Length == 0) throw new ArgumentException("no columns requested", nameof(columns));
             if (maxRows < 0) throw new ArgumentOutOfRangeException(nameof(maxRows));
-            return StreamRows(reader, sourceName, maxRows, columns);
+            if (maxCharacters < 0) throw new ArgumentOutOfRangeException(nameof(maxCharacters));
+            return StreamRows(reader, sourceName, maxRows, maxCharacters, columns);
         }
 
-        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, int maxRows, string[] columns)
+        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, int maxRows, long maxCharacters, string[] columns)
         {
             using (var csv = new CsvReader(reader, sourceName))
             {
@@ -78,12 +87,19 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         throw csv.Error(csv.HeaderLine, "missing column '" + columns[c] + "': the header must name " + expected + " (found " + Quote(csv.Header) + ")");
                 }
                 int count = 0;
+                long characters = 0;
                 while (csv.Read())
                 {
                     if (++count > maxRows)
                         throw csv.Error(csv.Line, "more than " + maxRows.ToString(System.Globalization.CultureInfo.InvariantCulture) + " rows (the limit for this file)");
                     var picked = new string[columns.Length];
-                    for (int c = 0; c < columns.Length; c++) picked[c] = csv[index[c]];
+                    for (int c = 0; c < columns.Length; c++)
+                    {
+                        picked[c] = csv[index[c]];
+                        characters += picked[c].Length;
+                    }
+                    if (characters > maxCharacters)
+                        throw csv.Error(csv.Line, "more than " + maxCharacters.ToString(System.Globalization.CultureInfo.InvariantCulture) + " characters of data (the limit for this file)");
                     yield return new Row(csv.Line, csv.EndLine, picked);
                 }
             }
