@@ -257,6 +257,22 @@ public class AdversarialCliTests
         Holds("in.csv", "o0.csv", "o1.csv", "o2.csv", "o3.csv");
     }
 
+    [Test]
+    public void TwoReportsIntoOneNewFolderBothSucceed()
+    {
+        Write("S.csv", Scores);
+        for (int round = 0; round < 3; round++)
+        {
+            string output = $"rep{round}";
+            var a = Task.Run(() => Run("report", "--scores", "S.csv", "--out", output));
+            var b = Task.Run(() => Run("report", "--scores", "S.csv", "--out", output));
+            Assert.That(a.Result.Code, Is.EqualTo(0), a.Result.Stderr);
+            Assert.That(b.Result.Code, Is.EqualTo(0), b.Result.Stderr);
+            Assert.That(File.Exists(Path.Combine(_dir, output, "report.md")), Is.True);
+        }
+        Holds("S.csv", "rep0", "rep1", "rep2");
+    }
+
     [TestCase(15, 143)]
     [TestCase(2, 130)]
     public void ASignalRemovesTheTemporaryFile(int signal, int exitCode)
@@ -277,6 +293,24 @@ public class AdversarialCliTests
         }
         Assert.That(p.ExitCode, Is.EqualTo(exitCode));
         Holds("trace.fifo");
+    }
+
+    [Test]
+    public void ASignalRemovesAHalfBuiltFolder()
+    {
+        // demo builds its folder beside the destination; SIGTERM while it is being built leaves neither.
+        var sb = new StringBuilder("t,hand_y\n");
+        for (int i = 0; i <= 290_000; i++) sb.Append(CultureInfo.InvariantCulture, $"{i / 1000.0:R},{0.8 + 0.3 * Math.Sin(i / 1000.0):R}\n");
+        Write("long.csv", sb.ToString());
+        using var p = ToolProcess.Start(_dir, new[] { "demo", "--trace", "long.csv", "--out", "d" });
+        var deadline = DateTime.UtcNow.AddSeconds(60);
+        while (Directory.GetDirectories(_dir, ".ph*").Length == 0 && !p.HasExited && DateTime.UtcNow < deadline) Thread.Sleep(5);
+        if (p.HasExited) Assert.Inconclusive("demo finished before the signal could be sent");
+        ToolProcess.Signal(p, 15);
+        Assert.That(p.WaitForExit(30_000), Is.True);
+        if (p.ExitCode == 0) Assert.Inconclusive("demo finished as the signal arrived");
+        Assert.That(p.ExitCode, Is.EqualTo(143));
+        Holds("long.csv");
     }
 
     [TestCase(255)]

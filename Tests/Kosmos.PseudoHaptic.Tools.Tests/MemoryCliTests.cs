@@ -79,6 +79,43 @@ public class MemoryCliTests
         Directory.Delete(Path.Combine(_dir, "demo"), true);
     }
 
+    [Test]
+    public void ScoreReadsAtMostItsRowLimit()
+    {
+        int max = Kosmos.PseudoHaptic.Cli.EvaluationInputsLimits.MaxRows;
+        string responses = Path.Combine(_dir, "R.csv");
+        using (var w = new StreamWriter(responses))
+        {
+            w.Write("participant,questionnaire,item,response\n");
+            for (int i = 0; i < max; i++) w.Write($"P{i / 10},immersion,{i % 10 + 1},{i % 5 + 1}\n");
+        }
+        var ok = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S.csv"));
+        Assert.That(ok.Code, Is.EqualTo(0), ok.Stderr);
+        File.AppendAllText(responses, $"Q,immersion,1,1\n");
+        var refused = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S2.csv"));
+        Assert.That(refused.Code, Is.EqualTo(2));
+        Assert.That(refused.Stderr, Does.Contain($"R.csv:{max + 2}: more than {max} rows"));
+        Assert.That(File.Exists(Path.Combine(_dir, "S2.csv")), Is.False);
+        File.Delete(responses);
+        File.Delete(Path.Combine(_dir, "S.csv"));
+    }
+
+    [Test]
+    public void LongFieldsCannotAddUpPastTheBound()
+    {
+        // Rows near the 1 MiB row limit: what score keeps of them is bounded by characters, not only by rows.
+        string responses = Path.Combine(_dir, "R.csv");
+        using (var w = new StreamWriter(responses))
+        {
+            w.Write("participant,questionnaire,item,response\n");
+            for (int i = 0; i < 50; i++) w.Write($"P{i}{new string('x', 1_000_000)},immersion,1,4\n");
+        }
+        var r = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S.csv"));
+        Assert.That(r.Code, Is.EqualTo(2));
+        Assert.That(r.Stderr, Does.Contain("R.csv:8: more than 6400000 characters of data"));
+        File.Delete(responses);
+    }
+
     [TestCase("replay")]
     [TestCase("score")]
     [TestCase("report")]

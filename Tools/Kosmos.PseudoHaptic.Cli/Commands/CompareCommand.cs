@@ -25,7 +25,7 @@ public static class CompareCommand
         var inputs = new[] { new NamedPath("--scores", scoresPath) };
         OutputFolder.Check("--out", outDir, Owns, createParents: false, inputs);
 
-        var scores = ConditionScoresCsv.Read(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath));
+        var scores = ConditionScoresCsv.Read(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
         var rows = ConditionComparison.Compare(scores);
         var utf8 = new UTF8Encoding(false);
         var files = new List<(string Name, byte[] Bytes)> { ("comparisons.csv", utf8.GetBytes(ComparisonsCsv(rows))) };

@@ -43,7 +43,8 @@ public static class DemoCommand
             foreach (var scene in scenes)
             {
                 string dir = Path.Combine(temp, scene.Slug);
-                Directory.CreateDirectory(dir);
+                // Steps that create folders run guarded, so SIGINT/SIGTERM cannot race them into leaving one behind.
+                Temporaries.Guard(() => Directory.CreateDirectory(dir));
                 var sceneResults = new List<Result>();
                 foreach (var item in scene.Items)
                 {
@@ -52,9 +53,9 @@ public static class DemoCommand
                     var y = TraceReplay.Run(solver, scene.Frames);
                     var result = Measure(scene, item, solver.Gain, y);
                     sceneResults.Add(result);
-                    WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y);
+                    Temporaries.Guard(() => WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y));
                 }
-                Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg);
+                Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg));
                 results.AddRange(sceneResults);
             }
         });

@@ -32,7 +32,7 @@ public static class PsychometricCommand
         OutputFolder.Check("--out", outDir, Owns, createParents: false, inputs);
 
         // Read and check everything, compute, render; only then does the folder appear, whole.
-        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath));
+        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
         var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed);
         var files = new List<(string Name, byte[] Bytes)>();
         var utf8 = new UTF8Encoding(false);

@@ -94,9 +94,12 @@ public static class ReplayCommand
     static void Write(TextWriter w, in TraceFrame f, double objectY)
     {
         double offset = f.IsUsable ? f.HandY - objectY : double.NaN;
-        w.Write(NumberText.Format(f.Time)); w.Write(',');
-        w.Write(NumberText.Format(f.HandY)); w.Write(',');
-        w.Write(NumberText.Format(objectY)); w.Write(',');
-        w.WriteLine(NumberText.Format(offset));
+        Span<char> buffer = stackalloc char[32 * 4 + 4];
+        int n = 0;
+        n += NumberText.Format(f.Time, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(f.HandY, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(objectY, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(offset, buffer[n..]); buffer[n++] = '\n';
+        w.Write(buffer[..n]);
     }
 }

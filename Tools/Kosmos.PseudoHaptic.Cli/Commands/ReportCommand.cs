@@ -26,9 +26,9 @@ public static class ReportCommand
         var catalog = EvaluationInputs.Catalog(questionnaires);
 
         // Everything is read, checked and rendered before the folder is made; it then appears whole.
-        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog);
+        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
         ResponseSet? responses = responsesPath != null
-            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog)
+            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters)
             : null;
         var report = EvaluationReport.Build(catalog, scores, scoresPath, responses, responsesPath);
 
@@ -45,7 +45,7 @@ public static class ReportCommand
 
         OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>
         {
-            foreach (var (name, bytes) in files) File.WriteAllBytes(Path.Combine(temp, name), bytes);
+            foreach (var (name, bytes) in files) Temporaries.Guard(() => File.WriteAllBytes(Path.Combine(temp, name), bytes));
         });
 
         if (report.Disagreements.Count > 0)

@@ -23,12 +23,13 @@ public static class ScoreCommand
         var o = new Options(args, "--responses", "--out", "--questionnaires");
         string responsesPath = o.Require("--responses");
         string output = o.Require("--out");
-        var target = OutputFile.Check("--out", output, new NamedPath("--responses", responsesPath));
+        var target = OutputFile.Check("--out", output,
+            EvaluationInputs.QuestionnaireFiles(o.Get("--questionnaires")).Prepend(new NamedPath("--responses", responsesPath)).ToArray());
         var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
 
         // R.csv may have a condition column (issue 11); S.csv then carries it after the participant. Without
         // it there is one set and the output is the scores file as before, byte for byte.
-        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition);
+        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
         var scores = hasCondition ? ScoreCalculator.ScoreAll(sets) : ScoreCalculator.ScoreAll(sets[0].Value);
         target.Write(w => w.Write(ScoresCsv.Format(scores, hasCondition)));
         var participants = new HashSet<string>(StringComparer.Ordinal);

@@ -58,10 +58,10 @@ public readonly record struct FileIdentity(FileKind Kind, ulong Device, ulong In
         [DllImport("libc.so.6", EntryPoint = "statx", SetLastError = true)]
         static extern int Statx(int dirfd, [MarshalAs(UnmanagedType.LPUTF8Str)] string path, int flags, uint mask, [Out] byte[] buffer);
 
-        [DllImport("libSystem.B.dylib", EntryPoint = "stat$INODE64", SetLastError = true)]
+        [DllImport("/usr/lib/libSystem.B.dylib", EntryPoint = "stat$INODE64", SetLastError = true)]
         static extern int StatMacX64([MarshalAs(UnmanagedType.LPUTF8Str)] string path, [Out] byte[] buffer);
 
-        [DllImport("libSystem.B.dylib", EntryPoint = "stat", SetLastError = true)]
+        [DllImport("/usr/lib/libSystem.B.dylib", EntryPoint = "stat", SetLastError = true)]
         static extern int StatMac([MarshalAs(UnmanagedType.LPUTF8Str)] string path, [Out] byte[] buffer);
 
         public static bool TryStat(string path, out FileIdentity identity)

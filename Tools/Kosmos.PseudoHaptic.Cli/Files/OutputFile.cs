@@ -177,13 +177,15 @@ public sealed class OutputFile
             default:
                 WriteWith(temp =>
                 {
-                    using var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 65536);
+                    using var stream = new FileStream(temp, FileMode.Truncate, FileAccess.Write, FileShare.None, 65536);
                     write(stream);
                     stream.Flush();
                 });
                 return;
         }
     }
+
+    static void CreateEmpty(string path) => new FileStream(path, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1).Dispose();
 
     /// <summary>
     /// Lets <paramref name="write"/> create a file at a temporary path (with the output's extension, for
@@ -195,7 +197,7 @@ public sealed class OutputFile
         if (_mode != Mode.Replace)
         {
             string spare = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(System.IO.Path.GetTempPath(), System.IO.Path.GetExtension(UserPath));
-            Temporaries.Track(spare);
+            Temporaries.Create(spare, CreateEmpty);
             try
             {
                 write(spare);
@@ -207,9 +209,9 @@ public sealed class OutputFile
         }
         string folder = System.IO.Path.GetDirectoryName(_target) ?? ".";
         string temp = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(folder, System.IO.Path.GetExtension(_target));
-        Temporaries.Track(temp);
         try
         {
+            Temporaries.Create(temp, CreateEmpty);
             write(temp);
             Temporaries.Commit(temp, () => File.Move(temp, _target, overwrite: true));
         }

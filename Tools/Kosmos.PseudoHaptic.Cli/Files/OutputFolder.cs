@@ -84,8 +84,7 @@ public sealed class OutputFolder
         {
             if (parentId.Kind == FileKind.Missing) Directory.CreateDirectory(parent);
             string temp = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(parent);
-            Temporaries.Track(temp);
-            Directory.CreateDirectory(temp);
+            Temporaries.Create(temp, p => Directory.CreateDirectory(p));
             return new OutputFolder(option, path, target, temp);
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
@@ -102,18 +101,35 @@ public sealed class OutputFolder
         {
             Temporaries.Commit(Temp, () =>
             {
-                if (!Directory.Exists(_target)) Directory.Move(Temp, _target);
-                else if (!Exchange(Temp, _target))
+                for (int attempt = 0; ; attempt++)
                 {
-                    // No atomic exchange: the old folder steps aside under a temporary name, then goes.
-                    string parent = System.IO.Path.GetDirectoryName(_target) ?? ".";
-                    string old = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(parent);
-                    Directory.Move(_target, old);
-                    Directory.Move(Temp, _target);
-                    Temporaries.Delete(old);
-                    return;
+                    // Linux: one atomic exchange with the folder there; the temporary name then holds the old one.
+                    if (Directory.Exists(_target) && Exchange(Temp, _target))
+                    {
+                        Temporaries.Delete(Temp);
+                        return;
+                    }
+                    try
+                    {
+                        if (!Directory.Exists(_target))
+                        {
+                            Directory.Move(Temp, _target);
+                            return;
+                        }
+                        if (OperatingSystem.IsLinux() && attempt < 8) continue; // it appeared: exchange with it
+                        // No atomic exchange: the old folder steps aside under a temporary name, then goes.
+                        string parent = System.IO.Path.GetDirectoryName(_target) ?? ".";
+                        string old = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(parent);
+                        Directory.Move(_target, old);
+                        Directory.Move(Temp, _target);
+                        Temporaries.Delete(old);
+                        return;
+                    }
+                    catch (IOException) when (attempt < 8 && Directory.Exists(Temp))
+                    {
+                        // Another run put its folder in place between the check and the move: go again.
+                    }
                 }
-                Temporaries.Delete(Temp); // after the exchange, the temporary name holds the old folder
             });
             _done = true;
         }

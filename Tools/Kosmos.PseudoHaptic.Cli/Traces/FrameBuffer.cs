@@ -26,9 +26,8 @@ public sealed class FrameBuffer(string folder) : IDisposable
         if (_writer == null)
         {
             _path = Kosmos.PseudoHaptic.Evaluation.AtomicFile.TemporaryPath(folder);
-            Temporaries.Track(_path);
-            _file = new FileStream(_path, FileMode.CreateNew, FileAccess.ReadWrite, FileShare.None, 65536, FileOptions.DeleteOnClose);
-            _writer = new BinaryWriter(_file);
+            Temporaries.Create(_path, p => _file = new FileStream(p, FileMode.CreateNew, FileAccess.ReadWrite, FileShare.None, 65536, FileOptions.DeleteOnClose));
+            _writer = new BinaryWriter(_file!);
         }
         _writer.Write(f.Time);
         _writer.Write(f.HandY);

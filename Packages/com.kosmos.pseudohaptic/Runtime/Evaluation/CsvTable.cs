@@ -53,26 +53,42 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// checked before the first row is returned. Disposes <paramref name="reader"/> at the end.
         /// </summary>
         public static IEnumerable<Row> Stream(TextReader reader, string sourceName, params string[] columns)
+            => Stream(reader, sourceName, int.MaxValue, columns);
+
+        /// <summary>As <see cref="Stream(TextReader, string, string[])"/>; a data row beyond <paramref name="maxRows"/> is an error naming its line.</summary>
+        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, int maxRows, params string[] columns)
+            => Stream(reader, sourceName, maxRows, long.MaxValue, columns);
+
+        /// <summary>
+        /// As <see cref="Stream(TextReader, string, int, string[])"/>; the requested fields of all rows together
+        /// may hold at most <paramref name="maxCharacters"/> characters (what a caller keeps stays bounded even
+        /// when every row is near the 1 MiB row limit).
+        /// </summary>
+        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, int maxRows, long maxCharacters, params string[] columns)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (columns == null || columns.Length == 0) throw new ArgumentException("no columns requested", nameof(columns));
-            return StreamRows(reader, sourceName, columns);
+            if (maxRows < 0) throw new ArgumentOutOfRangeException(nameof(maxRows));
+            if (maxCharacters < 0) throw new ArgumentOutOfRangeException(nameof(maxCharacters));
+            return StreamRows(reader, sourceName, maxRows, maxCharacters, columns, Array.Empty<string>(), Array.Empty<bool>());
         }
 
         /// <summary>
-        /// As <see cref="Stream(TextReader, string, string[])"/>, with <paramref name="optional"/> columns after
-        /// the required ones in each row (an absent optional column reads as null); <paramref name="present"/>
+        /// As <see cref="Stream(TextReader, string, int, long, string[])"/>, with <paramref name="optional"/> columns
+        /// after the required ones in each row (an absent optional column reads as null); <paramref name="present"/>
         /// (one flag per optional column) is filled once the header has been read.
         /// </summary>
-        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, string[] columns, string[] optional, bool[] present)
+        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, int maxRows, long maxCharacters, string[] columns, string[] optional, bool[] present)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (columns == null || columns.Length == 0) throw new ArgumentException("no columns requested", nameof(columns));
             if (optional == null || present == null || present.Length != optional.Length) throw new ArgumentException("one flag per optional column", nameof(present));
-            return StreamRows(reader, sourceName, columns, optional, present);
+            if (maxRows < 0) throw new ArgumentOutOfRangeException(nameof(maxRows));
+            if (maxCharacters < 0) throw new ArgumentOutOfRangeException(nameof(maxCharacters));
+            return StreamRows(reader, sourceName, maxRows, maxCharacters, columns, optional, present);
         }
 
-        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, string[] columns, string[] optional, bool[] present)
+        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, int maxRows, long maxCharacters, string[] columns, string[] optional, bool[] present)
         {
             using (var csv = new CsvReader(reader, sourceName))
             {
@@ -90,32 +106,21 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     index[columns.Length + c] = csv.IndexOf(optional[c], StringComparison.OrdinalIgnoreCase);
                     present[c] = index[columns.Length + c] >= 0;
                 }
+                int count = 0;
+                long characters = 0;
                 while (csv.Read())
                 {
+                    if (++count > maxRows)
+                        throw csv.Error(csv.Line, "more than " + maxRows.ToString(System.Globalization.CultureInfo.InvariantCulture) + " rows (the limit for this file)");
                     var picked = new string[index.Length];
-                    for (int c = 0; c < index.Length; c++) picked[c] = index[c] >= 0 ? csv[index[c]] : null;
-                    yield return new Row(csv.Line, csv.EndLine, picked);
-                }
-            }
-        }
-
-        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, string[] columns)
-        {
-            using (var csv = new CsvReader(reader, sourceName))
-            {
-                string expected = string.Join(",", columns);
-                if (!csv.ReadHeader()) throw csv.Error(1, "empty file: expected the header " + expected);
-                var index = new int[columns.Length];
-                for (int c = 0; c < columns.Length; c++)
-                {
-                    index[c] = csv.IndexOf(columns[c], StringComparison.OrdinalIgnoreCase);
-                    if (index[c] < 0)
-                        throw csv.Error(csv.HeaderLine, "missing column '" + columns[c] + "': the header must name " + expected + " (found " + Quote(csv.Header) + ")");
-                }
-                while (csv.Read())
-                {
-                    var picked = new string[columns.Length];
-                    for (int c = 0; c < columns.Length; c++) picked[c] = csv[index[c]];
+                    for (int c = 0; c < index.Length; c++)
+                    {
+                        if (index[c] < 0) continue; // an absent optional column reads as null
+                        picked[c] = csv[index[c]];
+                        characters += picked[c].Length;
+                    }
+                    if (characters > maxCharacters)
+                        throw csv.Error(csv.Line, "more than " + maxCharacters.ToString(System.Globalization.CultureInfo.InvariantCulture) + " characters of data (the limit for this file)");
                     yield return new Row(csv.Line, csv.EndLine, picked);
                 }
             }

@@ -25,11 +25,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return Parse(new StringReader(text), sourceName, catalog);
         }
 
-        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it.</summary>
-        public static ResponseSet Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog)
+        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it; more than
+        /// <paramref name="maxRows"/> data rows, or more than <paramref name="maxCharacters"/> characters in their fields, is an error naming the row.</summary>
+        public static ResponseSet Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
         {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
-            var rows = CsvTable.Stream(reader, sourceName, Columns);
+            var rows = CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, Columns);
             var set = new ResponseSet(catalog);
             foreach (var row in rows) Add(set, sourceName, row);
             return set;
@@ -40,13 +41,13 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// the order the conditions first appear. Without the column (<paramref name="hasCondition"/> false)
         /// there is one set, condition "", read exactly as <see cref="Parse(TextReader, string, QuestionnaireCatalog)"/>.
         /// </summary>
-        public static IReadOnlyList<KeyValuePair<string, ResponseSet>> ParseByCondition(TextReader reader, string sourceName, QuestionnaireCatalog catalog, out bool hasCondition)
+        public static IReadOnlyList<KeyValuePair<string, ResponseSet>> ParseByCondition(TextReader reader, string sourceName, QuestionnaireCatalog catalog, out bool hasCondition, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
         {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
             var present = new bool[1];
             var sets = new List<KeyValuePair<string, ResponseSet>>();
             var byCondition = new Dictionary<string, ResponseSet>(StringComparer.Ordinal);
-            foreach (var row in CsvTable.Stream(reader, sourceName, Columns, new[] { "condition" }, present))
+            foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, Columns, new[] { "condition" }, present))
             {
                 string condition = row[4] ?? "";
                 ResponseSet set;

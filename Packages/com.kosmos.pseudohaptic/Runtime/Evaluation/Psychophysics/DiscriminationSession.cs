@@ -198,7 +198,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             var present = new bool[0];
             var columns = TrialsCsv.Header.Split(',');
             string[] lines = (text.Length > 0 && text[0] == '\uFEFF' ? text.Substring(1) : text).Split('\n');
-            foreach (var row in CsvTable.Stream(new StringReader(text), TrialsPath, columns, new string[0], present))
+            foreach (var row in CsvTable.Stream(new StringReader(text), TrialsPath, int.MaxValue, long.MaxValue, columns, new string[0], present))
             {
                 var verbatim = new StringBuilder(lines[row.Line - 1].TrimEnd('\r'));
                 for (int l = row.Line; l < row.EndLine && l < lines.Length; l++) verbatim.Append('\n').Append(lines[l].TrimEnd('\r'));

@@ -36,11 +36,11 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// others ignored. A missing column, an empty participant, a number that does not parse or is not
         /// finite, or a response other than 0 or 1 throws <see cref="EvaluationFormatException"/> naming the line.
         /// </summary>
-        public static List<TrialAnswer> Read(TextReader reader, string sourceName)
+        public static List<TrialAnswer> Read(TextReader reader, string sourceName, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
         {
             var present = new bool[1];
             var answers = new List<TrialAnswer>();
-            foreach (var row in CsvTable.Stream(reader, sourceName, RequiredColumns, new[] { "condition" }, present))
+            foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, RequiredColumns, new[] { "condition" }, present))
             {
                 string participant = row[0].Trim();
                 if (participant.Length == 0) throw new EvaluationFormatException(sourceName, row.Line, "participant is empty");
@@ -164,11 +164,11 @@ namespace Kosmos.PseudoHaptic.Evaluation
     {
         public static readonly string[] Columns = { "participant", "condition", "questionnaire", "score" };
 
-        public static List<ConditionScore> Read(TextReader reader, string sourceName)
+        public static List<ConditionScore> Read(TextReader reader, string sourceName, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
         {
             var scores = new List<ConditionScore>();
             var seen = new Dictionary<string, int>(StringComparer.Ordinal);
-            foreach (var row in CsvTable.Stream(reader, sourceName, Columns))
+            foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, Columns))
             {
                 string participant = row[0].Trim(), condition = row[1].Trim(), questionnaire = row[2].Trim(), text = row[3].Trim();
                 if (participant.Length == 0) throw new EvaluationFormatException(sourceName, row.Line, "participant is empty");
