@@ -11,6 +11,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The object's height, m.</summary>
         public double ObjectY;
 
+        /// <summary>The object's height when the hold began, m (<see cref="HeightDeceleration"/> measures from it).</summary>
+        public double StartY;
+
         /// <summary>Frame time since the hold began, s (double: it never loses the millisecond in hours).</summary>
         public double Time;
 

@@ -76,6 +76,7 @@ namespace Kosmos.PseudoHaptic
             _state.IsHolding = true;
             var floor = Profile.Find<FloorClamp>();
             _state.ObjectY = floor != null && objectY < floor.Floor ? floor.Floor : objectY;
+            _state.StartY = _state.ObjectY;
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime);
             _state.HandY = handOk ? handY : objectY;
             _filter?.Reset(_state.HandY);
