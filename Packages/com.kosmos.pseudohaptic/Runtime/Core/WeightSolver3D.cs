@@ -331,6 +331,7 @@ namespace Kosmos.PseudoHaptic
             }
             else _ex = _ez = 0;
 
+            if (!_hHas) return; // no hand seen yet: the object stays where the hold began
             double x = _hPx + _ax - _ex, z = _hPz + _az - _ez;
             if (double.IsFinite(x) && double.IsFinite(z)) { _objX = x; _objZ = z; }
         }
