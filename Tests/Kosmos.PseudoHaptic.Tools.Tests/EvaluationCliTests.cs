@@ -194,7 +194,7 @@ public class EvaluationCliTests
     {
         var (code, stderr, _) = Score("--responses", Path.Combine(_dir, "none.csv"), "--out", Out);
         Assert.That(code, Is.EqualTo(2));
-        Assert.That(stderr, Does.Contain("none.csv: file not found"));
+        Assert.That(stderr, Does.Contain("none.csv: does not exist"));
         Assert.That(File.Exists(Out), Is.False);
     }
 

@@ -1,20 +1,15 @@
+using Kosmos.PseudoHaptic.Cli.Files;
+
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// The command's output files, written through the package's write-then-rename
-/// (<see cref="Kosmos.PseudoHaptic.Evaluation.AtomicFile"/>): a failure or an error leaves no output and no
-/// temporary file behind, and an existing file as it was.
+/// A command's output file by the tool's rules (<see cref="OutputFile"/>): checked, then written through
+/// write-then-rename (or straight into a FIFO, a device or standard output for "-"). Prefer checking with
+/// <see cref="OutputFile.Check"/> before reading any input, and passing the inputs so an input is never
+/// overwritten; this shortcut checks at the moment of writing.
 /// </summary>
 public static class AtomicFile
 {
-    public static void Write(string path, Action<TextWriter> write)
-    {
-        string dir = Path.GetDirectoryName(Path.GetFullPath(path)) ?? ".";
-        if (!Directory.Exists(dir)) throw new CliException($"{path}: the folder {dir} does not exist");
-        Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(path, temp =>
-        {
-            using var writer = new StreamWriter(temp, false, new System.Text.UTF8Encoding(false)) { NewLine = "\n" };
-            write(writer);
-        });
-    }
+    public static void Write(string path, Action<TextWriter> write, string option = "--out", params NamedPath[] inputs)
+        => OutputFile.Check(option, path, inputs).Write(write);
 }

@@ -1,5 +1,6 @@
 using Kosmos.PseudoHaptic.Cli;
 using Kosmos.PseudoHaptic.Cli.Commands;
+using Kosmos.PseudoHaptic.Cli.Files;
 
 // pseudohaptic: headless tools around the weight solver. Each command returns its exit code; contract
 // errors are one line on stderr and exit code 2.
@@ -44,17 +45,21 @@ namespace Kosmos.PseudoHaptic.Cli
             }
             catch (CliException e)
             {
-                Console.Error.WriteLine("pseudohaptic: " + e.Message);
+                Console.Error.WriteLine("pseudohaptic: " + Messages.OneLine(e.Message));
                 return e.ExitCode;
             }
-            catch (IOException e)
+            catch (Kosmos.PseudoHaptic.Evaluation.EvaluationFormatException e)
             {
-                Console.Error.WriteLine("pseudohaptic: " + e.Message.ReplaceLineEndings(" "));
-                return 1;
+                Console.Error.WriteLine("pseudohaptic: " + Messages.OneLine(e.Message));
+                return 2;
             }
-            catch (UnauthorizedAccessException e)
+            catch (OperationCanceledException)
             {
-                Console.Error.WriteLine("pseudohaptic: " + e.Message.ReplaceLineEndings(" "));
+                return 130; // a signal arrived; its handler removed the temporary files and ends the process
+            }
+            catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+            {
+                Console.Error.WriteLine("pseudohaptic: " + Messages.Reason(e));
                 return 1;
             }
         }

@@ -31,23 +31,14 @@ public sealed record AccuracySource(string Name, string Description, HandPath Ha
     /// <summary>
     /// A trace in the replay format taken as the true hand: its usable rows (tracked, finite hand_y), at their
     /// pose time when the row has one (repeated poses count once) or else at their frame time, linearly
-    /// interpolated; rows whose time does not advance are skipped. Parse errors name the file and line.
+    /// interpolated; rows whose time does not advance are skipped. Parse errors name the file and line. Read in
+    /// bounded memory (<see cref="TraceSamples"/>: at most one sample per ms, a span of at most 600 s).
     /// </summary>
-    public static AccuracySource FromTrace(string name, string path)
+    public static AccuracySource FromTrace(string name, string path, string option = "--trace")
     {
-        var frames = TraceCsvReader.ReadAll(path);
-        var times = new List<double>();
-        var heights = new List<double>();
-        foreach (var f in frames)
-        {
-            if (!f.IsUsable) continue;
-            double t = double.IsFinite(f.PoseTime) ? f.PoseTime : f.Time;
-            if (!double.IsFinite(t) || (times.Count > 0 && !(t > times[^1]))) continue;
-            times.Add(t);
-            heights.Add(f.HandY);
-        }
+        var (times, heights) = TraceSamples.Read(option, path, "accuracy", usePoseTime: true);
         if (times.Count < 2 || times[^1] - times[0] < 0.5)
-            throw new CliException($"{path}: needs at least 0.5 s of usable rows (tracked, finite hand_y, time increasing) to serve as the true hand; found {times.Count} row(s)");
+            throw new CliException($"{Files.Messages.OneLine(path)}: needs at least 0.5 s of usable rows (tracked, finite hand_y, time increasing) to serve as the true hand; found {times.Count} row(s)");
         var hand = HandPath.FromSamples(times, heights);
         return new AccuracySource(name, $"{Path.GetFileName(path)}: {times.Count} usable samples over {hand.Duration:0.0} s as the true hand", hand);
     }

@@ -16,24 +16,22 @@ public static class BenchmarkCosts
     {
         var files = Directory.Exists(path) ? Directory.GetFiles(path, "*-report.csv").OrderBy(f => f, StringComparer.Ordinal).ToArray()
             : File.Exists(path) ? new[] { path }
-            : throw new CliException($"option --costs: '{path}' is neither a file nor a directory");
+            : throw new CliException($"--costs {Files.Messages.Path(path)}: does not exist");
         var costs = new Dictionary<string, double>(StringComparer.Ordinal);
         foreach (var file in files)
         {
-            var lines = File.ReadAllLines(file);
-            if (lines.Length == 0) continue;
-            var header = Split(lines[0]);
+            using var csv = new Kosmos.PseudoHaptic.Evaluation.CsvReader(Files.InputFile.OpenText("--costs", file), Files.Messages.OneLine(file));
+            if (!csv.ReadHeader()) continue;
+            var header = csv.Header.ToList();
             int key = header.FindIndex(h => h == EstimatorColumn);
             int mean = header.FindIndex(h => h == "Mean" || h.StartsWith("Mean [", StringComparison.Ordinal));
             if (key < 0 || mean < 0) continue;
             double headerScale = header[mean].Length > 4 ? Scale(header[mean][6..^1]) : double.NaN;
-            for (int i = 1; i < lines.Length; i++)
+            while (csv.Read())
             {
-                var cells = Split(lines[i]);
-                if (cells.Count <= Math.Max(key, mean)) continue;
-                double ns = ParseTime(cells[mean], headerScale);
-                if (!double.IsFinite(ns)) throw new CliException($"{file}:{i + 1}: cannot read '{cells[mean]}' as a time");
-                costs[cells[key]] = ns;
+                double ns = ParseTime(csv[mean], headerScale);
+                if (!double.IsFinite(ns)) throw new CliException($"{Files.Messages.OneLine(file)}:{csv.Line}: cannot read '{Files.Messages.OneLine(csv[mean])}' as a time");
+                costs[csv[key]] = ns;
             }
         }
         if (costs.Count == 0) throw new CliException($"option --costs: no BenchmarkDotNet report with an '{EstimatorColumn}' column in '{path}'");
@@ -64,27 +62,4 @@ public static class BenchmarkCosts
         "s" => 1e9,
         _ => double.NaN,
     };
-
-    /// <summary>One CSV line, with double-quoted fields.</summary>
-    static List<string> Split(string line)
-    {
-        var cells = new List<string>();
-        var cell = new System.Text.StringBuilder();
-        bool quoted = false;
-        for (int i = 0; i < line.Length; i++)
-        {
-            char c = line[i];
-            if (quoted)
-            {
-                if (c == '"' && i + 1 < line.Length && line[i + 1] == '"') { cell.Append('"'); i++; }
-                else if (c == '"') quoted = false;
-                else cell.Append(c);
-            }
-            else if (c == '"') quoted = true;
-            else if (c == ',') { cells.Add(cell.ToString()); cell.Clear(); }
-            else cell.Append(c);
-        }
-        cells.Add(cell.ToString());
-        return cells;
-    }
 }

@@ -1,4 +1,5 @@
 using Kosmos.PseudoHaptic.Cli.Accuracy;
+using Kosmos.PseudoHaptic.Cli.Files;
 
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
@@ -31,6 +32,16 @@ public static class AccuracyCommand
             throw new CliException($"option --long-minutes: must lie in [0, 1440], got {NumberText.Format(minutes)}");
         string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
         if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
+        // Outputs are checked before anything is read: never an input, never a folder, never a missing folder.
+        string? trace = o.Get("--trace"), mocapOption = o.Get("--mocap"), csv = o.Get("--csv");
+        var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapOption == "none" ? null : mocapOption), new NamedPath("--costs", costsPath) };
+        var csvOut = csv != null ? OutputFile.Check("--csv", csv, inputs) : null;
+        var chartOut = chartPath != null ? OutputFile.Check("--chart", chartPath, inputs) : null;
+        if (csvOut != null && chartOut != null && FileIdentity.Of(csv!).Exists && FileIdentity.Of(csv!).SameAs(FileIdentity.Of(chartPath!)))
+            throw new CliException($"--chart {Messages.Path(chartPath!)} is the same file as --csv {Messages.Path(csv!)}");
+        if (csvOut != null && chartOut != null && Path.GetFullPath(csv!) == Path.GetFullPath(chartPath!))
+            throw new CliException($"--chart {Messages.Path(chartPath!)} is the same file as --csv {Messages.Path(csv!)}");
+        if (trace != null) InputFile.Check("--trace", trace);
         var costs = costsPath != null ? BenchmarkCosts.Read(costsPath) : null;
 
         var notes = new List<string>();
@@ -41,7 +52,6 @@ public static class AccuracyCommand
             case "none": break;
             case var other: throw new CliException($"option --lifts: expected all or none, got '{other}'");
         }
-        string? trace = o.Get("--trace");
         if (trace != null) sources.Add(AccuracySource.FromTrace("trace", trace));
         string? mocap = o.Get("--mocap");
         if (mocap == null)
@@ -50,19 +60,20 @@ public static class AccuracyCommand
             if (mocap == null) notes.Add($"motion-capture trace {MocapRelative} (beside the repository root) not found: skipped");
         }
         else if (mocap == "none") mocap = null;
-        if (mocap != null) sources.Add(AccuracySource.FromTrace("mocap", mocap));
+        if (mocap != null) sources.Add(AccuracySource.FromTrace("mocap", mocap, "--mocap"));
         if (sources.Count == 0) throw new CliException("nothing to measure: --lifts none without --trace or a motion-capture trace");
 
         var model = WeightModel.FromMass(mass);
         var report = AccuracyStudy.Run(new AccuracyStudy.Settings(model, speed, sources, minutes, notes), Console.Error);
-        AccuracyTable.Write(Console.Out, report);
+        // With an output on standard output ("-"), the tables go to standard error.
+        bool stdoutTaken = csvOut?.IsStandardOutput == true || chartOut?.IsStandardOutput == true;
+        AccuracyTable.Write(stdoutTaken ? Console.Error : Console.Out, report);
 
-        string? csv = o.Get("--csv");
-        if (csv != null) AtomicFile.Write(csv, w => AccuracyTable.WriteCsv(w, report));
-        if (chartPath != null && costs != null)
+        csvOut?.Write(w => AccuracyTable.WriteCsv(w, report));
+        if (chartOut != null && costs != null)
         {
-            ParetoChart.Save(chartPath, report, costs);
-            Console.Error.WriteLine($"accuracy: chart written to {chartPath}");
+            chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs));
+            Console.Error.WriteLine($"accuracy: chart written to {Messages.Path(chartPath!)}");
         }
         return 0;
     }

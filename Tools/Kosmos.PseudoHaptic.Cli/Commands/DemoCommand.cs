@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Plotting;
 using Kosmos.PseudoHaptic.Cli.Traces;
 using Kosmos.PseudoHaptic.Simulation;
@@ -22,32 +23,41 @@ public static class DemoCommand
     public static int Run(string[] args)
     {
         var o = new Options(args, "--out", "--trace");
-        string outDir = o.Get("--out") ?? DefaultOut;
+        string? given = o.Get("--out");
+        string outDir = given ?? DefaultOut;
         string? tracePath = o.Get("--trace");
-        List<TraceFrame>? recorded = tracePath != null ? TraceCsvReader.ReadAll(tracePath) : null;
-        Directory.CreateDirectory(outDir);
+        // The folder is checked, and the trace read, before anything is created; the folder then appears whole.
+        (List<double> Times, List<double> Heights)? recorded = tracePath != null
+            ? TraceSamples.Read("--trace", tracePath, "demo", usePoseTime: false) : null;
+        if (recorded != null && recorded.Value.Times.Count < 2)
+            throw new CliException($"{Messages.OneLine(tracePath!)}: fewer than two usable rows with increasing t");
+        OutputFolder.Check("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
 
         double standardSpeed = Calibrate();
         var scenes = Scenes(recorded, tracePath);
         int total = scenes.Sum(s => s.Items.Count), done = 0;
         var results = new List<Result>();
-        foreach (var scene in scenes)
+        var folder = OutputFolder.Begin("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
+        folder.Build(temp =>
         {
-            string dir = Path.Combine(outDir, scene.Slug);
-            Directory.CreateDirectory(dir);
-            var sceneResults = new List<Result>();
-            foreach (var item in scene.Items)
+            foreach (var scene in scenes)
             {
-                Console.Error.WriteLine($"[{++done}/{total}] {scene.Title}: {item.Name}");
-                var solver = new WeightSolver(WeightModel.FromMass(item.MassKg), scene.Profile, standardSpeed);
-                var y = TraceReplay.Run(solver, scene.Frames);
-                var result = Measure(scene, item, solver.Gain, y);
-                sceneResults.Add(result);
-                WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y);
+                string dir = Path.Combine(temp, scene.Slug);
+                Directory.CreateDirectory(dir);
+                var sceneResults = new List<Result>();
+                foreach (var item in scene.Items)
+                {
+                    Console.Error.WriteLine($"[{++done}/{total}] {scene.Title}: {item.Name}");
+                    var solver = new WeightSolver(WeightModel.FromMass(item.MassKg), scene.Profile, standardSpeed);
+                    var y = TraceReplay.Run(solver, scene.Frames);
+                    var result = Measure(scene, item, solver.Gain, y);
+                    sceneResults.Add(result);
+                    WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y);
+                }
+                Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults);
+                results.AddRange(sceneResults);
             }
-            Plot(Path.Combine(outDir, scene.Slug + ".png"), scene, sceneResults);
-            results.AddRange(sceneResults);
-        }
+        });
         PrintSummary(results, standardSpeed, outDir);
         return 0;
     }
@@ -73,7 +83,12 @@ public static class DemoCommand
         return result.IsAccepted ? result.StandardSpeed : WeightSolver.DefaultStandardSpeed;
     }
 
-    static List<Scene> Scenes(List<TraceFrame>? recorded, string? tracePath)
+    /// <summary>What an existing --out folder may hold to be replaced: the scenes' charts and their folders of CSV files.</summary>
+    static readonly OutputFolder.Owns Owns = entry => entry is DirectoryInfo
+        ? OutputFolder.FilesEndingWith(folders: true, ".csv")(entry)
+        : OutputFolder.FilesEndingWith(folders: false, ".png", ".svg")(entry);
+
+    static List<Scene> Scenes((List<double> Times, List<double> Heights)? recorded, string? tracePath)
     {
         var headset = new HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.001, Seed = 2022 };
         // Lift 0.35 m, hold, put it back down: the same hand for every object, so only the weight differs.
@@ -106,15 +121,10 @@ public static class DemoCommand
         };
         if (recorded != null)
         {
-            var usable = recorded.Where(f => f.Tracked && double.IsFinite(f.HandY) && double.IsFinite(f.Time)).ToList();
-            var times = new List<double>();
-            var ys = new List<double>();
-            foreach (var f in usable)
-                if (times.Count == 0 || f.Time > times[^1]) { times.Add(f.Time); ys.Add(f.HandY); }
-            if (times.Count < 2) throw new CliException($"{tracePath}: fewer than two usable rows with increasing t");
+            var (times, ys) = recorded.Value;
             var frames = new HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.0, Seed = 7 }
                 .Render(HandPath.FromSamples(times, ys));
-            scenes.Add(new("recorded-hand", $"Recorded hand ({Path.GetFileName(tracePath)}), as 30 Hz poses (paper)", NamedProfiles.Paper, boxes, frames));
+            scenes.Add(new("recorded-hand", $"Recorded hand ({Messages.OneLine(Path.GetFileName(tracePath))}), as 30 Hz poses (paper)", NamedProfiles.Paper, boxes, frames));
         }
         return scenes;
     }
@@ -132,12 +142,13 @@ public static class DemoCommand
         return new Result(scene, item, gain, max, end, y);
     }
 
-    static void WriteCsv(string path, TraceFrame[] frames, double[] y) => AtomicFile.Write(path, w =>
+    static void WriteCsv(string path, TraceFrame[] frames, double[] y)
     {
+        using var w = new StreamWriter(path, false, new System.Text.UTF8Encoding(false)) { NewLine = "\n" };
         w.WriteLine("t,hand_y,object_y,offset");
         for (int i = 0; i < frames.Length; i++)
             w.WriteLine($"{NumberText.Format(frames[i].Time)},{NumberText.Format(frames[i].HandY)},{NumberText.Format(y[i])},{NumberText.Format(frames[i].HandY - y[i])}");
-    });
+    }
 
     static void Plot(string path, Scene scene, List<Result> results)
     {
@@ -157,7 +168,7 @@ public static class DemoCommand
         foreach (var r in results)
             Console.WriteLine($"{r.Scene.Slug,-22} {r.Item.Name,-14} {NumberText.Fixed(r.Item.MassKg, 3),8} {NumberText.Fixed(r.Gain, 3),6} {NumberText.Fixed(r.MaxOffset, 3),13} {NumberText.Fixed(r.EndOffset, 3),13}");
         Console.WriteLine();
-        Console.WriteLine($"offset = hand − object (positive: the object lags below the hand). CSV and PNG files in {Path.GetFullPath(outDir)}");
+        Console.WriteLine($"offset = hand − object (positive: the object lags below the hand). CSV and PNG files in {Messages.OneLine(Path.GetFullPath(outDir))}");
     }
 
     static string Slug(string name) => new string(name.ToLowerInvariant().Select(c => char.IsLetterOrDigit(c) || c == '.' ? c : '-').ToArray()).Trim('-');

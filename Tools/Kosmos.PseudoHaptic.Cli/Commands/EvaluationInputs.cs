@@ -1,5 +1,6 @@
 using System.Reflection;
 using System.Text;
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
 namespace Kosmos.PseudoHaptic.Cli;
@@ -19,7 +20,7 @@ static class EvaluationInputs
     {
         if (directory != null)
         {
-            if (!Directory.Exists(directory)) throw new CliException($"option --questionnaires: folder '{directory}' not found");
+            if (!Directory.Exists(directory)) throw new CliException($"--questionnaires {Messages.Path(directory)}: " + (File.Exists(directory) ? "is a file, not a folder" : "does not exist"));
             return QuestionnaireJson.LoadDirectory(directory);
         }
         var assembly = typeof(EvaluationInputs).Assembly;
@@ -34,27 +35,23 @@ static class EvaluationInputs
         return QuestionnaireJson.ParseAll(named);
     }
 
-    /// <summary>The whole text of an input file; a missing or unreadable one is a contract error naming it.</summary>
+    /// <summary>The whole text of an input file (small files only); a missing or unreadable one is a contract error naming it.</summary>
     public static string ReadText(string path)
     {
-        if (Directory.Exists(path)) throw new CliException($"{path}: is a folder, not a file");
-        if (!File.Exists(path)) throw new CliException($"{path}: file not found");
-        try { return File.ReadAllText(path, Encoding.UTF8); }
-        catch (IOException e) { throw new CliException($"{path}: cannot read: {OneLine(e.Message)}"); }
-        catch (UnauthorizedAccessException e) { throw new CliException($"{path}: cannot read: {OneLine(e.Message)}"); }
+        using var reader = InputFile.OpenText("--input", path);
+        return reader.ReadToEnd();
     }
 
-    /// <summary>Writes through a temporary file beside <paramref name="path"/>, creating its folder if needed.</summary>
-    public static void WriteText(string path, string text) => Write(path, temp => File.WriteAllText(temp, text, new UTF8Encoding(false)));
+    /// <summary>An input file named by <paramref name="option"/>, read as it is parsed (one row at a time).</summary>
+    public static TextReader OpenText(string option, string path) => InputFile.OpenText(option, path);
 
-    public static void WriteBytes(string path, byte[] bytes) => Write(path, temp => File.WriteAllBytes(temp, bytes));
+    /// <summary>The name messages give a file: its path with control characters escaped.</summary>
+    public static string Name(string path) => Messages.OneLine(path);
 
-    static void Write(string path, Action<string> write)
-    {
-        string? folder = Path.GetDirectoryName(Path.GetFullPath(path));
-        if (!string.IsNullOrEmpty(folder)) Directory.CreateDirectory(folder);
-        Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(path, write);
-    }
+    /// <summary>Writes by the tool's output rules (<see cref="OutputFile"/>).</summary>
+    public static void WriteText(string path, string text) => OutputFile.Check("--out", path).Write(w => w.Write(text));
+
+    public static void WriteBytes(string path, byte[] bytes) => OutputFile.Check("--out", path).WriteBytes(bytes);
 
     /// <summary>
     /// Runs a command body under the error contract: a malformed file prints "FILE:LINE: reason", a usage
@@ -69,7 +66,7 @@ static class EvaluationInputs
         }
         catch (EvaluationFormatException e)
         {
-            Console.Error.WriteLine(e.Message);
+            Console.Error.WriteLine(OneLine(e.Message));
             return ContractError;
         }
         catch (CliException e)
@@ -81,10 +78,10 @@ static class EvaluationInputs
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            Console.Error.WriteLine($"pseudohaptic {command}: {OneLine(e.Message)}");
+            Console.Error.WriteLine($"pseudohaptic {command}: {Messages.Reason(e)}");
             return 1;
         }
     }
 
-    public static string OneLine(string text) => text.ReplaceLineEndings(" ");
+    public static string OneLine(string text) => Messages.OneLine(text);
 }

@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Traces;
 using Kosmos.PseudoHaptic.Simulation;
 
@@ -18,12 +19,13 @@ public static class ReplayCommand
         string trace = o.Require("--trace");
         string output = o.Require("--out");
         var solver = CreateSolver(o);
+        var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace));
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
         bool anyUsable = true;
-        AtomicFile.Write(output, w => anyUsable = Replay(reader, solver, w));
-        if (!anyUsable) Console.Error.WriteLine($"{trace}: warning: no row has a usable pose; object_y is 0 throughout");
+        target.Write(w => anyUsable = Replay(reader, solver, w, target.SpareFolder));
+        if (!anyUsable) Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; object_y is 0 throughout");
         return 0;
     }
 
@@ -43,12 +45,13 @@ public static class ReplayCommand
         return new WeightSolver(WeightModel.FromMass(mass), profile, speed);
     }
 
-    /// <summary>Streams rows through the solver. Rows before the first usable pose wait in a small buffer
-    /// until the starting height is known. Returns false when no row had a usable pose.</summary>
-    static bool Replay(TraceCsvReader reader, WeightSolver solver, TextWriter w)
+    /// <summary>Streams rows through the solver. Rows before the first usable pose wait until the starting
+    /// height is known: the first <see cref="FrameBuffer.InMemory"/> in memory, the rest in a temporary file
+    /// beside the output, so memory stays bounded. Returns false when no row had a usable pose.</summary>
+    static bool Replay(TraceCsvReader reader, WeightSolver solver, TextWriter w, string spareFolder)
     {
         w.WriteLine("t,hand_y,object_y,offset");
-        var waiting = new List<TraceFrame>();
+        using var waiting = new FrameBuffer(spareFolder);
         bool holding = false;
         double lastT = double.NaN;
         while (reader.TryRead(out var f))
@@ -59,8 +62,7 @@ public static class ReplayCommand
                 if (!f.IsUsable) { waiting.Add(f); continue; }
                 solver.BeginHold(f.HandY, f.HandY, f.PoseTime);
                 holding = true;
-                foreach (var early in waiting) Write(w, early, solver.ObjectY);
-                waiting.Clear();
+                waiting.Drain(early => Write(w, early, solver.ObjectY));
                 objectY = solver.ObjectY;
             }
             else
@@ -71,8 +73,9 @@ public static class ReplayCommand
             if (double.IsFinite(f.Time)) lastT = f.Time;
             Write(w, f, objectY);
         }
-        foreach (var early in waiting) Write(w, early, 0);
-        return holding || waiting.Count == 0;
+        bool none = waiting.Count == 0;
+        waiting.Drain(early => Write(w, early, 0));
+        return holding || none;
     }
 
     static void Write(TextWriter w, in TraceFrame f, double objectY)

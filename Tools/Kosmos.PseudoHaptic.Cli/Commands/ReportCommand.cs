@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
 namespace Kosmos.PseudoHaptic.Cli;
@@ -19,13 +20,15 @@ public static class ReportCommand
         string scoresPath = o.Require("--scores");
         string outDir = o.Require("--out");
         string? responsesPath = o.Get("--responses");
-        if (File.Exists(outDir)) throw new CliException($"option --out: '{outDir}' is a file, not a folder");
-        var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
+        string? questionnaires = o.Get("--questionnaires");
+        var inputs = new[] { new NamedPath("--scores", scoresPath), new NamedPath("--responses", responsesPath), new NamedPath("--questionnaires", questionnaires) };
+        OutputFolder.Check("--out", outDir, Owns, createParents: false, inputs);
+        var catalog = EvaluationInputs.Catalog(questionnaires);
 
-        // Everything is read, checked and rendered before the first file is written.
-        var scores = ScoresCsv.Parse(EvaluationInputs.ReadText(scoresPath), scoresPath, catalog);
+        // Everything is read, checked and rendered before the folder is made; it then appears whole.
+        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog);
         ResponseSet? responses = responsesPath != null
-            ? ResponsesCsv.Parse(EvaluationInputs.ReadText(responsesPath), responsesPath, catalog)
+            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog)
             : null;
         var report = EvaluationReport.Build(catalog, scores, scoresPath, responses, responsesPath);
 
@@ -40,11 +43,14 @@ public static class ReportCommand
             files.Add((part.ChartFile, EvaluationCharts.Png(part)));
         }
 
-        foreach (var (name, bytes) in files) EvaluationInputs.WriteBytes(Path.Combine(outDir, name), bytes);
+        OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>
+        {
+            foreach (var (name, bytes) in files) File.WriteAllBytes(Path.Combine(temp, name), bytes);
+        });
 
         if (report.Disagreements.Count > 0)
-            Console.Error.WriteLine($"pseudohaptic report: warning: {report.Disagreements.Count} scores in {scoresPath} differ from {responsesPath} scored again (first: {report.Disagreements[0]})");
-        Console.Out.WriteLine($"{Path.Combine(outDir, "report.md")}: {files.Count} files");
+            Console.Error.WriteLine(Messages.OneLine($"pseudohaptic report: warning: {report.Disagreements.Count} scores in {scoresPath} differ from {responsesPath} scored again (first: {report.Disagreements[0]})"));
+        Console.Out.WriteLine($"{Messages.OneLine(Path.Combine(outDir, "report.md"))}: {files.Count} files");
         foreach (var part in report.Parts)
         {
             var st = part.Statistics;
@@ -52,6 +58,9 @@ public static class ReportCommand
         }
         return 0;
     });
+
+    /// <summary>What an existing --out folder may hold to be replaced: files of an earlier report (no folders).</summary>
+    static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");
 
     static string Fixed(double v) => double.IsFinite(v) ? NumberText.Fixed(v, 2) : "-";
 }

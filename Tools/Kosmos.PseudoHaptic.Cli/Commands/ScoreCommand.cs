@@ -1,4 +1,5 @@
 using System.Globalization;
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
 namespace Kosmos.PseudoHaptic.Cli;
@@ -20,16 +21,20 @@ public static class ScoreCommand
         var o = new Options(args, "--responses", "--out", "--questionnaires");
         string responsesPath = o.Require("--responses");
         string output = o.Require("--out");
+        var target = OutputFile.Check("--out", output, new NamedPath("--responses", responsesPath));
         var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
 
-        var responses = ResponsesCsv.Parse(EvaluationInputs.ReadText(responsesPath), responsesPath, catalog);
+        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog);
         var scores = ScoreCalculator.ScoreAll(responses);
-        EvaluationInputs.WriteText(output, ScoresCsv.Format(scores));
+        target.Write(w => w.Write(ScoresCsv.Format(scores)));
 
         int incomplete = scores.Count(s => !s.IsComplete);
-        Console.Out.WriteLine($"{output}: {scores.Count} scores of {responses.Participants.Count} participants from {responses.Count} answers, {incomplete} incomplete");
+        // With --out - the scores go to standard output, so the summary goes to standard error.
+        var summary = target.IsStandardOutput ? Console.Error : Console.Out;
+        output = Messages.OneLine(output);
+        summary.WriteLine($"{output}: {scores.Count} scores of {responses.Participants.Count} participants from {responses.Count} answers, {incomplete} incomplete");
         foreach (var s in scores.Where(s => !s.IsComplete))
-            Console.Out.WriteLine($"  {s.Participant} {s.QuestionnaireId}: incomplete, unanswered items {string.Join(", ", s.MissingItems.Select(i => i.ToString(CultureInfo.InvariantCulture)))}");
+            summary.WriteLine($"  {Messages.OneLine(s.Participant)} {s.QuestionnaireId}: incomplete, unanswered items {string.Join(", ", s.MissingItems.Select(i => i.ToString(CultureInfo.InvariantCulture)))}");
         return 0;
     });
 }

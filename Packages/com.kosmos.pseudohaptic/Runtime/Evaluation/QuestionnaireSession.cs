@@ -261,7 +261,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
             foreach (var row in table.Rows)
             {
-                rows.Add(lines[row.Line - 1].TrimEnd('\r'));
+                // A quoted field may hold a line break: the row is kept verbatim over all its lines.
+                var verbatim = new StringBuilder(lines[row.Line - 1].TrimEnd('\r'));
+                for (int l = row.Line; l < row.EndLine && l < lines.Length; l++) verbatim.Append('\n').Append(lines[l].TrimEnd('\r'));
+                rows.Add(verbatim.ToString());
                 if (row[0] != Participant) continue;
                 int p = Array.IndexOf(parts, Catalog.Find(row[1]));
                 if (p < 0) continue;

@@ -20,10 +20,17 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Reads every answer of <paramref name="text"/> into a set checked against <paramref name="catalog"/>.</summary>
         public static ResponseSet Parse(string text, string sourceName, QuestionnaireCatalog catalog)
         {
+            if (text == null) throw new ArgumentNullException(nameof(text));
+            return Parse(new StringReader(text), sourceName, catalog);
+        }
+
+        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it.</summary>
+        public static ResponseSet Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog)
+        {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
-            var table = CsvTable.Parse(text, sourceName, Columns);
+            var rows = CsvTable.Stream(reader, sourceName, Columns);
             var set = new ResponseSet(catalog);
-            foreach (var row in table.Rows)
+            foreach (var row in rows)
             {
                 string participant = row[0], questionnaireId = row[1], itemText = row[2], responseText = row[3];
                 int item;
@@ -42,7 +49,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         public static ResponseSet Load(string path, QuestionnaireCatalog catalog)
-            => Parse(File.ReadAllText(path, Encoding.UTF8), path, catalog);
+            => Parse(new StreamReader(path, Encoding.UTF8), path, catalog);
 
         /// <summary>One row, as a panel appends it (no trailing newline).</summary>
         public static string FormatRow(Response response)

@@ -38,11 +38,18 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Reads the scores, in file order, checked against <paramref name="catalog"/>.</summary>
         public static IReadOnlyList<ParticipantScore> Parse(string text, string sourceName, QuestionnaireCatalog catalog)
         {
+            if (text == null) throw new ArgumentNullException(nameof(text));
+            return Parse(new StringReader(text), sourceName, catalog);
+        }
+
+        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it.</summary>
+        public static IReadOnlyList<ParticipantScore> Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog)
+        {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
-            var table = CsvTable.Parse(text, sourceName, Columns);
-            var scores = new List<ParticipantScore>(table.Rows.Count);
+            var rows = CsvTable.Stream(reader, sourceName, Columns);
+            var scores = new List<ParticipantScore>();
             var seen = new Dictionary<string, int>(StringComparer.Ordinal);
-            foreach (var row in table.Rows)
+            foreach (var row in rows)
             {
                 string participant = row[0], questionnaireId = row[1], scoreText = row[2];
                 if (participant.Length == 0) throw Fail(sourceName, row, "participant is empty");
@@ -74,7 +81,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         public static IReadOnlyList<ParticipantScore> Load(string path, QuestionnaireCatalog catalog)
-            => Parse(File.ReadAllText(path, Encoding.UTF8), path, catalog);
+            => Parse(new StreamReader(path, Encoding.UTF8), path, catalog);
 
         static EvaluationFormatException Fail(string sourceName, CsvTable.Row row, string reason)
             => new EvaluationFormatException(sourceName, row.Line, reason);

@@ -1,0 +1,50 @@
+using Kosmos.PseudoHaptic.Cli.Files;
+using Kosmos.PseudoHaptic.Simulation;
+
+namespace Kosmos.PseudoHaptic.Cli.Traces;
+
+/// <summary>
+/// A trace's usable poses (tracked, finite hand_y and time) as a true hand for <c>demo</c> and <c>accuracy</c>,
+/// read in bounded memory whatever the file: rows are streamed and only usable ones are kept (nothing is
+/// buffered before the first usable pose); a row whose time does not advance is skipped; a row less than
+/// <see cref="MinStep"/> after the last kept one is skipped too (the trace is taken at most one sample per
+/// millisecond); a usable row more than <see cref="MaxSpan"/> after the first usable one is refused with a
+/// message naming its line (a glitched time stamp, or times written in milliseconds).
+/// </summary>
+public static class TraceSamples
+{
+    /// <summary>Longest span of usable rows accepted, s (10 minutes).</summary>
+    public const double MaxSpan = 600;
+
+    /// <summary>Shortest step between samples kept, s (1 ms): at most 600,001 samples.</summary>
+    public const double MinStep = 0.001;
+
+    /// <param name="usePoseTime">Take a row's pose_t, when finite, as its time (accuracy); otherwise its frame time t (demo).</param>
+    public static (List<double> Times, List<double> Heights) Read(string option, string path, string command, bool usePoseTime)
+    {
+        using var file = TraceCsvReader.OpenText(path, option);
+        using var reader = new TraceCsvReader(file, path);
+        var times = new List<double>();
+        var heights = new List<double>();
+        int firstLine = 0;
+        while (reader.TryRead(out var f))
+        {
+            if (!f.IsUsable) continue;
+            double t = usePoseTime && double.IsFinite(f.PoseTime) ? f.PoseTime : f.Time;
+            if (!double.IsFinite(t)) continue;
+            if (times.Count == 0)
+            {
+                firstLine = reader.Line;
+                times.Add(t);
+                heights.Add(f.HandY);
+                continue;
+            }
+            if (t - times[0] > MaxSpan)
+                throw new CliException($"{Messages.OneLine(path)}:{reader.Line}: t = {NumberText.Format(t)} s lies {NumberText.Format(t - times[0])} s after the first usable row (line {firstLine}); {command} takes traces of at most {MaxSpan:0} s (a glitched time, or times in milliseconds?)");
+            if (!(t >= times[^1] + MinStep)) continue;
+            times.Add(t);
+            heights.Add(f.HandY);
+        }
+        return (times, heights);
+    }
+}
