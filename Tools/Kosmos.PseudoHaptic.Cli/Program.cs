@@ -14,7 +14,7 @@ namespace Kosmos.PseudoHaptic.Cli
             pseudohaptic — pseudo-haptic weight (Son et al., Electronics 2022) without a headset
 
               demo   [--out DIR] [--trace FILE]      simulate the paper's scenes, write CSV + PNG, print a summary
-              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain]
+              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--break-away D]
               score  --responses R.csv --out S.csv [--questionnaires DIR]
                                                      score questionnaire responses
               report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]

@@ -20,7 +20,7 @@ namespace Kosmos.PseudoHaptic
 
         public BreakAway(double distance, double dwell = 0.1)
         {
-            Distance = ConfigurationGuard.InRange(distance, 1e-4, 1e4, nameof(distance));
+            Distance = ConfigurationGuard.Positive(distance, nameof(distance));
             Dwell = ConfigurationGuard.InRange(dwell, 0, 5, nameof(dwell));
         }
 
