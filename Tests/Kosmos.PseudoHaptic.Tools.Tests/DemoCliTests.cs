@@ -30,16 +30,31 @@ public class DemoCliTests
             Assert.That(stderr, Does.Contain("[1/").And.Contain("v_std ="), "progress and calibration");
             Assert.That(stdout, Does.Contain("box B").And.Contain("bottle 2 L").And.Contain("max offset"));
             foreach (var png in new[] { "experiment-1-boxes.png", "experiment-2-bottles.png", "offset-correction.png" })
-            {
-                var bytes = File.ReadAllBytes(Path.Combine(dir, png));
-                Assert.That(bytes.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), png);
-            }
+                ChartFiles.AssertPng(Path.Combine(dir, png), 1000, 560);
+            Assert.That(Directory.GetFiles(dir, "*.svg"), Is.Empty, "no SVG unless --svg");
             // Experiment 1: same size, B densest, so B lags most; the golf ball stays with the hand.
             double Peak(string file) => File.ReadLines(Path.Combine(dir, "experiment-1-boxes", file)).Skip(1)
                 .Max(l => double.Parse(l.Split(',')[2], CultureInfo.InvariantCulture));
             Assert.That(Peak("box-b.csv"), Is.LessThan(Peak("box-c.csv")));
             Assert.That(Peak("box-c.csv"), Is.LessThan(Peak("box-a.csv")));
             Assert.That(Peak("box-a.csv"), Is.LessThan(Peak("golf-ball.csv")));
+        }
+        finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
+    }
+
+    [Test]
+    public void SvgWritesAnSvgBesideEachPng()
+    {
+        string dir = TempDir();
+        try
+        {
+            var (code, _, stderr) = Demo("--svg", "--out", dir);
+            Assert.That(code, Is.EqualTo(0), stderr);
+            foreach (var scene in new[] { "experiment-1-boxes", "experiment-2-bottles", "offset-correction" })
+            {
+                ChartFiles.AssertPng(Path.Combine(dir, scene + ".png"), 1000, 560);
+                ChartFiles.AssertSvg(Path.Combine(dir, scene + ".svg"), 1000, 560);
+            }
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
     }
@@ -55,7 +70,7 @@ public class DemoCliTests
             var (code, stdout, stderr) = Demo("--out", dir, "--trace", Path.Combine(RepositoryRoot.Shared, "data", "mocap-hand-100hz.csv"));
             Assert.That(code, Is.EqualTo(0), stderr);
             Assert.That(stdout, Does.Contain("recorded-hand"));
-            Assert.That(File.Exists(Path.Combine(dir, "recorded-hand.png")), Is.True);
+            ChartFiles.AssertPng(Path.Combine(dir, "recorded-hand.png"), 1000, 560);
             Assert.That(File.ReadLines(Path.Combine(dir, "recorded-hand", "box-b.csv")).Count(), Is.GreaterThan(60 * 90));
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }

@@ -1,18 +1,22 @@
 using Kosmos.PseudoHaptic.Cli.Accuracy;
+<<<<<<< HEAD
 using Kosmos.PseudoHaptic.Cli.Files;
+=======
+using Kosmos.PseudoHaptic.Cli.Plotting;
+>>>>>>> i13
 
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
 /// <c>pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none]
-/// [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png]</c>: what each estimator,
+/// [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png [--svg]]</c>: what each estimator,
 /// precision and integration scheme costs in accuracy on Quest-like input. Prints the tables on stdout
 /// (progress on stderr). Deterministic: the same arguments print the same tables. accuracy-vs-time.md says
 /// what every column means.
 /// </summary>
 public static class AccuracyCommand
 {
-    public const string Usage = "pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png]";
+    public const string Usage = "pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png [--svg]]";
 
     public const string MocapRelative = "../shared/data/mocap-hand-100hz.csv";
     public const double DefaultMassKg = 1.0;
@@ -20,7 +24,7 @@ public static class AccuracyCommand
 
     public static int Run(string[] args)
     {
-        var o = new Options(args, "--trace", "--lifts", "--mass-kg", "--standard-speed", "--mocap", "--long-minutes", "--csv", "--costs", "--chart");
+        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--trace", "--lifts", "--mass-kg", "--standard-speed", "--mocap", "--long-minutes", "--csv", "--costs", "--chart");
         double mass = o.Number("--mass-kg") ?? DefaultMassKg;
         if (!(mass > 0) || double.IsInfinity(mass))
             throw new CliException($"option --mass-kg: must be a finite number greater than 0, got {NumberText.Format(mass)}");
@@ -32,6 +36,7 @@ public static class AccuracyCommand
             throw new CliException($"option --long-minutes: must lie in [0, 1440], got {NumberText.Format(minutes)}");
         string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
         if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
+<<<<<<< HEAD
         // Outputs are checked before anything is read: never an input, never a folder, never a missing folder.
         string? trace = o.Get("--trace"), mocapOption = o.Get("--mocap"), csv = o.Get("--csv");
         var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapOption == "none" ? null : mocapOption), new NamedPath("--costs", costsPath) };
@@ -42,6 +47,9 @@ public static class AccuracyCommand
         if (csvOut != null && chartOut != null && Path.GetFullPath(csv!) == Path.GetFullPath(chartPath!))
             throw new CliException($"--chart {Messages.Path(chartPath!)} is the same file as --csv {Messages.Path(csv!)}");
         if (trace != null) InputFile.Check("--trace", trace);
+=======
+        if (svg && chartPath == null) throw new CliException($"option {Charts.SvgFlag} needs --chart (the SVG is written beside the PNG)");
+>>>>>>> i13
         var costs = costsPath != null ? BenchmarkCosts.Read(costsPath) : null;
 
         var notes = new List<string>();
@@ -72,8 +80,13 @@ public static class AccuracyCommand
         csvOut?.Write(w => AccuracyTable.WriteCsv(w, report));
         if (chartOut != null && costs != null)
         {
+<<<<<<< HEAD
             chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs));
             Console.Error.WriteLine($"accuracy: chart written to {Messages.Path(chartPath!)}");
+=======
+            ParetoChart.Save(chartPath, report, costs, svg);
+            Console.Error.WriteLine($"accuracy: chart written to {chartPath}");
+>>>>>>> i13
         }
         return 0;
     }

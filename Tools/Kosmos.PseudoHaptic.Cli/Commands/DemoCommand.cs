@@ -6,11 +6,11 @@ using Kosmos.PseudoHaptic.Simulation;
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
-/// <c>pseudohaptic demo [--out DIR] [--trace FILE]</c>: the paper's scenes without a headset. Calibrates a
+/// <c>pseudohaptic demo [--out DIR] [--trace FILE] [--svg]</c>: the paper's scenes without a headset. Calibrates a
 /// standard speed from synthetic golf-ball lifts, then lifts Experiment 1's boxes and Experiment 2's water
 /// bottles with a simulated Quest 2 hand (30 Hz poses, 45 ms late, 1 mm jitter, 90 Hz frames); with
-/// --trace, also replays a recorded hand degraded the same way. Writes a CSV per run and a PNG per scene,
-/// and prints a summary.
+/// --trace, also replays a recorded hand degraded the same way. Writes a CSV per run and a PNG per scene
+/// (with --svg, an SVG beside it), and prints a summary.
 /// </summary>
 public static class DemoCommand
 {
@@ -22,9 +22,14 @@ public static class DemoCommand
 
     public static int Run(string[] args)
     {
+<<<<<<< HEAD
         var o = new Options(args, "--out", "--trace");
         string? given = o.Get("--out");
         string outDir = given ?? DefaultOut;
+=======
+        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--out", "--trace");
+        string outDir = o.Get("--out") ?? DefaultOut;
+>>>>>>> i13
         string? tracePath = o.Get("--trace");
         // The folder is checked, and the trace read, before anything is created; the folder then appears whole.
         (List<double> Times, List<double> Heights)? recorded = tracePath != null
@@ -57,7 +62,13 @@ public static class DemoCommand
                 Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults);
                 results.AddRange(sceneResults);
             }
+<<<<<<< HEAD
         });
+=======
+            Plot(Path.Combine(outDir, scene.Slug + ".png"), scene, sceneResults, svg);
+            results.AddRange(sceneResults);
+        }
+>>>>>>> i13
         PrintSummary(results, standardSpeed, outDir);
         return 0;
     }
@@ -150,14 +161,14 @@ public static class DemoCommand
             w.WriteLine($"{NumberText.Format(frames[i].Time)},{NumberText.Format(frames[i].HandY)},{NumberText.Format(y[i])},{NumberText.Format(frames[i].HandY - y[i])}");
     }
 
-    static void Plot(string path, Scene scene, List<Result> results)
+    static void Plot(string path, Scene scene, List<Result> results, bool svg)
     {
-        var chart = new LineChart(1000, 560) { Title = scene.Title, XLabel = "time (s)", YLabel = "height (m)" };
+        var plot = Charts.Create(scene.Title, "time (s)", "height (m)");
         var t = scene.Frames.Select(f => f.Time).ToArray();
-        chart.AddLine(t, scene.Frames.Select(f => f.HandY).ToArray(), Rgb.Black, "hand (30 Hz poses)", dashed: true);
+        Charts.Line(plot, t, scene.Frames.Select(f => f.HandY).ToArray(), "hand (30 Hz poses)", Charts.Black, dashed: true);
         for (int i = 0; i < results.Count; i++)
-            chart.AddLine(t, results[i].ObjectY, Palette.Get(i), $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg");
-        chart.Save(path);
+            Charts.Line(plot, t, results[i].ObjectY, $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg", Charts.Colour(i));
+        Charts.Save(plot, path, 1000, 560, svg);
     }
 
     static void PrintSummary(List<Result> results, double standardSpeed, string outDir)

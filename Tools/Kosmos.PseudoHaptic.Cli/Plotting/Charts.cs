@@ -1,0 +1,315 @@
+using ScottPlot;
+
+namespace Kosmos.PseudoHaptic.Cli.Plotting;
+
+/// <summary>
+/// The one place that knows the project's chart style. Every chart the tools write is a ScottPlot
+/// <see cref="Plot"/> made by <see cref="Create"/> and written by <see cref="Save"/>: white background, light
+/// grid, the "tab10" colours in order (<see cref="Colour"/>), a title, axis labels with their units, a legend
+/// inside the plot.
+/// </summary>
+/// <example><code>
+/// Plot plot = Charts.Create("Drop", "time (s)", "height (m)");
+/// Charts.Line(plot, ts, hs, "solver", Charts.Colour(0));
+/// Charts.Save(plot, "drop.png", 1000, 560, svg: false);
+/// </code></example>
+public static class Charts
+{
+    /// <summary>Largest width or height accepted by <see cref="Save"/> (pixels).</summary>
+    public const int MaxSide = 8000;
+
+    private const float TitleSize = 22;
+    private const float LabelSize = 18;
+    private const float TickSize = 15;
+    private const float LegendSize = 15;
+    private const float LineWidth = 2;
+    private const float MarkerSize = 8;
+
+    private static readonly Color TextColour = Color.FromHex("#202020");
+    private static readonly Color AxisColour = Color.FromHex("#404040");
+    private static readonly Color GridColour = Color.FromHex("#DCDCDC");
+
+    private static readonly Color[] Tab10 =
+    {
+        Color.FromHex("#1f77b4"), // blue
+        Color.FromHex("#ff7f0e"), // orange
+        Color.FromHex("#2ca02c"), // green
+        Color.FromHex("#d62728"), // red
+        Color.FromHex("#9467bd"), // purple
+        Color.FromHex("#8c564b"), // brown
+        Color.FromHex("#e377c2"), // pink
+        Color.FromHex("#7f7f7f"), // grey
+        Color.FromHex("#bcbd22"), // olive
+        Color.FromHex("#17becf"), // cyan
+    };
+
+    /// <summary>
+    /// The sans-serif font of every chart. SkiaSharp's Linux assets here come without fontconfig, so a family
+    /// name alone falls back to whatever typeface comes first (a serif one on Debian); the usual sans-serif
+    /// files are therefore registered by path when present. Elsewhere (Windows, macOS) the system finds it.
+    /// </summary>
+    private static readonly Lazy<string> FontName = new(() =>
+    {
+        const string name = "PseudoHaptic Sans";
+        string[] folders = { "/usr/share/fonts/truetype/dejavu", "/usr/share/fonts/dejavu", "/usr/share/fonts/TTF", "/usr/share/fonts/truetype/liberation" };
+        (string Regular, string Bold)[] files = { ("DejaVuSans.ttf", "DejaVuSans-Bold.ttf"), ("LiberationSans-Regular.ttf", "LiberationSans-Bold.ttf") };
+        foreach (string folder in folders)
+        {
+            foreach (var (regular, bold) in files)
+            {
+                string r = Path.Combine(folder, regular), b = Path.Combine(folder, bold);
+                if (!File.Exists(r)) continue;
+                Fonts.AddFontFile(name, File.Exists(b) ? b : r, bold: true, italic: false);
+                Fonts.AddFontFile(name, r, bold: false, italic: false);
+                return name;
+            }
+        }
+
+        return Fonts.Sans;
+    });
+
+    /// <summary>Black, for a reference series (the hand, a mean).</summary>
+    public static Color Black => Colors.Black;
+
+    /// <summary>Number of distinct series colours before <see cref="Colour"/> repeats.</summary>
+    public static int ColourCount => Tab10.Length;
+
+    /// <summary>The i-th series colour ("tab10"); wraps around, any int is valid.</summary>
+    public static Color Colour(int i) => Tab10[((i % Tab10.Length) + Tab10.Length) % Tab10.Length];
+
+    /// <summary>A new plot in the project's style with its title and axis labels (give the units in the labels).</summary>
+    public static Plot Create(string title, string xLabel, string yLabel)
+    {
+        var plot = new Plot();
+        plot.FigureBackground.Color = Colors.White;
+        plot.DataBackground.Color = Colors.White;
+        plot.Add.Palette = new ScottPlot.Palettes.Category10();
+        plot.Font.Set(FontName.Value);
+
+        plot.Title(title ?? "", TitleSize);
+        plot.Axes.Title.Label.ForeColor = TextColour;
+        plot.Axes.Title.Label.Bold = true;
+        plot.XLabel(xLabel ?? "", LabelSize);
+        plot.YLabel(yLabel ?? "", LabelSize);
+        foreach (IAxis axis in new IAxis[] { plot.Axes.Bottom, plot.Axes.Left })
+        {
+            // Ticks about 90 px apart, every label with the same number of decimals (0.80, 0.85, ... not 0.8, 0.85).
+            axis.TickGenerator = new ScottPlot.TickGenerators.NumericAutomatic { MinimumTickSpacing = 40, TickDensity = axis == plot.Axes.Bottom ? 0.5 : 0.6 };
+            axis.Label.ForeColor = TextColour;
+            axis.Label.Bold = false;
+            axis.TickLabelStyle.FontSize = TickSize;
+            axis.TickLabelStyle.ForeColor = TextColour;
+            axis.MajorTickStyle.Color = AxisColour;
+            axis.MinorTickStyle.Color = AxisColour;
+            axis.FrameLineStyle.Color = AxisColour;
+        }
+
+        plot.Grid.MajorLineColor = GridColour;
+        plot.Grid.MinorLineColor = Colors.Transparent;
+
+        plot.Legend.FontSize = LegendSize;
+        plot.Legend.FontColor = TextColour;
+        plot.Legend.OutlineColor = Color.FromHex("#B4B4B4");
+        plot.Legend.BackgroundColor = Colors.White.WithAlpha(0.9);
+        plot.Legend.ShadowColor = Colors.Transparent;
+        plot.Legend.SymbolWidth = 32;
+        plot.Legend.Alignment = Alignment.UpperLeft;
+        plot.Axes.Margins(horizontal: 0.01, vertical: 0.05);
+        plot.Legend.IsVisible = true;
+        return plot;
+    }
+
+    /// <summary>A line through (xs[i], ys[i]) in order; a non-finite point breaks the line.</summary>
+    public static void Line(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour, bool dashed = false)
+    {
+        CheckLengths(xs, ys);
+        // ScottPlot joins across NaN; split the series at every non-finite point instead, one legend entry.
+        bool labelled = false;
+        int start = 0;
+        for (int i = 0; i <= xs.Count; i++)
+        {
+            if (i < xs.Count && double.IsFinite(xs[i]) && double.IsFinite(ys[i])) continue;
+            if (i > start)
+            {
+                var scatter = plot.Add.ScatterLine(Slice(xs, start, i), Slice(ys, start, i), colour);
+                scatter.LineWidth = LineWidth;
+                if (dashed) scatter.LinePattern = LinePattern.Dashed;
+                if (!labelled) scatter.LegendText = label;
+                labelled = true;
+            }
+
+            start = i + 1;
+        }
+    }
+
+    /// <summary>Markers at (xs[i], ys[i]); non-finite points are left out.</summary>
+    public static ScottPlot.Plottables.Scatter Points(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour)
+    {
+        CheckLengths(xs, ys);
+        var fx = new List<double>();
+        var fy = new List<double>();
+        for (int i = 0; i < xs.Count; i++)
+        {
+            if (!double.IsFinite(xs[i]) || !double.IsFinite(ys[i])) continue;
+            fx.Add(xs[i]);
+            fy.Add(ys[i]);
+        }
+
+        var scatter = plot.Add.ScatterPoints(fx.ToArray(), fy.ToArray(), colour);
+        scatter.MarkerSize = MarkerSize;
+        scatter.LegendText = label;
+        return scatter;
+    }
+
+    /// <summary>Font size of a <see cref="Note"/> (pixels).</summary>
+    public const float NoteSize = 12;
+
+    /// <summary>Height of a <see cref="Note"/>'s box (pixels), for placing notes apart.</summary>
+    public const double NoteHeight = NoteSize + 4;
+
+    /// <summary>Width of a <see cref="Note"/>'s box (pixels), for placing notes apart.</summary>
+    public static double NoteWidth(string text)
+    {
+        var style = new LabelStyle { FontSize = NoteSize, FontName = FontName.Value, Text = text ?? "" };
+        using var paint = Paint.NewDisposablePaint();
+        return style.Measure(text ?? "", paint).Width;
+    }
+
+    /// <summary>A small text whose top-left corner is at data point (x, y): a point's name.</summary>
+    public static void Note(Plot plot, double x, double y, string text)
+    {
+        if (!double.IsFinite(x) || !double.IsFinite(y) || string.IsNullOrEmpty(text)) return;
+        var note = plot.Add.Text(text, x, y);
+        note.LabelFontSize = NoteSize;
+        note.LabelFontName = FontName.Value;
+        note.LabelFontColor = TextColour;
+        note.LabelAlignment = Alignment.UpperLeft;
+    }
+
+    /// <summary>
+    /// Ticks for a base-10 logarithmic axis whose data are plotted as log10(value) between log10(min) and
+    /// log10(max): labelled at 1, 2 and 5 of each decade (in the values' own units), minor lines between.
+    /// </summary>
+    public static ITickGenerator LogTicks(double min, double max)
+    {
+        var ticks = new ScottPlot.TickGenerators.NumericManual();
+        for (int decade = (int)Math.Floor(Math.Log10(min)); decade <= (int)Math.Ceiling(Math.Log10(max)); decade++)
+        {
+            for (int m = 1; m <= 9; m++)
+            {
+                double value = m * Math.Pow(10, decade);
+                if (value < min * (1 - 1e-9) || value > max * (1 + 1e-9)) continue;
+                if (m == 1 || m == 2 || m == 5) ticks.AddMajor(Math.Log10(value), value.ToString("G6", System.Globalization.CultureInfo.InvariantCulture));
+                else ticks.AddMinor(Math.Log10(value));
+            }
+        }
+
+        return ticks;
+    }
+
+    /// <summary>
+    /// Writes the plot as a PNG of exactly <paramref name="width"/> x <paramref name="height"/> pixels at
+    /// <paramref name="pngPath"/>, and when <paramref name="svg"/> also an SVG of the same size beside it (same
+    /// name, extension <c>.svg</c>). Each file is written to a temporary file in its folder and then renamed, so a
+    /// failure leaves no half-written chart. The folder is created if missing.
+    /// </summary>
+    public static void Save(Plot plot, string pngPath, int width, int height, bool svg)
+    {
+        ArgumentNullException.ThrowIfNull(plot);
+        ArgumentException.ThrowIfNullOrEmpty(pngPath);
+        byte[] png = Png(plot, width, height);
+        string? svgText = svg ? Svg(plot, width, height) : null;
+
+        string? directory = Path.GetDirectoryName(Path.GetFullPath(pngPath));
+        if (!string.IsNullOrEmpty(directory)) Directory.CreateDirectory(directory);
+        Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(pngPath, temp => File.WriteAllBytes(temp, png));
+        if (svgText != null) Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteAllText(Path.ChangeExtension(pngPath, ".svg"), svgText);
+    }
+
+    /// <summary>The command-line flag that asks for an SVG beside each PNG chart.</summary>
+    public const string SvgFlag = "--svg";
+
+    /// <summary>
+    /// A command's arguments without the flag <c>--svg</c> (which takes no value), for <see cref="Options"/>;
+    /// <paramref name="svg"/> tells whether it was given. Only option names are looked at, not their values
+    /// ("--out --svg" keeps "--svg" as the folder name). Given twice, it is an error naming it.
+    /// </summary>
+    public static string[] TakeSvgFlag(string[] args, out bool svg)
+    {
+        ArgumentNullException.ThrowIfNull(args);
+        svg = false;
+        var rest = new List<string>(args.Length);
+        for (int i = 0; i < args.Length; i++)
+        {
+            if (args[i] == SvgFlag)
+            {
+                if (svg) throw new CliException($"option {SvgFlag} is given twice");
+                svg = true;
+                continue;
+            }
+
+            rest.Add(args[i]);
+            if (args[i].StartsWith("--", StringComparison.Ordinal) && i + 1 < args.Length) rest.Add(args[++i]);
+        }
+
+        return rest.ToArray();
+    }
+
+    /// <summary>The plot as PNG bytes of exactly <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
+    public static byte[] Png(Plot plot, int width, int height)
+    {
+        Prepare(plot, width, height);
+        return plot.GetImageBytes(width, height, ImageFormat.Png);
+    }
+
+    /// <summary>The plot as an SVG document of <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
+    public static string Svg(Plot plot, int width, int height)
+    {
+        Prepare(plot, width, height);
+        return plot.GetSvgXml(width, height);
+    }
+
+    private static void Prepare(Plot plot, int width, int height)
+    {
+        ArgumentNullException.ThrowIfNull(plot);
+        if (width <= 0 || width > MaxSide) throw new ArgumentOutOfRangeException(nameof(width), width, $"Width must be 1..{MaxSide}.");
+        if (height <= 0 || height > MaxSide) throw new ArgumentOutOfRangeException(nameof(height), height, $"Height must be 1..{MaxSide}.");
+        // A legend only when a series has a name.
+        if (!plot.GetPlottables().Any(p => p.LegendItems.Any(item => !string.IsNullOrEmpty(item.LabelText)))) plot.HideLegend();
+
+        // Lay the plot out once to learn the tick steps, then label every tick of an axis with the decimals its
+        // step needs (0.80, 0.85, 0.90 rather than 0.8, 0.85, 0.9).
+        plot.RenderInMemory(width, height);
+        foreach (IAxis axis in new IAxis[] { plot.Axes.Bottom, plot.Axes.Left })
+        {
+            if (axis.TickGenerator is not ScottPlot.TickGenerators.NumericAutomatic numeric) continue;
+            double step = double.PositiveInfinity;
+            double previous = double.NaN;
+            foreach (Tick tick in numeric.Ticks.Where(t => t.IsMajor).OrderBy(t => t.Position))
+            {
+                if (double.IsFinite(previous) && tick.Position - previous > 0) step = Math.Min(step, tick.Position - previous);
+                previous = tick.Position;
+            }
+
+            if (!double.IsFinite(step)) continue;
+            int decimals = 0;
+            while (decimals < 10 && Math.Abs(step * Math.Pow(10, decimals) - Math.Round(step * Math.Pow(10, decimals))) > 1e-6 * step * Math.Pow(10, decimals)) decimals++;
+            string format = "F" + decimals.ToString(System.Globalization.CultureInfo.InvariantCulture);
+            numeric.LabelFormatter = value => value.ToString(format, System.Globalization.CultureInfo.InvariantCulture);
+        }
+    }
+
+    private static void CheckLengths(IReadOnlyList<double> xs, IReadOnlyList<double> ys)
+    {
+        ArgumentNullException.ThrowIfNull(xs);
+        ArgumentNullException.ThrowIfNull(ys);
+        if (xs.Count != ys.Count) throw new ArgumentException($"xs has {xs.Count} values but ys has {ys.Count}.", nameof(ys));
+    }
+
+    private static double[] Slice(IReadOnlyList<double> values, int from, int to)
+    {
+        var slice = new double[to - from];
+        for (int i = from; i < to; i++) slice[i - from] = values[i];
+        return slice;
+    }
+}
