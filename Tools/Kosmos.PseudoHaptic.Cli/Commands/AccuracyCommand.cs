@@ -1,9 +1,6 @@
 using Kosmos.PseudoHaptic.Cli.Accuracy;
-<<<<<<< HEAD
 using Kosmos.PseudoHaptic.Cli.Files;
-=======
 using Kosmos.PseudoHaptic.Cli.Plotting;
->>>>>>> i13
 
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
@@ -36,7 +33,7 @@ public static class AccuracyCommand
             throw new CliException($"option --long-minutes: must lie in [0, 1440], got {NumberText.Format(minutes)}");
         string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
         if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
-<<<<<<< HEAD
+        if (svg && chartPath == null) throw new CliException($"option {Charts.SvgFlag} needs --chart (the SVG is written beside the PNG)");
         // Outputs are checked before anything is read: never an input, never a folder, never a missing folder.
         string? trace = o.Get("--trace"), mocapOption = o.Get("--mocap"), csv = o.Get("--csv");
         var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapOption == "none" ? null : mocapOption), new NamedPath("--costs", costsPath) };
@@ -47,9 +44,6 @@ public static class AccuracyCommand
         if (csvOut != null && chartOut != null && Path.GetFullPath(csv!) == Path.GetFullPath(chartPath!))
             throw new CliException($"--chart {Messages.Path(chartPath!)} is the same file as --csv {Messages.Path(csv!)}");
         if (trace != null) InputFile.Check("--trace", trace);
-=======
-        if (svg && chartPath == null) throw new CliException($"option {Charts.SvgFlag} needs --chart (the SVG is written beside the PNG)");
->>>>>>> i13
         var costs = costsPath != null ? BenchmarkCosts.Read(costsPath) : null;
 
         var notes = new List<string>();
@@ -80,13 +74,10 @@ public static class AccuracyCommand
         csvOut?.Write(w => AccuracyTable.WriteCsv(w, report));
         if (chartOut != null && costs != null)
         {
-<<<<<<< HEAD
-            chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs));
+            // The PNG is written atomically; the SVG (--svg) is written beside the final path.
+            chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs, false));
+            if (svg) ParetoChart.Save(chartPath!, report, costs, true);
             Console.Error.WriteLine($"accuracy: chart written to {Messages.Path(chartPath!)}");
-=======
-            ParetoChart.Save(chartPath, report, costs, svg);
-            Console.Error.WriteLine($"accuracy: chart written to {chartPath}");
->>>>>>> i13
         }
         return 0;
     }

@@ -22,14 +22,9 @@ public static class DemoCommand
 
     public static int Run(string[] args)
     {
-<<<<<<< HEAD
-        var o = new Options(args, "--out", "--trace");
+        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--out", "--trace");
         string? given = o.Get("--out");
         string outDir = given ?? DefaultOut;
-=======
-        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--out", "--trace");
-        string outDir = o.Get("--out") ?? DefaultOut;
->>>>>>> i13
         string? tracePath = o.Get("--trace");
         // The folder is checked, and the trace read, before anything is created; the folder then appears whole.
         (List<double> Times, List<double> Heights)? recorded = tracePath != null
@@ -59,16 +54,10 @@ public static class DemoCommand
                     sceneResults.Add(result);
                     WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y);
                 }
-                Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults);
+                Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg);
                 results.AddRange(sceneResults);
             }
-<<<<<<< HEAD
         });
-=======
-            Plot(Path.Combine(outDir, scene.Slug + ".png"), scene, sceneResults, svg);
-            results.AddRange(sceneResults);
-        }
->>>>>>> i13
         PrintSummary(results, standardSpeed, outDir);
         return 0;
     }
