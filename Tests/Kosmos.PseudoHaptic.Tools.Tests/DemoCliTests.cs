@@ -38,6 +38,22 @@ public class DemoCliTests
             Assert.That(Peak("box-b.csv"), Is.LessThan(Peak("box-c.csv")));
             Assert.That(Peak("box-c.csv"), Is.LessThan(Peak("box-a.csv")));
             Assert.That(Peak("box-a.csv"), Is.LessThan(Peak("golf-ball.csv")));
+
+            // Issue 10's scene: x and y over time for several masses; heavier trails the sideways carry more.
+            ChartFiles.AssertPng(Path.Combine(dir, "xyz-carry-lift.png"), 1000, 560);
+            Assert.That(stdout, Does.Contain("xyz-carry-lift").And.Contain("max x lag"));
+            double Lag(string file)
+            {
+                var lines = File.ReadAllLines(Path.Combine(dir, "xyz-carry-lift", file));
+                Assert.That(lines[0], Is.EqualTo("t,hand_x,hand_y,hand_z,hand2_x,hand2_y,hand2_z,object_x,object_y,object_z,hands"));
+                var rows = lines.Skip(1).Select(l => l.Split(',').Select(v => double.Parse(v, CultureInfo.InvariantCulture)).ToArray()).ToList();
+                Assert.That(rows.Select(r => r[10]).Distinct(), Is.EquivalentTo(new[] { 1.0, 2.0 }), "one hand, then two");
+                return rows.Where(r => r[0] < 3).Max(r => (r[1] - rows[0][1]) - (r[7] - rows[0][7]));
+            }
+            Assert.That(Lag("box-0_1-kg.csv"), Is.LessThan(Lag("box-0_5-kg.csv")));
+            Assert.That(Lag("box-0_5-kg.csv"), Is.LessThan(Lag("box-2-kg.csv")));
+            Assert.That(Lag("box-2-kg.csv"), Is.LessThan(Lag("box-5-kg.csv")));
+            Assert.That(Lag("box-5-kg.csv"), Is.LessThanOrEqualTo(0.10 + 1e-9));
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
     }
@@ -50,7 +66,7 @@ public class DemoCliTests
         {
             var (code, _, stderr) = Demo("--svg", "--out", dir);
             Assert.That(code, Is.EqualTo(0), stderr);
-            foreach (var scene in new[] { "experiment-1-boxes", "experiment-2-bottles", "offset-correction" })
+            foreach (var scene in new[] { "experiment-1-boxes", "experiment-2-bottles", "offset-correction", "xyz-carry-lift" })
             {
                 ChartFiles.AssertPng(Path.Combine(dir, scene + ".png"), 1000, 560);
                 ChartFiles.AssertSvg(Path.Combine(dir, scene + ".svg"), 1000, 560);
