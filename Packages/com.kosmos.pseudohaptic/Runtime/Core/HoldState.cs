@@ -8,10 +8,19 @@ namespace Kosmos.PseudoHaptic
     {
         public bool IsHolding;
 
-        /// <summary>The object's height, m.</summary>
+        /// <summary>The object's height (its pivot), m: <see cref="HeldY"/> − <see cref="GrabOffset"/>.</summary>
         public double ObjectY;
 
-        /// <summary>The object's height when the hold began, m (<see cref="HeightDeceleration"/> measures from it).</summary>
+        /// <summary>hand − object when the hold began, m (0 when the hand was not tracked then). Every effect acts on
+        /// the offset relative to this one: a hold that starts with hand and object apart behaves exactly as one that
+        /// starts together, shifted.</summary>
+        public double GrabOffset;
+
+        /// <summary>The object's height plus <see cref="GrabOffset"/>, m: where it would be had it been grabbed with
+        /// hand and object together. The solver and its effects move this; <see cref="ObjectY"/> follows it.</summary>
+        public double HeldY;
+
+        /// <summary><see cref="HeldY"/> when the hold began, m (<see cref="HeightDeceleration"/> measures from it).</summary>
         public double StartY;
 
         /// <summary>Frame time since the hold began, s (double: it never loses the millisecond in hours).</summary>
@@ -35,7 +44,20 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
 
+        /// <summary><see cref="TrackingLossHold"/>: how long the current loss has lasted, s (0 while tracked).</summary>
+        public double LostFor;
+
+        /// <summary><see cref="SpeedCap"/>: motion the cap has deferred, m, and the allowance it has saved, m.</summary>
+        public double CapDeferred;
+        public double CapBudget;
+
+        /// <summary><see cref="FasterMovesFurther"/>: the hand height its speed judgement follows, m.</summary>
+        public double PaceReference;
+
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => HandY - ObjectY;
+
+        /// <summary>hand − object less the grab offset, m: the offset the effects act on.</summary>
+        public double RelativeOffset => HandY - HeldY;
     }
 }

@@ -86,6 +86,9 @@ namespace Kosmos.PseudoHaptic
         public double LagX => _ex;
         public double LagZ => _ez;
 
+        /// <summary>Metres from the pivot down to the object's lowest point (the y solver's; the floor keeps the bottom above the support).</summary>
+        public double BottomBelowPivot { get => _y.BottomBelowPivot; set => _y.BottomBelowPivot = value; }
+
         /// <summary>Changes object, profile or user; allowed during a hold (the object continues from where it is).</summary>
         public void Configure(WeightModel model, WeightProfile profile, double standardSpeed)
         {

@@ -87,7 +87,6 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 double max = 0;
                 for (int i = 0; i < y.Length; i++) max = Math.Max(max, Math.Abs(s.Frames[i].HandY - y[i]));
                 Assert.That(max, Is.LessThan(0.25), s + ", " + s.MassKg.ToString("G3") + " kg, v_std " + s.StandardSpeed.ToString("G3"));
-                Assert.That(max, Is.LessThanOrEqualTo(0.22 + 1e-9), s + ": the correction's band ends at 0.22 m");
             }
         }
 
@@ -126,11 +125,9 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 s.StandardSpeed = 1.2; // faster than any mean speed the generator draws
                 var solver = ScenarioGenerator.Solver(s);
                 var y = TraceReplay.Run(solver, s.Frames);
-                var deadband = solver.Profile.Find<MotionDeadband>();
-                double band = deadband != null ? deadband.WidthFor(s.StandardSpeed) : 0;
                 double max = 0;
                 for (int i = 0; i < y.Length; i++) max = Math.Max(max, Math.Abs(s.Frames[i].HandY - y[i]));
-                Assert.That(max, Is.LessThanOrEqualTo(band + 0.0005), s.ToString());
+                Assert.That(max, Is.LessThanOrEqualTo(0.005), s.ToString()); // P1's bound, not a constant of the solver
             }
         }
 

@@ -44,7 +44,8 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(dy, Is.GreaterThan(0.15), "it broke away beyond the distance, not before");
             int beyond = 0;
             while (f.A[beyond].Y - r.Y[beyond] - (f.A[0].Y - r.Y[0]) <= 0.15) beyond++;
-            Assert.That(f.T[ended] - f.T[beyond], Is.EqualTo(0.1).Within(1.01 / 90), "after the default dwell of 0.1 s beyond it");
+            // After the default dwell of 0.1 s beyond it (a frame where the object catches up restarts the dwell: at most one 30 Hz pose).
+            Assert.That(f.T[ended] - f.T[beyond], Is.InRange(0.1 - 1.01 / 90, 0.1 + 1 / 30.0 + 1.01 / 90));
         }
 
         [Test]
