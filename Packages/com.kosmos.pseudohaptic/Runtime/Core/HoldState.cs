@@ -47,12 +47,14 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="TrackingLossHold"/>: how long the current loss has lasted, s (0 while tracked).</summary>
         public double LostFor;
 
-        /// <summary><see cref="SpeedCap"/>: motion the cap has deferred, m, and the allowance it has saved, m.</summary>
+        /// <summary><see cref="SpeedCap"/>: motion the cap has deferred, m.</summary>
         public double CapDeferred;
-        public double CapBudget;
 
         /// <summary><see cref="FasterMovesFurther"/>: the hand height its speed judgement follows, m.</summary>
         public double PaceReference;
+
+        /// <summary><see cref="FasterMovesFurther"/>: the hand's smoothed speed, m/s.</summary>
+        public double Pace;
 
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => HandY - ObjectY;

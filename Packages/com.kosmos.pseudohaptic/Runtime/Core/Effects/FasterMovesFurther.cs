@@ -30,8 +30,12 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Half-width of the band that keeps jitter at rest from reading as speed, m.</summary>
         public double RestBand { get; }
 
-        public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005)
+        /// <summary>Time constant over which the hand's pace is smoothed, s.</summary>
+        public double SmoothingTime { get; }
+
+        public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005, double smoothingTime = 0.1)
         {
+            SmoothingTime = ConfigurationGuard.InRange(smoothingTime, 0, 1, nameof(smoothingTime));
             FastExponent = ConfigurationGuard.InRange(fastExponent, 0.01, 1, nameof(fastExponent));
             SlowExponent = ConfigurationGuard.InRange(slowExponent, 1, 10, nameof(slowExponent));
             RestBand = ConfigurationGuard.InRange(restBand, 0, 0.05, nameof(restBand));
@@ -56,14 +60,26 @@ namespace Kosmos.PseudoHaptic
             double h = frame.HandAfter, r = state.PaceReference, w = RestBand;
             double next = r < h - w ? h - w : (r > h + w ? h + w : r);
             state.PaceReference = next;
-            if (!(constants.Gain < 1) || frame.HandDelta == 0) return;
-            double interval = frame.MotionInterval > 0 ? frame.MotionInterval : frame.Dt;
-            double speed = interval > 0 ? (next - r) / interval : 0;
-            double exponent = ExponentAt(speed, constants.StandardSpeed);
+            if (!(constants.Gain < 1)) return;
+            // The hand's pace: the band-follower's speed over each new pose, smoothed over about SmoothingTime
+            // (exponentially, per pose, so every frame clock sees the same pace), so one pose's jitter barely moves
+            // the gain and lifts repeated for hours do not random-walk.
+            double interval = frame.MotionInterval;
+            if (interval > 0)
+            {
+                double a = interval / (SmoothingTime + interval);
+                state.Pace += a * ((next - r) / interval - state.Pace);
+            }
+            if (frame.HandDelta == 0) return;
+            double exponent = ExponentAt(state.Pace, constants.StandardSpeed);
             double g = constants.Gain > 0 ? Math.Exp(exponent * constants.LogGain) : 0;
             frame.ObjectDelta += (g - constants.Gain) * frame.HandDelta;
         }
 
-        protected internal override void Reset(ref HoldState state, double handY) => state.PaceReference = handY;
+        protected internal override void Reset(ref HoldState state, double handY)
+        {
+            state.PaceReference = handY;
+            state.Pace = 0;
+        }
     }
 }

@@ -18,7 +18,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Offsets up to this size, m, may grow while lowering (jitter at rest is not lowering).</summary>
         public double Slack { get; }
 
-        public LoweringGuard(double slack = 0.01)
+        public LoweringGuard(double slack = 0.005)
         {
             Slack = ConfigurationGuard.InRange(slack, 0, 0.1, nameof(slack));
         }
@@ -34,7 +34,7 @@ namespace Kosmos.PseudoHaptic
             if (total < lo) frame.TotalDelta = lo;
             else if (total > hi) frame.TotalDelta = hi;
             else return;
-            state.CapDeferred = 0; // what the speed cap still owes would push the object past the hand
+            SpeedCap.Settle(ref state, frame.TotalDelta - total);
         }
     }
 }

@@ -62,6 +62,7 @@ namespace Kosmos.PseudoHaptic
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
             double threshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            double start = frame.TotalDelta;
             // 1. Inside the band, against the deadbanded hand, by the implicit midpoint rule
             //    d = d0 + (1 − s((d0 + d)/2))·Δ: it is reversible, so jitter back and forth leaves the object where it
             //    was (a rule judged at one end would ratchet a still-held object toward the hand).
@@ -96,6 +97,7 @@ namespace Kosmos.PseudoHaptic
                 double pull = Math.Min(beyond, speed * dt);
                 frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             }
+            SpeedCap.Settle(ref state, frame.TotalDelta - start);
         }
 
         /// <summary>

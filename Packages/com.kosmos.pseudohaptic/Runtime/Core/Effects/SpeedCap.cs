@@ -11,9 +11,9 @@ namespace Kosmos.PseudoHaptic
     /// Capped motion is deferred, not lost: the object keeps rising at v_cap after the hand stops until it has
     /// made up what the cap held back (at most <see cref="SolverLimits.MaxCarry"/>), so a faster lift never ends
     /// lower than a slower one (the cap never reverses <see cref="FasterMovesFurther"/>). Motion of the hand in
-    /// the other direction cancels what is owed; the lowering guard and the floor drop it when they bind. The cap is a budget refilled at v_cap × frame time and saved for at most
-    /// 50 ms, so a 30 Hz pose under 120 Hz frames spends the budget of the frames that showed no new pose and
-    /// the object's mean speed never exceeds v_cap on any frame clock.
+    /// the other direction cancels what is owed; the lowering guard, the offset correction and the floor settle it
+    /// when they change the motion. The cap is judged per pose, over the pose's own interval: the object's speed
+    /// over each pose never exceeds v_cap, and every frame clock showing the same poses gives the same motion.
     /// </summary>
     public sealed class SpeedCap : WeightEffect
     {
@@ -36,24 +36,30 @@ namespace Kosmos.PseudoHaptic
         {
             double cap = constants.CapSpeed;
             if (!(cap < double.PositiveInfinity)) return;
-            double budget = state.CapBudget + cap * frame.Dt, most = cap * SolverLimits.JumpWindow;
-            if (budget > most) budget = most;
-
-            double deferred = state.CapDeferred;
-            double wanted = frame.ObjectDelta + deferred; // a hand that turns back cancels what it is owed
-            double step = wanted > budget ? budget : (wanted < -budget ? -budget : wanted);
+            // Judged per pose, over the pose's own interval, so every frame clock that shows the same poses makes the
+            // same decisions; a frame without a new pose moves nothing and pays nothing (a hand filter that moves the
+            // followed hand between poses is judged over the frame).
+            double window = frame.MotionInterval > 0 ? frame.MotionInterval : (frame.ObjectDelta != 0 ? frame.Dt : 0);
+            if (!(window > 0)) return;
+            double allowed = cap * window;
+            double wanted = frame.ObjectDelta + state.CapDeferred; // a hand that turns back cancels what it is owed
+            double step = wanted > allowed ? allowed : (wanted < -allowed ? -allowed : wanted);
             frame.ObjectDelta = step;
-            budget -= step < 0 ? -step : step;
-            deferred = wanted - step;
-            double limit = constants.Limits.MaxCarry;
+            double deferred = wanted - step, limit = constants.Limits.MaxCarry;
             state.CapDeferred = deferred > limit ? limit : (deferred < -limit ? -limit : deferred);
-            state.CapBudget = budget;
         }
 
-        protected internal override void Reset(ref HoldState state, double handY)
+        /// <summary>An effect after the cap changed the object's motion by <paramref name="extra"/>: in the direction of
+        /// what the cap owes, that pays the debt; against it, a constraint blocked that much of it. Either way the
+        /// debt shrinks by |extra| (never changing sign), so nothing is owed twice or pushed against a constraint.</summary>
+        internal static void Settle(ref HoldState state, double extra)
         {
-            state.CapDeferred = 0;
-            state.CapBudget = 0;
+            double owed = state.CapDeferred;
+            if (owed == 0 || extra == 0) return;
+            double left = Math.Abs(owed) - Math.Abs(extra);
+            state.CapDeferred = left <= 0 ? 0 : (owed > 0 ? left : -left);
         }
+
+        protected internal override void Reset(ref HoldState state, double handY) => state.CapDeferred = 0;
     }
 }
