@@ -20,7 +20,7 @@ namespace Kosmos.PseudoHaptic
         TwoHands _twoHands;
         LateralInertia _inertia;
         BreakAway _breakAway;
-        double _settleTime, _tauOne, _tauTwo, _tau;
+        double _settleTime, _tauOne, _tauTwo, _tau, _pullSpeed, _pullRamp;
         bool _requireHighConfidence, _lossHold;
 
         // The hold.
@@ -38,6 +38,7 @@ namespace Kosmos.PseudoHaptic
         // x/z: object = followed point + A − e.
         bool _hHas;
         double _ax, _az, _ex, _ez, _hLostFor, _hSettle = -1, _hSince, _hPx, _hPz;
+        double _gax, _gaz;                   // A when the hand was first followed: re-anchoring moves A away from it
         double _objX, _objZ;
 
         // Break-away.
@@ -113,6 +114,9 @@ namespace Kosmos.PseudoHaptic
             _settleTime = loss != null ? loss.SettleTime : 0;
             _requireHighConfidence = loss != null && loss.RequireHighConfidence;
             _lossHold = loss != null;
+            var correction = profile.Find<OffsetCorrection>();
+            _pullSpeed = correction != null ? correction.PullSpeed : 0;
+            _pullRamp = correction != null ? 5 * correction.Band : 1;
             ApplyMass(force: true, standardSpeed);
         }
 
@@ -148,8 +152,8 @@ namespace Kosmos.PseudoHaptic
                 _hHas = true;
                 _hPx = _vx;
                 _hPz = _vz;
-                _ax = objectX - _vx;
-                _az = objectZ - _vz;
+                _ax = _gax = objectX - _vx;
+                _az = _gaz = objectZ - _vz;
                 Grab();
             }
             else _y.BeginHold(double.NaN, objectY);
@@ -335,8 +339,22 @@ namespace Kosmos.PseudoHaptic
             else _ex = _ez = 0;
 
             if (!_hHas) return; // no hand seen yet: the object stays where the hold began
+            if (_pullSpeed > 0) PullBack(dt);
             double x = _hPx + _ax - _ex, z = _hPz + _az - _ez;
             if (double.IsFinite(x) && double.IsFinite(z)) { _objX = x; _objZ = z; }
+        }
+
+        /// <summary>With the offset correction, what re-anchoring left between hand and object horizontally is drawn back,
+        /// as the correction's pull does on y: at up to its pull speed, ramping up over five band widths.</summary>
+        void PullBack(double dt)
+        {
+            double rx = _ax - _gax, rz = _az - _gaz, r2 = rx * rx + rz * rz;
+            if (r2 == 0) return;
+            double r = Math.Sqrt(r2);
+            double max = _y.Profile.Limits.MaxFrameTime, step = dt < max ? dt : max;
+            double pull = _pullSpeed * (r >= _pullRamp ? 1 : r / _pullRamp) * step;
+            if (pull >= r) { _ax = _gax; _az = _gaz; }
+            else { double k = 1 - pull / r; _ax = _gax + rx * k; _az = _gaz + rz * k; }
         }
 
         void Reanchor()
@@ -347,6 +365,7 @@ namespace Kosmos.PseudoHaptic
             _hPz = _vz;
             _ax = followX - _vx;
             _az = followZ - _vz;
+            if (!_hHas) { _gax = _ax; _gaz = _az; }
             _hHas = true;
             _hLostFor = 0;
             _hSince = 0;

@@ -166,6 +166,26 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(() => solver.Configure(WeightModel.FromMass(1), NamedProfiles.Xyz, 0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("standardSpeed"));
         }
 
+        [TestCase("paper", true), TestCase("xyz", true), TestCase("paper-experiment", false), TestCase("gain", false)]
+        public void AHandThatJumpsSidewaysIsReanchoredThenDrawnBackWithTheOffsetCorrection(string name, bool drawnBack)
+        {
+            var solver = new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Get(name));
+            solver.BeginHold(new HandPose(0, 1, 0, true, true, 0), 0.05, 1, 0);
+            double previous = solver.ObjectX, maxStep = 0;
+            for (int i = 1; i <= 270; i++)
+            {
+                long pose = i / 3;
+                double x = pose >= 30 ? 0.4 : 0; // one pose 0.4 m to the side: no hand moves 12 m/s, so it is a re-anchor
+                solver.Step(new HandPose(x, 1, 0, true, true, pose / 30.0), 1 / 90.0);
+                if (i == 90) Assert.That(solver.ObjectX, Is.EqualTo(0.05).Within(0.5 / 90 + 1e-12), "the jump itself moves the object no more than one frame of the pull");
+                maxStep = Math.Max(maxStep, Math.Abs(solver.ObjectX - previous));
+                previous = solver.ObjectX;
+            }
+            Assert.That(maxStep, Is.LessThanOrEqualTo(0.5 / 90 + 1e-12), "drawn back at most at the correction's 0.5 m/s");
+            if (drawnBack) Assert.That(solver.ObjectX, Is.EqualTo(0.45).Within(0.01), "back at hand + grab offset within two seconds");
+            else Assert.That(solver.ObjectX, Is.EqualTo(0.05).Within(1e-9), "without the correction the re-anchored offset stays");
+        }
+
         [Test]
         public void AHoldThatBeginsWithoutAHandStartsFollowingWhereTheHandAppears()
         {
