@@ -69,6 +69,19 @@ public class ThreeDimensionBenchmarks
         return y;
     }
 
+    /// <summary>Every case set up (for <see cref="InterleavedTiming"/>), <c>paper</c> first.</summary>
+    public List<(string Name, ThreeDimensionBenchmarks Bench)> Cases()
+    {
+        var list = new List<(string, ThreeDimensionBenchmarks)>();
+        foreach (var name in new[] { "paper", "height-deceleration", "paper-3d", "lateral-inertia", "two-hands", "break-away", "xyz", "xyz-one-hand" })
+        {
+            var b = new ThreeDimensionBenchmarks { Case = name };
+            b.Setup();
+            list.Add((name, b));
+        }
+        return list;
+    }
+
     double StepOne()
     {
         int f = _frame;
