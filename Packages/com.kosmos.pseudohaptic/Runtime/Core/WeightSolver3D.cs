@@ -22,6 +22,7 @@ namespace Kosmos.PseudoHaptic
         BreakAway _breakAway;
         double _settleTime, _tauOne, _tauTwo, _tau, _pullSpeed, _pullRamp;
         bool _requireHighConfidence, _lossHold;
+        SolverLimits _limits;
 
         // The hold.
         bool _holding, _brokeAway;
@@ -114,6 +115,7 @@ namespace Kosmos.PseudoHaptic
             _settleTime = loss != null ? loss.SettleTime : 0;
             _requireHighConfidence = loss != null && loss.RequireHighConfidence;
             _lossHold = loss != null;
+            _limits = profile.Limits;
             var correction = profile.Find<OffsetCorrection>();
             _pullSpeed = correction != null ? correction.PullSpeed : 0;
             _pullRamp = correction != null ? 5 * correction.Band : 1;
@@ -144,7 +146,7 @@ namespace Kosmos.PseudoHaptic
             _hasGrab = false;
             _beyondFor = 0;
 
-            Select(first, second, 0, begin: true);
+            Select(first, second, first.IsUsable, second.IsUsable, 0, begin: true);
             ApplyMass(force: false, _y.StandardSpeed);
             if (_in1 || _in2)
             {
@@ -174,6 +176,7 @@ namespace Kosmos.PseudoHaptic
             if (hand != 1 && hand != 2) throw new ArgumentOutOfRangeException(nameof(hand), hand, "hand must be 1 or 2, got " + hand + ".");
             if (hand == 1) { _grip1 = grips; if (!grips) _holds1 = false; }
             else { _grip2 = grips; if (!grips) _holds2 = false; }
+            ApplyMass(force: false, _y.StandardSpeed);
         }
 
         /// <summary>One-hand step.</summary>
@@ -182,13 +185,15 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Advances one rendered frame of <paramref name="dt"/> seconds.</summary>
         public void Step(in HandPose first, in HandPose second, double dt)
         {
-            _usableHands = (first.IsUsable ? 1 : 0) + (second.IsUsable ? 1 : 0);
+            bool u1 = first.IsUsable, u2 = second.IsUsable;
+            _usableHands = (u1 ? 1 : 0) + (u2 ? 1 : 0);
             if (!_holding) return;
             if (double.IsPositiveInfinity(dt)) dt = 3600;
             else if (!(dt > 0)) dt = 0;
 
-            Select(first, second, dt, begin: false);
-            ApplyMass(force: false, _y.StandardSpeed);
+            bool holdsBefore = _holds1 && _holds2;
+            Select(first, second, u1, u2, dt, begin: false);
+            if (holdsBefore != (_holds1 && _holds2)) ApplyMass(force: false, _y.StandardSpeed);
 
             // y: the followed point, or the first hand as it came when nothing is followed (the y solver's own
             // loss handling then sees exactly what a one-hand hold sees).
@@ -200,7 +205,7 @@ namespace Kosmos.PseudoHaptic
             }
             else if (!_grip1)
                 sample = new HandSample(double.NaN, false, false, first.PoseTime); // the first hand let go
-            else if (first.IsUsable || !first.IsTracked || !HandSample.IsUsableHeight(first.Y))
+            else if (u1 || !first.IsTracked || !HandSample.IsUsableHeight(first.Y))
                 sample = new HandSample(first.Y, first.IsTracked, first.IsHighConfidence, first.PoseTime);
             else
                 sample = new HandSample(double.NaN, false, false, first.PoseTime); // x or z garbage: the pose is lost
@@ -211,10 +216,10 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Decides which hands are followed this frame and re-anchors the followed point when that changes.</summary>
-        void Select(in HandPose first, in HandPose second, double dt, bool begin)
+        void Select(in HandPose first, in HandPose second, bool usable1, bool usable2, double dt, bool begin)
         {
-            bool f1 = _grip1 && Followable(first);
-            bool f2 = _twoHands != null && _grip2 && Followable(second);
+            bool f1 = _grip1 && usable1 && (!_requireHighConfidence || first.IsHighConfidence);
+            bool f2 = _twoHands != null && _grip2 && usable2 && (!_requireHighConfidence || second.IsHighConfidence);
             if (f1) { _k1x = first.X; _k1y = first.Y; _k1z = first.Z; }
             if (f2) { _k2x = second.X; _k2y = second.Y; _k2z = second.Z; }
             // A hand joining a hand already followed waits for steady tracking (the profile's settle time).
@@ -246,8 +251,6 @@ namespace Kosmos.PseudoHaptic
             _in1 = n1;
             _in2 = n2;
         }
-
-        bool Followable(in HandPose hand) => hand.IsUsable && (!_requireHighConfidence || hand.IsHighConfidence);
 
         bool Settled(ref double waited, double dt)
         {
@@ -286,7 +289,7 @@ namespace Kosmos.PseudoHaptic
         /// a hitch, a settle after a loss, or a step no hand can make; then the lateral lag.</summary>
         void StepHorizontal(double dt)
         {
-            var limits = _y.Profile.Limits;
+            var limits = _limits;
             double dx = 0, dz = 0;
             _hSince += dt;
             if (!(_in1 || _in2))
@@ -339,7 +342,7 @@ namespace Kosmos.PseudoHaptic
             else _ex = _ez = 0;
 
             if (!_hHas) return; // no hand seen yet: the object stays where the hold began
-            if (_pullSpeed > 0) PullBack(dt);
+            if (_pullSpeed > 0 && (_ax != _gax || _az != _gaz)) PullBack(dt);
             double x = _hPx + _ax - _ex, z = _hPz + _az - _ez;
             if (double.IsFinite(x) && double.IsFinite(z)) { _objX = x; _objZ = z; }
         }
@@ -351,7 +354,7 @@ namespace Kosmos.PseudoHaptic
             double rx = _ax - _gax, rz = _az - _gaz, r2 = rx * rx + rz * rz;
             if (r2 == 0) return;
             double r = Math.Sqrt(r2);
-            double max = _y.Profile.Limits.MaxFrameTime, step = dt < max ? dt : max;
+            double max = _limits.MaxFrameTime, step = dt < max ? dt : max;
             double pull = _pullSpeed * (r >= _pullRamp ? 1 : r / _pullRamp) * step;
             if (pull >= r) { _ax = _gax; _az = _gaz; }
             else { double k = 1 - pull / r; _ax = _gax + rx * k; _az = _gaz + rz * k; }
