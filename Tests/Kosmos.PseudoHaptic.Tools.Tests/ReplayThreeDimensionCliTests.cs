@@ -118,6 +118,20 @@ public class ReplayThreeDimensionCliTests
     }
 
     [Test]
+    public void GrabOffsetShiftsYExactlyAndLeavesXAndZWithTheNewColumns([Values("paper", "xyz")] string profile)
+    {
+        var plain = Run(Trace(4, true, true), "--mass-kg", "2", "--profile", profile, "--break-away", "0.5");
+        var shifted = Run(Trace(4, true, true), "--mass-kg", "2", "--profile", profile, "--break-away", "0.5", "--grab-offset", "0.12");
+        Assert.That(shifted[0], Is.EqualTo(plain[0]));
+        Assert.That(Column(shifted, "object_x"), Is.EqualTo(Column(plain, "object_x")));
+        Assert.That(Column(shifted, "object_z"), Is.EqualTo(Column(plain, "object_z")));
+        Assert.That(Column(shifted, "held"), Is.EqualTo(Column(plain, "held")), "break-away measures from where it was grabbed");
+        var a = Column(plain, "object_y").Select(D).ToArray();
+        var b = Column(shifted, "object_y").Select(D).ToArray();
+        for (int i = 0; i < a.Length; i++) Assert.That(b[i], Is.EqualTo(a[i] - 0.12).Within(1e-12), $"row {i + 2}");
+    }
+
+    [Test]
     public void ColumnsComeInTheContractsOrder()
     {
         Assert.That(Run(Trace(1, true, false), "--mass-kg", "1")[0], Is.EqualTo("t,hand_y,object_y,offset,hand_x,hand_z,object_x,object_z"));

@@ -15,7 +15,7 @@ namespace Kosmos.PseudoHaptic.Cli
 
               demo   [--out DIR] [--trace FILE] [--svg]
                                                      simulate the paper's scenes, write CSV + PNG (+ SVG), print a summary
-              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--break-away D]
+              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--grab-offset D] [--break-away D]
               score  --responses R.csv --out S.csv [--questionnaires DIR]
                                                      score questionnaire responses
               report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]

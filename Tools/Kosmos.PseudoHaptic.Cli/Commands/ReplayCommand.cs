@@ -11,20 +11,21 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// </summary>
 public static class ReplayCommand
 {
-    public const string Usage = "pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--break-away D]";
+    public const string Usage = "pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--grab-offset D] [--break-away D]";
 
     public static int Run(string[] args)
     {
-        var o = new Options(args, "--trace", "--out", "--mass-kg", "--standard-speed", "--profile", "--break-away");
+        var o = new Options(args, "--trace", "--out", "--mass-kg", "--standard-speed", "--profile", "--grab-offset", "--break-away");
         string trace = o.Require("--trace");
         string output = o.Require("--out");
         var solver = CreateSolver3D(o, out bool breakAway);
+        double grabOffset = GrabOffset(o);
         var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace));
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
         bool anyUsable = true;
-        target.Write(w => anyUsable = Replay(reader, solver, breakAway, w, target.SpareFolder));
+        target.Write(w => anyUsable = Replay(reader, solver, breakAway, grabOffset, w, target.SpareFolder));
         if (!anyUsable) Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; object_y is 0 throughout");
         return 0;
     }
@@ -51,6 +52,16 @@ public static class ReplayCommand
         return new WeightSolver3D(model, profile, speed);
     }
 
+    /// <summary>--grab-offset D: metres, finite, default 0; the object starts D below the first usable hand (or the
+    /// midpoint of both; above it when negative).</summary>
+    public static double GrabOffset(Options o)
+    {
+        double d = o.Number("--grab-offset") ?? 0;
+        if (!double.IsFinite(d) || Math.Abs(d) > WeightSolver.MaxCoordinate)
+            throw new CliException($"option --grab-offset: must be a finite number of metres, got {NumberText.Format(d)}");
+        return d;
+    }
+
     static (WeightModel, WeightProfile, double) Parse(Options o)
     {
         double mass = o.Number("--mass-kg") ?? throw new CliException("option --mass-kg is required");
@@ -69,7 +80,7 @@ public static class ReplayCommand
     /// <summary>Streams rows through the solver. Rows before the first usable hand wait until the starting
     /// position is known: the first <see cref="FrameBuffer.InMemory"/> in memory, the rest in a temporary file
     /// beside the output, so memory stays bounded. Returns false when no row had a usable hand.</summary>
-    static bool Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, TextWriter w, string spareFolder)
+    static bool Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
     {
         var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway);
         w.Write("t,hand_y,object_y,offset");
@@ -91,10 +102,11 @@ public static class ReplayCommand
                 bool one = a.IsUsable, two = twoHands && b.IsUsable;
                 if (!one && !two) { waiting.Add(r); continue; }
                 // The object starts where the first usable hand is, or at the midpoint of both.
+                // With --grab-offset D it starts D below that point, the offset kept exactly (BeginHoldWithGrabOffset):
+                // where the floor is not in the way, object_y is the path without the option, less D.
                 double x = one && two ? 0.5 * (a.X + b.X) : (one ? a.X : b.X);
-                double y = one && two ? 0.5 * (a.Y + b.Y) : (one ? a.Y : b.Y);
                 double z = one && two ? 0.5 * (a.Z + b.Z) : (one ? a.Z : b.Z);
-                solver.BeginHold(a, twoHands ? b : HandPose.Lost, x, y, z);
+                solver.BeginHoldWithGrabOffset(a, twoHands ? b : HandPose.Lost, x, grabOffset, z);
                 holding = true;
                 waiting.Drain(early => Write(w, columns, early, solver.ObjectX, solver.ObjectY, solver.ObjectZ, true));
             }

@@ -50,6 +50,10 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="SpeedCap"/>: motion the cap has deferred, m.</summary>
         public double CapDeferred;
 
+        /// <summary><see cref="LoweringGuard"/>: what it added to the object's motion and may give back, m, and how long ago it acted, s.</summary>
+        public double GuardDebt;
+        public double GuardAge;
+
         /// <summary><see cref="FasterMovesFurther"/>: the hand height its speed judgement follows, m.</summary>
         public double PaceReference;
 

@@ -129,9 +129,30 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Starts a hold with up to two hands (either may be lost; the second is ignored without <see cref="TwoHands"/>).</summary>
         public void BeginHold(in HandPose first, in HandPose second, double objectX, double objectY, double objectZ)
         {
-            ConfigurationGuard.InRange(objectX, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(objectX));
             ConfigurationGuard.InRange(objectY, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(objectY));
+            Begin(first, second, objectX, objectY, objectZ, double.NaN);
+        }
+
+        /// <summary>
+        /// Starts a hold with the object <paramref name="grabOffsetY"/> metres below the followed point (above it when
+        /// negative), kept exactly as given (<see cref="WeightSolver.BeginHoldWithGrabOffset"/>): where the floor is not
+        /// in the way, y is exactly the path of a hold begun with hand and object together, less the offset. A hand
+        /// must be followable (the object is placed relative to it); otherwise this throws naming first.
+        /// </summary>
+        public void BeginHoldWithGrabOffset(in HandPose first, in HandPose second, double objectX, double grabOffsetY, double objectZ)
+        {
+            ConfigurationGuard.InRange(grabOffsetY, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(grabOffsetY));
+            Begin(first, second, objectX, double.NaN, objectZ, grabOffsetY);
+        }
+
+        void Begin(in HandPose first, in HandPose second, double objectX, double objectY, double objectZ, double grabOffsetY)
+        {
+            ConfigurationGuard.InRange(objectX, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(objectX));
             ConfigurationGuard.InRange(objectZ, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(objectZ));
+            bool withOffset = !double.IsNaN(grabOffsetY);
+            if (withOffset && !(first.IsUsable && (!_requireHighConfidence || first.IsHighConfidence))
+                && !(_twoHands != null && second.IsUsable && (!_requireHighConfidence || second.IsHighConfidence)))
+                throw new ArgumentException("first: a grab offset needs a followable hand to place the object relative to.", nameof(first));
             _holding = true;
             _brokeAway = false;
             _grip1 = _grip2 = true;
@@ -150,7 +171,8 @@ namespace Kosmos.PseudoHaptic
             ApplyMass(force: false, _y.StandardSpeed);
             if (_in1 || _in2)
             {
-                _y.BeginHold(_vy, objectY, PoseTime(first, second));
+                if (withOffset) _y.BeginHoldWithGrabOffset(_vy, grabOffsetY, PoseTime(first, second));
+                else _y.BeginHold(_vy, objectY, PoseTime(first, second));
                 _hHas = true;
                 _hPx = _vx;
                 _hPz = _vz;
