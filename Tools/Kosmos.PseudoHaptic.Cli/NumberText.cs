@@ -26,6 +26,14 @@ public static class NumberText
     /// <summary>Round-trippable, invariant; NaN and ±Infinity spelled as .NET spells them.</summary>
     public static string Format(double v) => v.ToString("R", CultureInfo.InvariantCulture);
 
+    /// <summary><see cref="Format(double)"/> into <paramref name="destination"/> (at least 32 characters) without allocating; returns the length.</summary>
+    public static int Format(double v, Span<char> destination)
+    {
+        if (!v.TryFormat(destination, out int written, "R", CultureInfo.InvariantCulture))
+            throw new ArgumentException("the destination is too short", nameof(destination));
+        return written;
+    }
+
     /// <summary>Fixed decimals for tables.</summary>
     public static string Fixed(double v, int decimals) => v.ToString("F" + decimals, CultureInfo.InvariantCulture);
 }

@@ -24,8 +24,15 @@ namespace Kosmos.PseudoHaptic.Cli
                                                      accuracy of each estimator on Quest-like input (accuracy-vs-time.md)
             """;
 
+        /// <summary>
+        /// Set to a file name, the process writes its peak resident memory there when it ends (Linux: VmHWM of
+        /// /proc/self/status, in kB). The tools' tests read it to bound every command's memory; it changes nothing else.
+        /// </summary>
+        public const string PeakMemoryVariable = "PSEUDOHAPTIC_PEAK_RSS_FILE";
+
         public static int Run(string[] args)
         {
+            PeakMemory.ReportAtExit(Environment.GetEnvironmentVariable(PeakMemoryVariable));
             if (args.Length == 0 || args[0] is "-h" or "--help" or "help")
             {
                 Console.Out.WriteLine(Usage);
@@ -63,6 +70,27 @@ namespace Kosmos.PseudoHaptic.Cli
                 Console.Error.WriteLine("pseudohaptic: " + Messages.Reason(e));
                 return 1;
             }
+        }
+    }
+
+    static class PeakMemory
+    {
+        static bool _registered;
+
+        public static void ReportAtExit(string? file)
+        {
+            if (string.IsNullOrEmpty(file) || _registered || !File.Exists("/proc/self/status")) return;
+            _registered = true;
+            AppDomain.CurrentDomain.ProcessExit += (_, _) =>
+            {
+                try
+                {
+                    foreach (var line in File.ReadLines("/proc/self/status"))
+                        if (line.StartsWith("VmHWM:", StringComparison.Ordinal))
+                            File.WriteAllText(file, line["VmHWM:".Length..].Trim().Split(' ')[0] + "\n");
+                }
+                catch (Exception e) when (e is IOException or UnauthorizedAccessException) { }
+            };
         }
     }
 }

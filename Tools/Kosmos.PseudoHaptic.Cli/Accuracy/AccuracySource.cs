@@ -32,11 +32,11 @@ public sealed record AccuracySource(string Name, string Description, HandPath Ha
     /// A trace in the replay format taken as the true hand: its usable rows (tracked, finite hand_y), at their
     /// pose time when the row has one (repeated poses count once) or else at their frame time, linearly
     /// interpolated; rows whose time does not advance are skipped. Parse errors name the file and line. Read in
-    /// bounded memory (<see cref="TraceSamples"/>: at most one sample per ms, a span of at most 600 s).
+    /// bounded memory (<see cref="TraceSamples"/>: at most one sample per ms, a span of at most 180 s).
     /// </summary>
     public static AccuracySource FromTrace(string name, string path, string option = "--trace")
     {
-        var (times, heights) = TraceSamples.Read(option, path, "accuracy", usePoseTime: true);
+        var (times, heights) = TraceSamples.Read(option, path, "accuracy", usePoseTime: true, TraceSamples.AccuracyMaxSpan);
         if (times.Count < 2 || times[^1] - times[0] < 0.5)
             throw new CliException($"{Files.Messages.OneLine(path)}: needs at least 0.5 s of usable rows (tracked, finite hand_y, time increasing) to serve as the true hand; found {times.Count} row(s)");
         var hand = HandPath.FromSamples(times, heights);

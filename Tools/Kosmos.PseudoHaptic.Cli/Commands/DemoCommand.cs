@@ -29,7 +29,7 @@ public static class DemoCommand
         string? tracePath = o.Get("--trace");
         // The folder is checked, and the trace read, before anything is created; the folder then appears whole.
         (List<double> Times, List<double> Heights)? recorded = tracePath != null
-            ? TraceSamples.Read("--trace", tracePath, "demo", usePoseTime: false) : null;
+            ? TraceSamples.Read("--trace", tracePath, "demo", usePoseTime: false, TraceSamples.DemoMaxSpan) : null;
         if (recorded != null && recorded.Value.Times.Count < 2)
             throw new CliException($"{Messages.OneLine(tracePath!)}: fewer than two usable rows with increasing t");
         OutputFolder.Check("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));

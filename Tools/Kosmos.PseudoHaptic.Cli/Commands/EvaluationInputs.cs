@@ -5,6 +5,13 @@ using Kosmos.PseudoHaptic.Evaluation;
 
 namespace Kosmos.PseudoHaptic.Cli;
 
+/// <summary>The row limit of score and report's input files (public, for tests and other commands).</summary>
+public static class EvaluationInputsLimits
+{
+    /// <summary>See <see cref="EvaluationInputs.MaxRows"/>.</summary>
+    public const int MaxRows = 100_000;
+}
+
 /// <summary>
 /// What <c>score</c> and <c>report</c> share: the questionnaire definitions (the package's JSON files, built
 /// into the tool, or a folder given with --questionnaires), reading input files, writing outputs by
@@ -14,6 +21,13 @@ static class EvaluationInputs
 {
     /// <summary>Exit code of a contract error: malformed input, bad option, unreadable file.</summary>
     public const int ContractError = 2;
+
+    /// <summary>
+    /// Most data rows score and report read from one file (100,000: a study of 4,500 participants answering all
+    /// 22 items), so their memory is bounded whatever the file (report of 100,000 scores: 110 MB peak); a row
+    /// beyond is refused naming its line.
+    /// </summary>
+    public const int MaxRows = EvaluationInputsLimits.MaxRows;
 
     /// <summary>The package's definitions as built in, or those of <paramref name="directory"/> when given.</summary>
     public static QuestionnaireCatalog Catalog(string? directory)
@@ -40,6 +54,14 @@ static class EvaluationInputs
     {
         using var reader = InputFile.OpenText("--input", path);
         return reader.ReadToEnd();
+    }
+
+    /// <summary>The questionnaire definitions a --questionnaires folder holds, as inputs an output may not be.</summary>
+    public static IEnumerable<NamedPath> QuestionnaireFiles(string? directory)
+    {
+        if (directory == null || !Directory.Exists(directory)) yield break;
+        foreach (var file in Directory.GetFiles(directory, "*.json"))
+            yield return new NamedPath("--questionnaires", file);
     }
 
     /// <summary>An input file named by <paramref name="option"/>, read as it is parsed (one row at a time).</summary>

@@ -125,28 +125,27 @@ public static class ReplayCommand
 
     readonly record struct Columns(bool Horizontal, bool SecondHand, bool Held);
 
+    /// <summary>One output row, formatted on the stack (no allocation per row, as the one-hand replay).</summary>
     static void Write(TextWriter w, Columns c, in TraceRow r, double objectX, double objectY, double objectZ, bool held)
     {
-        var a = r.FirstPose;
-        bool usable = a.IsUsable;
+        bool usable = r.FirstPose.IsUsable;
         double offset = usable ? r.First.HandY - objectY : double.NaN;
-        w.Write(NumberText.Format(r.First.Time)); w.Write(',');
-        w.Write(NumberText.Format(r.First.HandY)); w.Write(',');
-        w.Write(NumberText.Format(objectY)); w.Write(',');
-        w.Write(NumberText.Format(offset));
+        Span<char> buffer = stackalloc char[32 * 8 + 16];
+        int n = 0;
+        n += NumberText.Format(r.First.Time, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(r.First.HandY, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(objectY, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(offset, buffer[n..]);
         if (c.Horizontal)
         {
-            w.Write(','); w.Write(NumberText.Format(r.HandX));
-            w.Write(','); w.Write(NumberText.Format(r.HandZ));
-            w.Write(','); w.Write(NumberText.Format(objectX));
-            w.Write(','); w.Write(NumberText.Format(objectZ));
+            buffer[n++] = ','; n += NumberText.Format(r.HandX, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(r.HandZ, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(objectX, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(objectZ, buffer[n..]);
         }
-        if (c.SecondHand)
-        {
-            w.Write(',');
-            w.Write((usable ? 1 : 0) + (r.SecondPose.IsUsable ? 1 : 0));
-        }
-        if (c.Held) { w.Write(','); w.Write(held ? '1' : '0'); }
-        w.WriteLine();
+        if (c.SecondHand) { buffer[n++] = ','; buffer[n++] = (char)('0' + (usable ? 1 : 0) + (r.SecondPose.IsUsable ? 1 : 0)); }
+        if (c.Held) { buffer[n++] = ','; buffer[n++] = held ? '1' : '0'; }
+        buffer[n++] = '\n';
+        w.Write(buffer[..n]);
     }
 }

@@ -26,9 +26,9 @@ public static class ReportCommand
         var catalog = EvaluationInputs.Catalog(questionnaires);
 
         // Everything is read, checked and rendered before the folder is made; it then appears whole.
-        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog);
+        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, EvaluationInputs.MaxRows);
         ResponseSet? responses = responsesPath != null
-            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog)
+            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows)
             : null;
         var report = EvaluationReport.Build(catalog, scores, scoresPath, responses, responsesPath);
 

@@ -21,10 +21,11 @@ public static class ScoreCommand
         var o = new Options(args, "--responses", "--out", "--questionnaires");
         string responsesPath = o.Require("--responses");
         string output = o.Require("--out");
-        var target = OutputFile.Check("--out", output, new NamedPath("--responses", responsesPath));
+        var target = OutputFile.Check("--out", output,
+            EvaluationInputs.QuestionnaireFiles(o.Get("--questionnaires")).Prepend(new NamedPath("--responses", responsesPath)).ToArray());
         var catalog = EvaluationInputs.Catalog(o.Get("--questionnaires"));
 
-        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog);
+        var responses = ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows);
         var scores = ScoreCalculator.ScoreAll(responses);
         target.Write(w => w.Write(ScoresCsv.Format(scores)));
 

@@ -8,19 +8,24 @@ namespace Kosmos.PseudoHaptic.Cli.Traces;
 /// read in bounded memory whatever the file: rows are streamed and only usable ones are kept (nothing is
 /// buffered before the first usable pose); a row whose time does not advance is skipped; a row less than
 /// <see cref="MinStep"/> after the last kept one is skipped too (the trace is taken at most one sample per
-/// millisecond); a usable row more than <see cref="MaxSpan"/> after the first usable one is refused with a
-/// message naming its line (a glitched time stamp, or times written in milliseconds).
+/// millisecond); a usable row more than the command's longest span (<see cref="DemoMaxSpan"/>,
+/// <see cref="AccuracyMaxSpan"/>) after the first usable one is refused with a message naming its line (a
+/// glitched time stamp, or times written in milliseconds). The spans keep the peak memory of either command
+/// under 200 MB (README, "Files and paths").
 /// </summary>
 public static class TraceSamples
 {
-    /// <summary>Longest span of usable rows accepted, s (10 minutes).</summary>
-    public const double MaxSpan = 600;
+    /// <summary>Longest span of usable rows <c>demo</c> takes, s (5 minutes).</summary>
+    public const double DemoMaxSpan = 300;
 
-    /// <summary>Shortest step between samples kept, s (1 ms): at most 600,001 samples.</summary>
+    /// <summary>Longest span of usable rows <c>accuracy</c> takes, s (3 minutes; it renders each trace six times at 1 ms).</summary>
+    public const double AccuracyMaxSpan = 180;
+
+    /// <summary>Shortest step between samples kept, s (1 ms).</summary>
     public const double MinStep = 0.001;
 
     /// <param name="usePoseTime">Take a row's pose_t, when finite, as its time (accuracy); otherwise its frame time t (demo).</param>
-    public static (List<double> Times, List<double> Heights) Read(string option, string path, string command, bool usePoseTime)
+    public static (List<double> Times, List<double> Heights) Read(string option, string path, string command, bool usePoseTime, double maxSpan)
     {
         using var file = TraceCsvReader.OpenText(path, option);
         using var reader = new TraceCsvReader(file, path);
@@ -39,8 +44,8 @@ public static class TraceSamples
                 heights.Add(f.HandY);
                 continue;
             }
-            if (t - times[0] > MaxSpan)
-                throw new CliException($"{Messages.OneLine(path)}:{reader.Line}: t = {NumberText.Format(t)} s lies {NumberText.Format(t - times[0])} s after the first usable row (line {firstLine}); {command} takes traces of at most {MaxSpan:0} s (a glitched time, or times in milliseconds?)");
+            if (t - times[0] > maxSpan)
+                throw new CliException($"{Messages.OneLine(path)}:{reader.Line}: t = {NumberText.Format(t)} s lies {NumberText.Format(t - times[0])} s after the first usable row (line {firstLine}); {command} takes traces of at most {maxSpan:0} s (a glitched time, or times in milliseconds?)");
             if (!(t >= times[^1] + MinStep)) continue;
             times.Add(t);
             heights.Add(f.HandY);

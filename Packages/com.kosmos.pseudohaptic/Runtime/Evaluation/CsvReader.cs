@@ -132,6 +132,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         blank = false;
                         while (true)
                         {
+                            CopyQuoted();
                             c = Next();
                             if (c < 0) throw Error(Line, "unterminated quoted field: no closing quote before the end of the file");
                             if (c == '"')
@@ -152,11 +153,11 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     }
                     else
                     {
-                        while (c >= 0 && c != ',' && c != '\n' && c != '\r')
+                        if (c >= 0 && c != ',' && c != '\n' && c != '\r')
                         {
-                            if (c == '"') throw Error(Line, "a quote inside unquoted field " + (starts.Count + 1).ToString(CultureInfo.InvariantCulture) + " (quote the whole field and double the quote)");
+                            if (c == '"') throw QuoteInside();
                             Append((char)c);
-                            c = Next();
+                            c = ScanUnquoted();
                         }
                         int end = recordLength;
                         while (end > start && (record[end - 1] == ' ' || record[end - 1] == '\t')) end--;
@@ -178,6 +179,62 @@ namespace Kosmos.PseudoHaptic.Evaluation
             }
         }
 
+        static readonly char[] UnquotedStops = { ',', '\n', '\r', '"' };
+        static readonly char[] QuotedStops = { '"', '\n', '\r' };
+
+        EvaluationFormatException QuoteInside()
+            => Error(Line, "a quote inside unquoted field " + (starts.Count + 1).ToString(CultureInfo.InvariantCulture) + " (quote the whole field and double the quote)");
+
+        /// <summary>Copies the rest of an unquoted field in bulk; returns the character that ended it (consumed), or −1.</summary>
+        int ScanUnquoted()
+        {
+            while (true)
+            {
+                if (bufferPos >= bufferLength && !Fill()) return -1;
+                var rest = new ReadOnlySpan<char>(buffer, bufferPos, bufferLength - bufferPos);
+                int stop = rest.IndexOfAny(UnquotedStops);
+                int take = stop < 0 ? rest.Length : stop;
+                Take(rest.Slice(0, take));
+                if (stop < 0) continue;
+                int c = Next();
+                if (c == '"') throw QuoteInside();
+                return c;
+            }
+        }
+
+        /// <summary>Copies the plain characters of a quoted field in bulk, up to a quote or a line break (not consumed).</summary>
+        void CopyQuoted()
+        {
+            while (true)
+            {
+                if (bufferPos >= bufferLength && !Fill()) return;
+                var rest = new ReadOnlySpan<char>(buffer, bufferPos, bufferLength - bufferPos);
+                int stop = rest.IndexOfAny(QuotedStops);
+                Take(rest.Slice(0, stop < 0 ? rest.Length : stop));
+                if (stop >= 0) return;
+            }
+        }
+
+        void Take(ReadOnlySpan<char> chars)
+        {
+            if (chars.Length == 0) return;
+            if (consumed + chars.Length > MaxRecordLength)
+            {
+                // Take up to the limit, then let Next() refuse the row with the one message.
+                int allowed = MaxRecordLength - consumed;
+                for (int i = 0; i < allowed; i++) Append(chars[i]);
+                bufferPos += allowed;
+                consumed += allowed;
+                Next();
+            }
+            if (recordLength + chars.Length > record.Length)
+                Array.Resize(ref record, Math.Min(Math.Max(record.Length * 2, recordLength + chars.Length), MaxRecordLength + 1));
+            chars.CopyTo(new Span<char>(record, recordLength, chars.Length));
+            recordLength += chars.Length;
+            consumed += chars.Length;
+            bufferPos += chars.Length;
+        }
+
         void Append(char c)
         {
             if (recordLength == record.Length)
@@ -192,15 +249,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         int Peek()
         {
             if (bufferPos >= bufferLength && !Fill()) return -1;
-            int c = buffer[bufferPos];
-            if (!started && c == '\uFEFF')
-            {
-                started = true;
-                bufferPos++;
-                return Peek();
-            }
-            started = true;
-            return c;
+            return buffer[bufferPos];
         }
 
         int Next()
@@ -217,15 +266,24 @@ namespace Kosmos.PseudoHaptic.Evaluation
         bool Fill()
         {
             if (atEnd) return false;
-            bufferLength = reader.Read(buffer, 0, buffer.Length);
-            bufferPos = 0;
-            if (bufferLength <= 0)
+            while (true)
             {
-                bufferLength = 0;
-                atEnd = true;
-                return false;
+                bufferLength = reader.Read(buffer, 0, buffer.Length);
+                bufferPos = 0;
+                if (bufferLength <= 0)
+                {
+                    bufferLength = 0;
+                    atEnd = true;
+                    return false;
+                }
+                if (!started)
+                {
+                    started = true;
+                    if (buffer[0] == '\uFEFF') bufferPos = 1; // a byte-order mark the reader left in
+                    if (bufferPos >= bufferLength) continue;
+                }
+                return true;
             }
-            return true;
         }
 
         public void Dispose()

@@ -53,13 +53,18 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// checked before the first row is returned. Disposes <paramref name="reader"/> at the end.
         /// </summary>
         public static IEnumerable<Row> Stream(TextReader reader, string sourceName, params string[] columns)
+            => Stream(reader, sourceName, int.MaxValue, columns);
+
+        /// <summary>As <see cref="Stream(TextReader, string, string[])"/>; a data row beyond <paramref name="maxRows"/> is an error naming its line.</summary>
+        public static IEnumerable<Row> Stream(TextReader reader, string sourceName, int maxRows, params string[] columns)
         {
             if (reader == null) throw new ArgumentNullException(nameof(reader));
             if (columns == null || columns.Length == 0) throw new ArgumentException("no columns requested", nameof(columns));
-            return StreamRows(reader, sourceName, columns);
+            if (maxRows < 0) throw new ArgumentOutOfRangeException(nameof(maxRows));
+            return StreamRows(reader, sourceName, maxRows, columns);
         }
 
-        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, string[] columns)
+        static IEnumerable<Row> StreamRows(TextReader reader, string sourceName, int maxRows, string[] columns)
         {
             using (var csv = new CsvReader(reader, sourceName))
             {
@@ -72,8 +77,11 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     if (index[c] < 0)
                         throw csv.Error(csv.HeaderLine, "missing column '" + columns[c] + "': the header must name " + expected + " (found " + Quote(csv.Header) + ")");
                 }
+                int count = 0;
                 while (csv.Read())
                 {
+                    if (++count > maxRows)
+                        throw csv.Error(csv.Line, "more than " + maxRows.ToString(System.Globalization.CultureInfo.InvariantCulture) + " rows (the limit for this file)");
                     var picked = new string[columns.Length];
                     for (int c = 0; c < columns.Length; c++) picked[c] = csv[index[c]];
                     yield return new Row(csv.Line, csv.EndLine, picked);

@@ -42,11 +42,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return Parse(new StringReader(text), sourceName, catalog);
         }
 
-        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it.</summary>
-        public static IReadOnlyList<ParticipantScore> Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog)
+        /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it; more than
+        /// <paramref name="maxRows"/> data rows is an error naming the first row beyond.</summary>
+        public static IReadOnlyList<ParticipantScore> Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog, int maxRows = int.MaxValue)
         {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
-            var rows = CsvTable.Stream(reader, sourceName, Columns);
+            var rows = CsvTable.Stream(reader, sourceName, maxRows, Columns);
             var scores = new List<ParticipantScore>();
             var seen = new Dictionary<string, int>(StringComparer.Ordinal);
             foreach (var row in rows)
