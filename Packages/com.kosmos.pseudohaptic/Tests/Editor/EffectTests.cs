@@ -157,6 +157,26 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheFloorKeepsTheObjectsBottomAboveTheSupport()
+        {
+            var solver = new WeightSolver(WeightModel.FromMass(0.5), NamedProfiles.Paper) { BottomBelowPivot = 0.06 };
+            Assert.That(solver.BottomBelowPivot, Is.EqualTo(0.06));
+            solver.BeginHold(0.3, 0.2, 0); // grabbed 10 cm above its pivot
+            double lowest = double.PositiveInfinity;
+            for (int i = 1; i <= 180; i++)
+            {
+                double t = i / 90.0, hand = 0.3 - 0.5 * Math.Min(1, t); // the hand pushes 0.5 m down, through the table
+                lowest = Math.Min(lowest, solver.Step(new HandSample(hand, true, true, Math.Floor(t * 30) / 30), 1 / 90.0));
+            }
+            Assert.That(lowest, Is.EqualTo(0.06).Within(1e-12), "the pivot stops 6 cm above the floor: the bottom rests on it");
+            var below = new WeightSolver(WeightModel.FromMass(0.5), NamedProfiles.Paper) { BottomBelowPivot = 0.05 };
+            below.BeginHold(0.1, 0.01);
+            Assert.That(below.ObjectY, Is.EqualTo(0.05), "a hold that begins with the bottom below the floor starts on it");
+            foreach (var bad in new[] { -0.01, double.NaN, double.PositiveInfinity })
+                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.BottomBelowPivot = bad).ParamName, Is.EqualTo("BottomBelowPivot"));
+        }
+
+        [Test]
         public void TrackingLossHoldWaitsForSteadyTrackingThenReanchors()
         {
             var hold = Only(new TrackingLossHold(settleTime: 0.1));
