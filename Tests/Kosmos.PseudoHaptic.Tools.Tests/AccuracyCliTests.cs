@@ -173,14 +173,24 @@ public class AccuracyCliTests
         File.WriteAllText(Path.Combine(results, "EstimatorBenchmarks-report.csv"), csv.ToString());
         File.WriteAllText(Path.Combine(results, "Other-report.csv"), "Method,Mean\nPaperLiteral,\"1,234.5 ns\"\n");
         string png = Path.Combine(_dir, "pareto.png");
-        var (code, _, stderr) = Accuracy(Quick.Concat(new[] { "--trace", Write("mine.csv", SmallTrace()), "--costs", results, "--chart", png }).ToArray());
+        var (code, _, stderr) = Accuracy(Quick.Concat(new[] { "--trace", Write("mine.csv", SmallTrace()), "--costs", results, "--chart", png, "--svg" }).ToArray());
         Assert.That(code, Is.EqualTo(0), stderr);
-        Assert.That(File.ReadAllBytes(png).Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }));
+        ChartFiles.AssertPng(png, 1000, 600);
+        ChartFiles.AssertSvg(Path.ChangeExtension(png, ".svg"), 1000, 600);
 
         var costs = BenchmarkCosts.Read(results);
         Assert.That(costs[EstimatorCatalog.Default], Is.EqualTo(26));
         var (code2, _, stderr2) = Accuracy(Quick.Concat(new[] { "--trace", Write("m2.csv", SmallTrace()), "--costs", Path.Combine(results, "Other-report.csv"), "--chart", png }).ToArray());
         Assert.That(code2, Is.EqualTo(2));
         Assert.That(stderr2, Does.Contain("--costs").And.Contain("Estimator"));
+    }
+
+    [Test]
+    public void SvgWithoutAChartIsAnError()
+    {
+        var (code, stdout, stderr) = Accuracy(Quick.Concat(new[] { "--trace", Write("s.csv", SmallTrace()), "--svg" }).ToArray());
+        Assert.That(code, Is.EqualTo(2));
+        Assert.That(stderr, Does.Contain("--svg needs --chart"));
+        Assert.That(stdout, Is.Empty);
     }
 }

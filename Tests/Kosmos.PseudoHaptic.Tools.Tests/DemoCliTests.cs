@@ -30,16 +30,47 @@ public class DemoCliTests
             Assert.That(stderr, Does.Contain("[1/").And.Contain("v_std ="), "progress and calibration");
             Assert.That(stdout, Does.Contain("box B").And.Contain("bottle 2 L").And.Contain("max offset"));
             foreach (var png in new[] { "experiment-1-boxes.png", "experiment-2-bottles.png", "offset-correction.png" })
-            {
-                var bytes = File.ReadAllBytes(Path.Combine(dir, png));
-                Assert.That(bytes.Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), png);
-            }
+                ChartFiles.AssertPng(Path.Combine(dir, png), 1000, 560);
+            Assert.That(Directory.GetFiles(dir, "*.svg"), Is.Empty, "no SVG unless --svg");
             // Experiment 1: same size, B densest, so B lags most; the golf ball stays with the hand.
             double Peak(string file) => File.ReadLines(Path.Combine(dir, "experiment-1-boxes", file)).Skip(1)
                 .Max(l => double.Parse(l.Split(',')[2], CultureInfo.InvariantCulture));
             Assert.That(Peak("box-b.csv"), Is.LessThan(Peak("box-c.csv")));
             Assert.That(Peak("box-c.csv"), Is.LessThan(Peak("box-a.csv")));
             Assert.That(Peak("box-a.csv"), Is.LessThan(Peak("golf-ball.csv")));
+
+            // Issue 10's scene: x and y over time for several masses; heavier trails the sideways carry more.
+            ChartFiles.AssertPng(Path.Combine(dir, "xyz-carry-lift.png"), 1000, 560);
+            Assert.That(stdout, Does.Contain("xyz-carry-lift").And.Contain("max x lag"));
+            double Lag(string file)
+            {
+                var lines = File.ReadAllLines(Path.Combine(dir, "xyz-carry-lift", file));
+                Assert.That(lines[0], Is.EqualTo("t,hand_x,hand_y,hand_z,hand2_x,hand2_y,hand2_z,object_x,object_y,object_z,hands"));
+                var rows = lines.Skip(1).Select(l => l.Split(',').Select(v => double.Parse(v, CultureInfo.InvariantCulture)).ToArray()).ToList();
+                Assert.That(rows.Select(r => r[10]).Distinct(), Is.EquivalentTo(new[] { 1.0, 2.0 }), "one hand, then two");
+                return rows.Where(r => r[0] < 3).Max(r => (r[1] - rows[0][1]) - (r[7] - rows[0][7]));
+            }
+            Assert.That(Lag("box-0_1-kg.csv"), Is.LessThan(Lag("box-0_5-kg.csv")));
+            Assert.That(Lag("box-0_5-kg.csv"), Is.LessThan(Lag("box-2-kg.csv")));
+            Assert.That(Lag("box-2-kg.csv"), Is.LessThan(Lag("box-5-kg.csv")));
+            Assert.That(Lag("box-5-kg.csv"), Is.LessThanOrEqualTo(0.10 + 1e-9));
+        }
+        finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
+    }
+
+    [Test]
+    public void SvgWritesAnSvgBesideEachPng()
+    {
+        string dir = TempDir();
+        try
+        {
+            var (code, _, stderr) = Demo("--svg", "--out", dir);
+            Assert.That(code, Is.EqualTo(0), stderr);
+            foreach (var scene in new[] { "experiment-1-boxes", "experiment-2-bottles", "offset-correction", "xyz-carry-lift" })
+            {
+                ChartFiles.AssertPng(Path.Combine(dir, scene + ".png"), 1000, 560);
+                ChartFiles.AssertSvg(Path.Combine(dir, scene + ".svg"), 1000, 560);
+            }
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
     }
@@ -55,7 +86,7 @@ public class DemoCliTests
             var (code, stdout, stderr) = Demo("--out", dir, "--trace", Path.Combine(RepositoryRoot.Shared, "data", "mocap-hand-100hz.csv"));
             Assert.That(code, Is.EqualTo(0), stderr);
             Assert.That(stdout, Does.Contain("recorded-hand"));
-            Assert.That(File.Exists(Path.Combine(dir, "recorded-hand.png")), Is.True);
+            ChartFiles.AssertPng(Path.Combine(dir, "recorded-hand.png"), 1000, 560);
             Assert.That(File.ReadLines(Path.Combine(dir, "recorded-hand", "box-b.csv")).Count(), Is.GreaterThan(60 * 90));
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }

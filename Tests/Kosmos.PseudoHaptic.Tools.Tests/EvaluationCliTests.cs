@@ -314,7 +314,7 @@ public class EvaluationCliTests
             "chart1-weight-detection.png", "chart2-immersion.png", "chart3-self-assessment.png",
         }));
         foreach (string png in Directory.GetFiles(dir, "*.png"))
-            Assert.That(File.ReadAllBytes(png).Take(8), Is.EqualTo(new byte[] { 137, 80, 78, 71, 13, 10, 26, 10 }), png);
+            ChartFiles.AssertPng(png, 900, 500);
 
         Assert.That(File.ReadAllText(Path.Combine(dir, "table1-weight-detection.csv")),
             Is.EqualTo("participant,score\nP1,4.4\nP2,\nP10,3\n"));
@@ -376,6 +376,19 @@ public class EvaluationCliTests
         Assert.That(code, Is.EqualTo(2));
         Assert.That(stderr, Does.StartWith($"{responses}:2: "));
         Assert.That(Directory.Exists(dir), Is.False);
+    }
+
+    [Test]
+    public void ReportWithSvgWritesAnSvgBesideEachChart()
+    {
+        string dir = Path.Combine(_dir, "report-svg");
+        var (code, stderr, _) = Report("--scores", Write("S.csv", GoodScores), "--out", dir, "--svg");
+        Assert.That(code, Is.EqualTo(0), stderr);
+        foreach (string stem in new[] { "chart1-weight-detection", "chart2-immersion", "chart3-self-assessment" })
+        {
+            ChartFiles.AssertPng(Path.Combine(dir, stem + ".png"), 900, 500);
+            ChartFiles.AssertSvg(Path.Combine(dir, stem + ".svg"), 900, 500);
+        }
     }
 
     [Test]

@@ -5,4 +5,6 @@ using Kosmos.PseudoHaptic.Benchmarks;
 // so the whole suite takes minutes on 2 cores. Examples:
 //   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --filter '*'
 //   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --filter '*Batch*'
+//   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --interleaved   (issue 10's cases, alternating)
+if (args.Length == 1 && args[0] == "--interleaved") { InterleavedTiming.Run(Console.Out); return; }
 BenchmarkSwitcher.FromAssembly(typeof(BenchmarkConfig).Assembly).Run(args, new BenchmarkConfig());

@@ -13,16 +13,17 @@ namespace Kosmos.PseudoHaptic.Cli
         public const string Usage = """
             pseudohaptic — pseudo-haptic weight (Son et al., Electronics 2022) without a headset
 
-              demo   [--out DIR] [--trace FILE]      simulate the paper's scenes, write CSV + PNG, print a summary
-              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain] [--grab-offset D]
+              demo   [--out DIR] [--trace FILE] [--svg]
+                                                     simulate the paper's scenes, write CSV + PNG (+ SVG), print a summary
+              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--grab-offset D] [--break-away D]
               score  --responses R.csv --out S.csv [--questionnaires DIR]
                                                      score questionnaire responses
-              report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]
+              report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]
                                                      tables, statistics and charts of scores
               psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S]
                                                      fit 2AFC answers: PSE, JND, Weber fraction, bootstrap CIs, charts
               compare --scores S.csv --out DIR       paired tests between conditions (t, Wilcoxon, Friedman, Holm)
-              accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS --chart OUT.png]
+              accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS --chart OUT.png [--svg]]
                                                      accuracy of each estimator on Quest-like input (accuracy-vs-time.md)
             """;
 

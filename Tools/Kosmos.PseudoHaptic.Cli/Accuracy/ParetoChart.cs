@@ -12,17 +12,17 @@ namespace Kosmos.PseudoHaptic.Cli.Accuracy;
 /// </summary>
 public static class ParetoChart
 {
-    const int Width = 1000, Height = 600, LabelScale = 1, Gap = 7;
+    const int Width = 1000, Height = 600, Gap = 7;
 
     sealed record Point(string Key, double Ns, double RmsMm, string Label, int Group);
 
-    public static void Save(string path, AccuracyReport report, IReadOnlyDictionary<string, double> costs)
+    public static void Save(string path, AccuracyReport report, IReadOnlyDictionary<string, double> costs, bool svg)
     {
         var groups = new[]
         {
-            (Label: "estimators", Colour: Palette.Get(0)),
-            (Label: "default (deadband)", Colour: Palette.Get(1)),
-            (Label: "paper-literal baseline", Colour: Palette.Get(2)),
+            (Label: "estimators", Colour: Charts.Colour(0)),
+            (Label: "default (deadband)", Colour: Charts.Colour(1)),
+            (Label: "paper-literal baseline", Colour: Charts.Colour(2)),
         };
         var points = new List<Point>();
         foreach (var key in EstimatorCatalog.EstimatorKeys.Append(EstimatorCatalog.PaperLiteral))
@@ -42,48 +42,47 @@ public static class ParetoChart
         double Y(Point p) => Off(p) ? 0.97 * top : p.RmsMm;
         string Text(Point p) => Off(p) ? $"{p.Label}, {p.RmsMm.ToString("0.0", CultureInfo.InvariantCulture)} mm (off scale)" : p.Label;
 
+        // Log x: the points are placed at log10(ns); the ticks name the ns (1, 2, 5 per decade, minor lines between).
         double xMin = Math.Pow(10, Math.Floor(Math.Log10(points.Min(p => p.Ns)))), xMax = Math.Pow(10, Math.Ceiling(Math.Log10(points.Max(p => p.Ns))));
         if (xMax <= xMin) xMax = xMin * 10;
-        var chart = new LineChart(Width, Height)
-        {
-            Title = $"RMS error vs ns per update, {report.MassKg.ToString("0.###", CultureInfo.InvariantCulture)} kg, Quest-like input (label: added lag)",
-            XLabel = "ns per update (BenchmarkDotNet, log scale)",
-            YLabel = "RMS error vs reference, mm",
-            LogX = true,
-            XMin = xMin,
-            XMax = xMax,
-            YMin = 0,
-            YMax = top,
-            LegendPosition = LegendPosition.BottomRight,
-        };
+        var plot = Charts.Create(
+            $"RMS error vs ns per update, {report.MassKg.ToString("0.###", CultureInfo.InvariantCulture)} kg, Quest-like input (label: added lag)",
+            "ns per update (BenchmarkDotNet, log scale)",
+            "RMS error vs reference (mm)");
+        plot.Axes.Bottom.TickGenerator = Charts.LogTicks(xMin, xMax);
         for (int g = 0; g < groups.Length; g++)
         {
             var mine = points.Where(p => p.Group == g).ToList();
-            if (mine.Count > 0) chart.AddPoints(mine.Select(p => p.Ns).ToList(), mine.Select(Y).ToList(), groups[g].Colour, groups[g].Label);
+            if (mine.Count > 0) Charts.Points(plot, mine.Select(p => Math.Log10(p.Ns)).ToList(), mine.Select(Y).ToList(), groups[g].Label, groups[g].Colour);
         }
-        var raster = chart.Render();
+        plot.Legend.Alignment = ScottPlot.Alignment.LowerRight;
+        plot.Axes.SetLimits(Math.Log10(xMin), Math.Log10(xMax), 0, top);
 
-        // The plot frame and the legend box, in pixels, as the chart laid them out.
-        var (left, upper) = chart.DataToPixel(xMin, top);
-        var (right, lower) = chart.DataToPixel(xMax, 0);
-        int s = chart.TextScale, inner = 4 * s, rowHeight = BitmapFont.MeasureHeight(s);
-        var legendLabels = groups.Where((g, i) => points.Any(p => p.Group == i)).Select(g => g.Label).ToList();
-        int legendW = inner + 14 * s + 2 * inner + legendLabels.Max(l => BitmapFont.MeasureWidth(l, s)) + inner;
-        int legendH = 2 * inner + legendLabels.Count * rowHeight + (legendLabels.Count - 1) * 2 * s;
-        var taken = new List<(double L, double T, double R, double B)> { (right - 10 - legendW - 4, lower - 10 - legendH - 4, right, lower) };
+        // Labels beside their points where they overlap no other label, point or the legend, found in pixels of
+        // the laid-out chart.
+        plot.RenderInMemory(Width, Height);
+        var frame = plot.RenderManager.LastRender.DataRect;
+        double legendW, legendH;
+        using (var legendImage = plot.GetLegendImage()) { legendW = legendImage.Width; legendH = legendImage.Height; }
+        var legend = (L: frame.Right - legendW - 14, T: frame.Bottom - legendH - 14, R: (double)frame.Right, B: (double)frame.Bottom);
+        var taken = new List<(double L, double T, double R, double B)> { legend };
+        (double X, double Y) Pixel(Point p)
+        {
+            var px = plot.GetPixel(new ScottPlot.Coordinates(Math.Log10(p.Ns), Y(p)));
+            return (px.X, px.Y);
+        }
         foreach (var p in points)
         {
-            var (px, py) = chart.DataToPixel(p.Ns, Y(p));
+            var (px, py) = Pixel(p);
             taken.Add((px - 6, py - 6, px + 6, py + 6));
         }
 
-        int h = BitmapFont.MeasureHeight(LabelScale);
-        var caption = new Rgb(0x20, 0x20, 0x20);
+        const double h = Charts.NoteHeight;
         foreach (var p in points.OrderBy(p => p.Ns))
         {
-            var (px, py) = chart.DataToPixel(p.Ns, Y(p));
+            var (px, py) = Pixel(p);
             string text = Text(p);
-            int w = BitmapFont.MeasureWidth(text, LabelScale);
+            double w = Charts.NoteWidth(text);
             var candidates = new List<(double X, double Y)>
             {
                 (px + Gap, py - h / 2.0), (px - Gap - w, py - h / 2.0), (px + Gap, py - Gap - h), (px + Gap, py + Gap - 2),
@@ -100,20 +99,23 @@ public static class ParetoChart
             foreach (var c in candidates)
             {
                 var box = (L: c.X - 1, T: c.Y - 1, R: c.X + w + 1, B: c.Y + h + 1);
-                bool inside = box.L >= left + 2 && box.R <= right - 2 && box.T >= upper + 2 && box.B <= lower - 2;
+                bool inside = box.L >= frame.Left + 2 && box.R <= frame.Right - 2 && box.T >= frame.Top + 2 && box.B <= frame.Bottom - 2;
                 if (inside && !taken.Any(t => box.L < t.R && box.R > t.L && box.T < t.B && box.B > t.T)) { place = c; break; }
             }
-            int x = (int)Math.Round(place.X), y = (int)Math.Round(place.Y);
-            taken.Add((x - 1, y - 1, x + w + 1, y + h + 1));
+            taken.Add((place.X - 1, place.Y - 1, place.X + w + 1, place.Y + h + 1));
             // A label pushed away from its point gets a thin leader line to it.
-            double nx = Math.Clamp(px, x, x + w), ny = Math.Clamp(py, y, y + h);
+            double nx = Math.Clamp(px, place.X, place.X + w), ny = Math.Clamp(py, place.Y, place.Y + h);
             if (Math.Sqrt((px - nx) * (px - nx) + (py - ny) * (py - ny)) > Gap + 4)
-                raster.DrawLine(px, py, nx, ny, new Rgb(0xA0, 0xA0, 0xA0), 1);
-            BitmapFont.DrawText(raster, x, y, text, caption, LabelScale);
+            {
+                var end = plot.GetCoordinates(new ScottPlot.Pixel((float)nx, (float)ny));
+                var leader = plot.Add.Line(Math.Log10(p.Ns), Y(p), end.X, end.Y);
+                leader.Color = ScottPlot.Color.FromHex("#A0A0A0");
+                leader.LineWidth = 1;
+            }
+            var at = plot.GetCoordinates(new ScottPlot.Pixel((float)place.X, (float)place.Y));
+            Charts.Note(plot, at.X, at.Y, text);
         }
 
-        string? directory = Path.GetDirectoryName(Path.GetFullPath(path));
-        if (!string.IsNullOrEmpty(directory)) Directory.CreateDirectory(directory);
-        File.WriteAllBytes(path, raster.ToPng());
+        Charts.Save(plot, path, Width, Height, svg);
     }
 }

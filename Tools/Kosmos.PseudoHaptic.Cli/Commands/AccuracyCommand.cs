@@ -1,18 +1,19 @@
 using Kosmos.PseudoHaptic.Cli.Accuracy;
 using Kosmos.PseudoHaptic.Cli.Files;
+using Kosmos.PseudoHaptic.Cli.Plotting;
 
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
 /// <c>pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none]
-/// [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png]</c>: what each estimator,
+/// [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png [--svg]]</c>: what each estimator,
 /// precision and integration scheme costs in accuracy on Quest-like input. Prints the tables on stdout
 /// (progress on stderr). Deterministic: the same arguments print the same tables. accuracy-vs-time.md says
 /// what every column means.
 /// </summary>
 public static class AccuracyCommand
 {
-    public const string Usage = "pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png]";
+    public const string Usage = "pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png [--svg]]";
 
     public const string MocapRelative = "../shared/data/mocap-hand-100hz.csv";
     public const double DefaultMassKg = 1.0;
@@ -23,7 +24,7 @@ public static class AccuracyCommand
 
     public static int Run(string[] args)
     {
-        var o = new Options(args, "--trace", "--lifts", "--mass-kg", "--standard-speed", "--mocap", "--long-minutes", "--csv", "--costs", "--chart");
+        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--trace", "--lifts", "--mass-kg", "--standard-speed", "--mocap", "--long-minutes", "--csv", "--costs", "--chart");
         double mass = o.Number("--mass-kg") ?? DefaultMassKg;
         if (!(mass > 0) || double.IsInfinity(mass))
             throw new CliException($"option --mass-kg: must be a finite number greater than 0, got {NumberText.Format(mass)}");
@@ -35,6 +36,7 @@ public static class AccuracyCommand
             throw new CliException($"option --long-minutes: must lie in [0, {MaxLongMinutes:0}] (the long run is held in memory), got {NumberText.Format(minutes)}");
         string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
         if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
+        if (svg && chartPath == null) throw new CliException($"option {Charts.SvgFlag} needs --chart (the SVG is written beside the PNG)");
         // Outputs are checked before anything is read: never an input, never a folder, never a missing folder.
         string? trace = o.Get("--trace"), mocapOption = o.Get("--mocap"), csv = o.Get("--csv");
         var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapOption == "none" ? null : mocapOption), new NamedPath("--costs", costsPath) };
@@ -75,7 +77,9 @@ public static class AccuracyCommand
         csvOut?.Write(w => AccuracyTable.WriteCsv(w, report));
         if (chartOut != null && costs != null)
         {
-            chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs));
+            // The PNG is written atomically; the SVG (--svg) is written beside the final path.
+            chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs, false));
+            if (svg) ParetoChart.Save(chartPath!, report, costs, true);
             Console.Error.WriteLine($"accuracy: chart written to {Messages.Path(chartPath!)}");
         }
         return 0;

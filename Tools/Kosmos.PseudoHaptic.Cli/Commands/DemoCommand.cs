@@ -10,7 +10,8 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// standard speed from synthetic golf-ball lifts, then lifts Experiment 1's boxes and Experiment 2's water
 /// bottles with a simulated Quest 2 hand (30 Hz poses, 45 ms late, 1 mm jitter, 90 Hz frames); with
 /// --trace, also replays a recorded hand degraded the same way. Writes a CSV per run and a PNG per scene
-/// (with --svg, an SVG beside it), and prints a summary.
+/// (with --svg, an SVG beside it), and prints a summary. Issue 10's 3D scene (<see cref="DemoThreeDimensions"/>:
+/// a sideways carry, a high lift and a two-hand lift under <c>xyz</c>) is written to <c>xyz-carry-lift</c>.
 /// </summary>
 public static class DemoCommand
 {
@@ -37,6 +38,7 @@ public static class DemoCommand
         var scenes = Scenes(recorded, tracePath);
         int total = scenes.Sum(s => s.Items.Count), done = 0;
         var results = new List<Result>();
+        var results3D = new List<DemoThreeDimensions.Result>();
         var folder = OutputFolder.Begin("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
         folder.Build(temp =>
         {
@@ -58,8 +60,10 @@ public static class DemoCommand
                 Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg));
                 results.AddRange(sceneResults);
             }
+            results3D = DemoThreeDimensions.Run(temp, standardSpeed, svg, Console.Error);
         });
         PrintSummary(results, standardSpeed, outDir);
+        PrintSummary3D(results3D);
         return 0;
     }
 
@@ -170,6 +174,15 @@ public static class DemoCommand
             Console.WriteLine($"{r.Scene.Slug,-22} {r.Item.Name,-14} {NumberText.Fixed(r.Item.MassKg, 3),8} {NumberText.Fixed(r.Gain, 3),6} {NumberText.Fixed(r.MaxOffset, 3),13} {NumberText.Fixed(r.EndOffset, 3),13}");
         Console.WriteLine();
         Console.WriteLine($"offset = hand − object (positive: the object lags below the hand). CSV and PNG files in {Messages.OneLine(Path.GetFullPath(outDir))}");
+    }
+
+    static void PrintSummary3D(List<DemoThreeDimensions.Result> results)
+    {
+        Console.WriteLine();
+        Console.WriteLine($"{DemoThreeDimensions.Slug} (xyz): one hand carries 0.4 m sideways and lifts 0.8 m; then two hands lift 0.4 m");
+        Console.WriteLine($"{"object",-14} {"mass kg",8} {"max x lag m",12} {"high lift max offset m",23} {"two-hand max offset m",22}");
+        foreach (var r in results)
+            Console.WriteLine($"{r.Name,-14} {NumberText.Fixed(r.MassKg, 3),8} {NumberText.Fixed(r.MaxLateralLag, 3),12} {NumberText.Fixed(r.MaxHighLiftOffset, 3),23} {NumberText.Fixed(r.MaxTwoHandOffset, 3),22}");
     }
 
     static string Slug(string name) => new string(name.ToLowerInvariant().Select(c => char.IsLetterOrDigit(c) || c == '.' ? c : '-').ToArray()).Trim('-');

@@ -4,83 +4,75 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// One chart per part of the report: each participant's score as a stem from the bottom of the scale with a
-/// marker on top (a bar chart drawn with lines), the mean as a dashed line and its 95 % CI as dotted ones;
-/// incomplete participants as grey dots on the axis. x is the participant's place in the report's order.
-/// The figures go in the x-axis label rather than a legend, which would hide the tallest stems.
+/// One chart per part of the report: each participant's score as a bar rising from the bottom of the scale,
+/// the participants named under their bars (in the report's order), the mean as a dashed black line and its
+/// 95 % CI as a grey band, both with their figures in the legend (outside the plot, so no bar is hidden).
+/// Incomplete participants are grey dots on the scale's bottom, "(incomplete)" under their name.
 /// </summary>
 static class EvaluationCharts
 {
-    /// <summary>Above this many participants the markers carry no name labels.</summary>
+    /// <summary>Above this many participants the bars are numbered rather than named.</summary>
     const int MaxLabelled = 24;
 
-    public static byte[] Png(EvaluationReport.Part part)
+    public const int Height = 500;
+
+    /// <summary>Width of a part's chart: wider for more participants.</summary>
+    public static int Width(EvaluationReport.Part part) => Math.Clamp(400 + 50 * part.Scores.Count, 900, 1800);
+
+    public static byte[] Png(EvaluationReport.Part part) => Charts.Png(Plot(part), Width(part), Height);
+
+    public static string Svg(EvaluationReport.Part part) => Charts.Svg(Plot(part), Width(part), Height);
+
+    public static ScottPlot.Plot Plot(EvaluationReport.Part part)
     {
         var q = part.Questionnaire;
         var scores = part.Scores;
         int n = scores.Count;
-        var chart = new LineChart(Math.Clamp(300 + 45 * n, 900, 1800), 500)
-        {
-            Title = $"Table {part.Number}. {q.Title}",
-            XLabel = AxisLabel(part.Statistics),
-            YLabel = "score",
-            XMin = 0.5,
-            XMax = Math.Max(1, n) + 0.5,
-            YMin = q.ScaleMin,
-            YMax = q.ScaleMax + 0.1 * (q.ScaleMax - q.ScaleMin),
-            ShowLegend = false,
-        };
+        var plot = Charts.Create($"Table {part.Number}. {q.Title}", "participant",
+            $"score ({NumberText.Format(q.ScaleMin)} to {NumberText.Format(q.ScaleMax)})");
 
-        var stemX = new List<double>();
-        var stemY = new List<double>();
-        var topX = new List<double>();
-        var topY = new List<double>();
-        var topLabels = new List<string?>();
+        var colour = Charts.Colour(part.Number - 1);
+        var bars = new List<ScottPlot.Bar>();
         var missingX = new List<double>();
-        var missingY = new List<double>();
+        var names = new ScottPlot.TickGenerators.NumericManual();
         for (int i = 0; i < n; i++)
         {
             double x = i + 1;
             if (scores[i].Score is double s)
-            {
-                stemX.AddRange(new[] { x, x, double.NaN });
-                stemY.AddRange(new[] { (double)q.ScaleMin, s, double.NaN });
-                topX.Add(x);
-                topY.Add(s);
-                topLabels.Add(n <= MaxLabelled ? scores[i].Participant : null);
-            }
+                bars.Add(new ScottPlot.Bar { Position = x, Value = s, ValueBase = q.ScaleMin, FillColor = colour, LineWidth = 0, Size = 0.7 });
             else
-            {
                 missingX.Add(x);
-                missingY.Add(q.ScaleMin);
-            }
+            if (n <= MaxLabelled) names.AddMajor(x, scores[i].Score is null ? scores[i].Participant + "\n(incomplete)" : scores[i].Participant);
         }
+        if (n <= MaxLabelled) plot.Axes.Bottom.TickGenerator = names;
 
-        var colour = Palette.Get(part.Number - 1);
-        if (stemX.Count > 0) chart.AddLine(stemX, stemY, colour, "");
-        if (topX.Count > 0) chart.AddPoints(topX, topY, colour, "score", topLabels);
+        if (bars.Count > 0)
+        {
+            var barPlot = plot.Add.Bars(bars);
+            barPlot.LegendText = "score";
+        }
         if (missingX.Count > 0)
-            chart.AddPoints(missingX, missingY, Palette.Get(7), "incomplete",
-                n <= MaxLabelled ? missingX.Select(x => (string?)(scores[(int)x - 1].Participant + " incomplete")).ToList() : null);
+            Charts.Points(plot, missingX, missingX.Select(_ => (double)q.ScaleMin).ToList(), "incomplete", Charts.Colour(7));
 
         var st = part.Statistics;
-        double[] across = { 0.5, Math.Max(1, n) + 0.5 };
-        if (double.IsFinite(st.Mean)) chart.AddLine(across, new[] { st.Mean, st.Mean }, Rgb.Black, "mean", dashed: true);
-        if (double.IsFinite(st.ConfidenceLow))
+        if (double.IsFinite(st.ConfidenceLow) && double.IsFinite(st.ConfidenceHigh))
         {
-            var ci = Palette.Get(7);
-            chart.AddLine(across, new[] { st.ConfidenceLow, st.ConfidenceLow }, ci, "95% CI", dashed: true);
-            chart.AddLine(across, new[] { st.ConfidenceHigh, st.ConfidenceHigh }, ci, "", dashed: true);
+            var band = plot.Add.VerticalSpan(st.ConfidenceLow, st.ConfidenceHigh);
+            band.FillStyle.Color = Charts.Colour(7).WithAlpha(0.35);
+            band.LineStyle.Width = 0;
+            band.LegendText = $"95% CI {NumberText.Fixed(st.ConfidenceLow, 2)} to {NumberText.Fixed(st.ConfidenceHigh, 2)}";
         }
-        return chart.ToPng();
-    }
+        if (double.IsFinite(st.Mean))
+        {
+            var mean = plot.Add.HorizontalLine(st.Mean);
+            mean.Color = Charts.Black;
+            mean.LineWidth = 2;
+            mean.LinePattern = ScottPlot.LinePattern.Dashed;
+            mean.LegendText = $"mean {NumberText.Fixed(st.Mean, 2)}";
+        }
 
-    static string AxisLabel(SummaryStatistics st)
-    {
-        if (!double.IsFinite(st.Mean)) return "participant (no complete scores)";
-        string label = $"participant; mean {NumberText.Fixed(st.Mean, 2)} (black)";
-        if (double.IsFinite(st.ConfidenceLow))
-            label += $", 95% CI {NumberText.Fixed(st.ConfidenceLow, 2)} to {NumberText.Fixed(st.ConfidenceHigh, 2)} (grey)";
-        return label;
+        plot.ShowLegend(ScottPlot.Edge.Right);
+        plot.Axes.SetLimits(0.4, Math.Max(1, n) + 0.6, q.ScaleMin, q.ScaleMax + 0.1 * (q.ScaleMax - q.ScaleMin));
+        return plot;
     }
 }

@@ -4,19 +4,19 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// <c>pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]</c>: the paper's
+/// <c>pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]</c>: the paper's
 /// per-participant Tables 1–3, summary statistics per part (n, mean, SD, median, min, max, 95 % CI, and
 /// Cronbach's α when item-level responses are given) and a chart per part. Writes DIR/report.md,
-/// DIR/summary.csv, DIR/tableN-ID.csv and DIR/chartN-ID.png. A malformed S.csv (or R.csv) exits 2 with one
+/// DIR/summary.csv, DIR/tableN-ID.csv and DIR/chartN-ID.png (with --svg, DIR/chartN-ID.svg too). A malformed S.csv (or R.csv) exits 2 with one
 /// line "FILE:LINE: reason" on stderr and writes nothing.
 /// </summary>
 public static class ReportCommand
 {
-    public const string Usage = "pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR]";
+    public const string Usage = "pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]";
 
     public static int Run(string[] args) => EvaluationInputs.Guard("report", Usage, () =>
     {
-        var o = new Options(args, "--scores", "--out", "--responses", "--questionnaires");
+        var o = new Options(Plotting.Charts.TakeSvgFlag(args, out bool svg), "--scores", "--out", "--responses", "--questionnaires");
         string scoresPath = o.Require("--scores");
         string outDir = o.Require("--out");
         string? responsesPath = o.Get("--responses");
@@ -41,6 +41,7 @@ public static class ReportCommand
             if (part.Scores.Count == 0) continue;
             files.Add((part.TableFile, utf8.GetBytes(EvaluationReport.TableCsv(part))));
             files.Add((part.ChartFile, EvaluationCharts.Png(part)));
+            if (svg) files.Add((Path.ChangeExtension(part.ChartFile, ".svg"), utf8.GetBytes(EvaluationCharts.Svg(part))));
         }
 
         OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>

@@ -161,16 +161,50 @@ public static class Charts
         return scatter;
     }
 
-    /// <summary>A small text beside a data point (a point's name).</summary>
+    /// <summary>Font size of a <see cref="Note"/> (pixels).</summary>
+    public const float NoteSize = 12;
+
+    /// <summary>Height of a <see cref="Note"/>'s box (pixels), for placing notes apart.</summary>
+    public const double NoteHeight = NoteSize + 4;
+
+    /// <summary>Width of a <see cref="Note"/>'s box (pixels), for placing notes apart.</summary>
+    public static double NoteWidth(string text)
+    {
+        var style = new LabelStyle { FontSize = NoteSize, FontName = FontName.Value, Text = text ?? "" };
+        using var paint = Paint.NewDisposablePaint();
+        return style.Measure(text ?? "", paint).Width;
+    }
+
+    /// <summary>A small text whose top-left corner is at data point (x, y): a point's name.</summary>
     public static void Note(Plot plot, double x, double y, string text)
     {
         if (!double.IsFinite(x) || !double.IsFinite(y) || string.IsNullOrEmpty(text)) return;
         var note = plot.Add.Text(text, x, y);
-        note.LabelFontSize = 12;
+        note.LabelFontSize = NoteSize;
+        note.LabelFontName = FontName.Value;
         note.LabelFontColor = TextColour;
-        note.LabelAlignment = Alignment.LowerLeft;
-        note.LabelOffsetX = 6;
-        note.LabelOffsetY = -4;
+        note.LabelAlignment = Alignment.UpperLeft;
+    }
+
+    /// <summary>
+    /// Ticks for a base-10 logarithmic axis whose data are plotted as log10(value) between log10(min) and
+    /// log10(max): labelled at 1, 2 and 5 of each decade (in the values' own units), minor lines between.
+    /// </summary>
+    public static ITickGenerator LogTicks(double min, double max)
+    {
+        var ticks = new ScottPlot.TickGenerators.NumericManual();
+        for (int decade = (int)Math.Floor(Math.Log10(min)); decade <= (int)Math.Ceiling(Math.Log10(max)); decade++)
+        {
+            for (int m = 1; m <= 9; m++)
+            {
+                double value = m * Math.Pow(10, decade);
+                if (value < min * (1 - 1e-9) || value > max * (1 + 1e-9)) continue;
+                if (m == 1 || m == 2 || m == 5) ticks.AddMajor(Math.Log10(value), value.ToString("G6", System.Globalization.CultureInfo.InvariantCulture));
+                else ticks.AddMinor(Math.Log10(value));
+            }
+        }
+
+        return ticks;
     }
 
     /// <summary>
@@ -241,7 +275,7 @@ public static class Charts
         if (width <= 0 || width > MaxSide) throw new ArgumentOutOfRangeException(nameof(width), width, $"Width must be 1..{MaxSide}.");
         if (height <= 0 || height > MaxSide) throw new ArgumentOutOfRangeException(nameof(height), height, $"Height must be 1..{MaxSide}.");
         // A legend only when a series has a name.
-        plot.Legend.IsVisible = plot.GetPlottables().Any(p => p.LegendItems.Any(item => !string.IsNullOrEmpty(item.LabelText)));
+        if (!plot.GetPlottables().Any(p => p.LegendItems.Any(item => !string.IsNullOrEmpty(item.LabelText)))) plot.HideLegend();
 
         // Lay the plot out once to learn the tick steps, then label every tick of an axis with the decimals its
         // step needs (0.80, 0.85, 0.90 rather than 0.8, 0.85, 0.9).

@@ -11,12 +11,17 @@ namespace Kosmos.PseudoHaptic.Cli.Traces;
 /// (s) and <c>hand_y</c> (m; may be NaN, Infinity, inf in any case, or empty for no pose); optional
 /// <c>tracked</c> (1/0, default 1) and <c>pose_t</c> (s; empty or non-finite for unknown). Blank lines are
 /// skipped. Errors name the file and line (the header is line 1). Memory is constant per row.
+/// Issue 10 adds, optionally: <c>hand_x,hand_z</c> (both or neither), a second hand <c>hand2_y</c> (required
+/// by any other <c>hand2_*</c>, <c>tracked2</c> or <c>pose2_t</c>), <c>hand2_x,hand2_z</c> (both or neither, only
+/// with <c>hand_x,hand_z</c>), <c>tracked2</c>, <c>pose2_t</c>, each with the first hand's number rules
+/// (<see cref="TryReadRow"/>).
 /// </summary>
 public sealed class TraceCsvReader : IDisposable
 {
     readonly CsvReader _csv;
     readonly string _name;
     readonly int _t, _handY, _tracked, _poseT;
+    readonly int _handX, _handZ, _hand2X, _hand2Y, _hand2Z, _tracked2, _pose2T;
 
     public TraceCsvReader(TextReader reader, string name)
     {
@@ -29,17 +34,95 @@ public sealed class TraceCsvReader : IDisposable
             _handY = _csv.IndexOf("hand_y");
             _tracked = _csv.IndexOf("tracked");
             _poseT = _csv.IndexOf("pose_t");
+            _handX = _csv.IndexOf("hand_x");
+            _handZ = _csv.IndexOf("hand_z");
+            _hand2X = _csv.IndexOf("hand2_x");
+            _hand2Y = _csv.IndexOf("hand2_y");
+            _hand2Z = _csv.IndexOf("hand2_z");
+            _tracked2 = _csv.IndexOf("tracked2");
+            _pose2T = _csv.IndexOf("pose2_t");
         }
         catch (EvaluationFormatException e) { throw new CliException(e.Message); }
-        if (_t < 0) throw Error(_csv.HeaderLine, "missing column 't'");
-        if (_handY < 0) throw Error(_csv.HeaderLine, "missing column 'hand_y'");
+        int header = _csv.HeaderLine;
+        if (_t < 0) throw Error(header, "missing column 't'");
+        if (_handY < 0) throw Error(header, "missing column 'hand_y'");
+        if ((_handX < 0) != (_handZ < 0))
+            throw Error(header, _handX >= 0 ? "column 'hand_x' needs column 'hand_z' (both or neither)" : "column 'hand_z' needs column 'hand_x' (both or neither)");
+        if (_hand2Y < 0)
+        {
+            foreach (var (index, column) in new[] { (_hand2X, "hand2_x"), (_hand2Z, "hand2_z"), (_tracked2, "tracked2"), (_pose2T, "pose2_t") })
+                if (index >= 0) throw Error(header, $"column '{column}' needs column 'hand2_y'");
+        }
+        if ((_hand2X < 0) != (_hand2Z < 0))
+            throw Error(header, _hand2X >= 0 ? "column 'hand2_x' needs column 'hand2_z' (both or neither)" : "column 'hand2_z' needs column 'hand2_x' (both or neither)");
+        if (_hand2X >= 0 && _handX < 0)
+            throw Error(header, "columns 'hand2_x' and 'hand2_z' need columns 'hand_x' and 'hand_z'");
     }
+
+    /// <summary>The trace has <c>hand_x</c> and <c>hand_z</c>.</summary>
+    public bool HasHorizontal => _handX >= 0;
+
+    /// <summary>The trace has a second hand (<c>hand2_y</c>).</summary>
+    public bool HasSecondHand => _hand2Y >= 0;
+
+    /// <summary>The second hand has its own <c>hand2_x</c> and <c>hand2_z</c>.</summary>
+    public bool HasSecondHorizontal => _hand2X >= 0;
 
     /// <summary>The line number of the row last read (where it starts).</summary>
     public int Line => _csv.Line;
 
-    /// <summary>Reads the next row; false at the end of the file.</summary>
+    /// <summary>Reads the next row's first hand (<c>t,hand_y,tracked,pose_t</c>); false at the end of the file.
+    /// The other columns are still checked.</summary>
     public bool TryRead(out TraceFrame frame)
+    {
+        bool ok = TryReadRow(out TraceRow row);
+        frame = row.First;
+        return ok;
+    }
+
+    /// <summary>Reads the next row with every hand column; false at the end of the file. A second hand without
+    /// its own x/z takes the first hand's (x/z then come from the first hand alone).</summary>
+    public bool TryReadRow(out TraceRow row)
+    {
+        row = default;
+        if (!ReadFirst(out row.First)) return false;
+        int line = _csv.Line;
+        row.HandX = _handX >= 0 ? Coordinate(_handX, "hand_x", line) : 0;
+        row.HandZ = _handZ >= 0 ? Coordinate(_handZ, "hand_z", line) : 0;
+        if (_hand2Y >= 0)
+        {
+            row.Hand2Y = Coordinate(_hand2Y, "hand2_y", line);
+            row.Hand2X = _hand2X >= 0 ? Coordinate(_hand2X, "hand2_x", line) : row.HandX;
+            row.Hand2Z = _hand2Z >= 0 ? Coordinate(_hand2Z, "hand2_z", line) : row.HandZ;
+            row.Tracked2 = _tracked2 < 0 || Tracked(_tracked2, "tracked2", line);
+            row.Pose2T = _pose2T >= 0 ? Coordinate(_pose2T, "pose2_t", line) : double.NaN;
+        }
+        else
+        {
+            row.Hand2X = row.Hand2Y = row.Hand2Z = row.Pose2T = double.NaN;
+            row.Tracked2 = false;
+        }
+        return true;
+    }
+
+    /// <summary>A number column where empty means unknown (NaN).</summary>
+    double Coordinate(int index, string column, int line)
+    {
+        var s = _csv.Span(index);
+        double v = double.NaN;
+        if (s.Length > 0 && !NumberText.TryParse(s, out v)) throw Error(line, $"column '{column}': cannot parse '{Short(s)}' as a number");
+        return v;
+    }
+
+    bool Tracked(int index, string column, int line)
+    {
+        var s = _csv.Span(index);
+        if (s.SequenceEqual("0") || s.Equals("false", StringComparison.OrdinalIgnoreCase)) return false;
+        if (s.Length == 0 || s.SequenceEqual("1") || s.Equals("true", StringComparison.OrdinalIgnoreCase)) return true;
+        throw Error(line, $"column '{column}': expected 1 or 0, found '{Short(s)}'");
+    }
+
+    bool ReadFirst(out TraceFrame frame)
     {
         frame = default;
         try

@@ -13,5 +13,8 @@ namespace Kosmos.PseudoHaptic
         ObjectMotion = 3,
         /// <summary>On the object's new height, after the speed limit.</summary>
         Position = 4,
+        /// <summary>Acts in <see cref="WeightSolver3D"/>, outside the y pipeline (x/z, the second hand, break-away):
+        /// the y solver never calls it.</summary>
+        Hold = 5,
     }
 }

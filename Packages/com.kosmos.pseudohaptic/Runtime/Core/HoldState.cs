@@ -20,6 +20,9 @@ namespace Kosmos.PseudoHaptic
         /// hand and object together. The solver and its effects move this; <see cref="ObjectY"/> follows it.</summary>
         public double HeldY;
 
+        /// <summary><see cref="HeldY"/> when the hold began, m (<see cref="HeightDeceleration"/> measures from it).</summary>
+        public double StartY;
+
         /// <summary>Frame time since the hold began, s (double: it never loses the millisecond in hours).</summary>
         public double Time;
 

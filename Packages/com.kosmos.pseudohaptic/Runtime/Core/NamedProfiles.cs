@@ -9,6 +9,7 @@ namespace Kosmos.PseudoHaptic
         public const string PaperName = "paper";
         public const string PaperExperimentName = "paper-experiment";
         public const string GainName = "gain";
+        public const string XyzName = "xyz";
 
         /// <summary>
         /// All of the paper's effects: Eq. 4–6 gain, faster moves further (§3.1), the offset correction past 0.2 m,
@@ -31,7 +32,23 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         public static readonly WeightProfile Gain = new WeightProfile(GainName, new WeightEffect[] { new MotionDeadband(), new WeightGain(), new FloorClamp() });
 
-        public static IReadOnlyList<string> Names { get; } = new[] { PaperName, PaperExperimentName, GainName };
+        /// <summary>
+        /// <see cref="Paper"/> in three dimensions and with both hands (for <see cref="WeightSolver3D"/>): height
+        /// deceleration (first among the object-motion effects, so the speed cap, the lowering guard and the offset
+        /// correction act on its result), lateral inertia and two hands, at their defaults.
+        /// </summary>
+        public static readonly WeightProfile Xyz = BuildXyz();
+
+        public static IReadOnlyList<string> Names { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName };
+
+        static WeightProfile BuildXyz()
+        {
+            var effects = new List<WeightEffect> { new HeightDeceleration() };
+            effects.AddRange(Paper.Effects);
+            effects.Add(new LateralInertia());
+            effects.Add(new TwoHands());
+            return new WeightProfile(XyzName, effects, Paper.Limits, Paper.HandFilter);
+        }
 
         /// <summary>The preset of that name; throws naming the value and the known names otherwise.</summary>
         public static WeightProfile Get(string name)
@@ -41,6 +58,7 @@ namespace Kosmos.PseudoHaptic
                 case PaperName: return Paper;
                 case PaperExperimentName: return PaperExperiment;
                 case GainName: return Gain;
+                case XyzName: return Xyz;
                 default:
                     throw new ArgumentException("profile '" + name + "' is unknown; known profiles: " + string.Join(", ", Names) + ".", "profile");
             }

@@ -42,7 +42,7 @@ namespace Kosmos.PseudoHaptic
             }
             // Stable sort by stage keeps the given order within a stage.
             var sorted = new List<WeightEffect>(list.Count);
-            for (int stage = (int)EffectStage.Input; stage <= (int)EffectStage.Position; stage++)
+            for (int stage = (int)EffectStage.Input; stage <= (int)EffectStage.Hold; stage++)
                 foreach (var e in list)
                     if ((int)e.Stage == stage) sorted.Add(e);
             _all = sorted.ToArray();

@@ -140,6 +140,7 @@ namespace Kosmos.PseudoHaptic
                 _state.HeldY = objectY;
             }
             _state.ObjectY = objectY;
+            _state.StartY = _state.HeldY;
             _filter?.Reset(_state.HandY);
             ResetEffects(_state.HandY);
         }

@@ -1,0 +1,89 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
+{
+    /// <summary>Issue 10, break-away: off by default; with a distance, the hold ends by itself once the hand is that far
+    /// from where it grabbed, reported in the solver's state; the object stays where it was let go.</summary>
+    public class BreakAwayTests
+    {
+        // A fast, high lift of a heavy object: the object lags up to the offset correction's 0.22 m below the hand.
+        static HandPath3D HighLift => (double t, out double x, out double y, out double z) =>
+        {
+            x = 0.1;
+            y = 0.9 + 0.8 * Headset3D.MinJerk(t, 0.3, 0.8, 0, 1);
+            z = 0.2;
+        };
+
+        [Test]
+        public void OffByDefaultInEveryNamedProfile([Values("paper", "paper-experiment", "gain", "xyz")] string name)
+        {
+            Assert.That(NamedProfiles.Get(name).Has<BreakAway>(), Is.False);
+            var f = new Headset3D().Render(HighLift, null, 2);
+            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Get(name)), f);
+            Assert.That(r.Holding, Has.All.True);
+        }
+
+        [Test]
+        public void PulledTooFarTheHoldEndsAndTheObjectStays()
+        {
+            var solver = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Paper.With(new BreakAway(0.15)));
+            var f = new Headset3D().Render(HighLift, null, 2);
+            var r = Run3D.Of(solver, f);
+            int ended = Array.IndexOf(r.Holding, false);
+            Assert.That(ended, Is.GreaterThan(0), "the hold ended");
+            Assert.That(solver.BrokeAway, Is.True);
+            Assert.That(solver.IsHolding, Is.False);
+            for (int i = ended; i < r.Y.Length; i++)
+            {
+                Assert.That(r.Holding[i], Is.False, "it does not restart");
+                Assert.That(r.Y[i], Is.EqualTo(r.Y[ended]), "the object stays where it was let go");
+                Assert.That(r.X[i], Is.EqualTo(r.X[ended]));
+            }
+            double dy = f.A[ended].Y - r.Y[ended] - (f.A[0].Y - r.Y[0]);
+            Assert.That(dy, Is.GreaterThan(0.15), "it broke away beyond the distance, not before");
+            int beyond = 0;
+            while (f.A[beyond].Y - r.Y[beyond] - (f.A[0].Y - r.Y[0]) <= 0.15) beyond++;
+            // After the default dwell of 0.1 s beyond it (a frame where the object catches up restarts the dwell: at most one 30 Hz pose).
+            Assert.That(f.T[ended] - f.T[beyond], Is.InRange(0.1 - 1.01 / 90, 0.1 + 1 / 30.0 + 1.01 / 90));
+        }
+
+        [Test]
+        public void ALightObjectOrAGentleLiftDoesNotBreakAway()
+        {
+            var f = new Headset3D().Render(HighLift, null, 2);
+            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(0.045), NamedProfiles.Paper.With(new BreakAway(0.15))), f);
+            Assert.That(r.Holding, Has.All.True);
+        }
+
+        [Test]
+        public void AOnePoseGlitchDoesNotDropIt()
+        {
+            var solver = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz.With(new BreakAway(0.1)));
+            solver.BeginHold(new HandPose(0, 1, 0, true, true, 0), 0, 1, 0);
+            for (int i = 1; i <= 90; i++)
+            {
+                long pose = i / 3;
+                bool glitch = pose == 10; // one 30 Hz pose, three frames, 0.5 m off
+                solver.Step(new HandPose(glitch ? 0.5 : 0, 1, 0, true, true, pose / 30.0), 1 / 90.0);
+                Assert.That(solver.IsHolding, Is.True, $"frame {i}");
+            }
+            Assert.That(() => new BreakAway(0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("distance"));
+            Assert.That(() => new BreakAway(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("distance"));
+            Assert.That(() => new BreakAway(0.1, -1), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("dwell"));
+        }
+
+        [Test]
+        public void ASidewaysPullBeyondTheLateralBoundBreaksAway()
+        {
+            // Lateral inertia keeps a heavy object up to 0.10 m behind a fast sideways swing: a 0.08 m break-away trips.
+            HandPath3D swing = (double t, out double x, out double y, out double z) => { x = 0.8 * Headset3D.MinJerk(t, 0.3, 0.4, 0, 1); y = 1; z = 0; };
+            var solver = new WeightSolver3D(WeightModel.FromMass(20), NamedProfiles.Xyz.With(new BreakAway(0.08, 0)));
+            var r = Run3D.Of(solver, new Headset3D().Render(swing, null, 2));
+            Assert.That(solver.BrokeAway, Is.True);
+            var kept = new WeightSolver3D(WeightModel.FromMass(20), NamedProfiles.Xyz.With(new BreakAway(0.12, 0)));
+            Run3D.Of(kept, new Headset3D().Render(swing, null, 2));
+            Assert.That(kept.BrokeAway, Is.False, "the lateral lag never exceeds 0.10 m");
+        }
+    }
+}

@@ -1,0 +1,129 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
+{
+    /// <summary>Issue 10, two hands: the object follows the midpoint, each hand carries half the mass, a lost or returning
+    /// hand never makes a step.</summary>
+    public class TwoHandTests
+    {
+        /// <summary>A box 0.3 m wide held at its sides, lifted 0.4 m and carried 0.3 m sideways.</summary>
+        static HandPath3D Side(double side, double rise = 0.4, double carry = 0.3) => (double t, out double x, out double y, out double z) =>
+        {
+            x = side * 0.15 + carry * Headset3D.MinJerk(t, 1.6, 0.9, 0, 1);
+            y = 0.9 + rise * Headset3D.MinJerk(t, 0.4, 1.0, 0, 1);
+            z = 0.35;
+        };
+
+        [Test]
+        public void TwoHandLiftOfMMovesExactlyAsOneHandLiftOfHalfMAtTheMidpoint([Values(0.045, 0.3, 2, 8)] double massKg, [Range(1, 6)] int seed)
+        {
+            var headset = new Headset3D { JitterSd = 0.003, Seed = seed, Wobble = 0.2 };
+            var two = headset.Render(Side(-1), Side(1), 3.5);
+            var mid = new Headset3D.Frames { T = two.T, Dt = two.Dt, A = new HandPose[two.Count], B = new HandPose[two.Count] };
+            for (int i = 0; i < two.Count; i++)
+            {
+                var a = two.A[i];
+                var b = two.B[i];
+                mid.A[i] = new HandPose(0.5 * (a.X + b.X), 0.5 * (a.Y + b.Y), 0.5 * (a.Z + b.Z), true, true, Math.Max(a.PoseTime, b.PoseTime));
+                mid.B[i] = HandPose.Lost;
+            }
+            var rTwo = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), two);
+            var rOne = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg / 2), NamedProfiles.Xyz), mid);
+            Assert.That(rTwo.Y, Is.EqualTo(rOne.Y), "y");
+            Assert.That(rTwo.X, Is.EqualTo(rOne.X), "x");
+            Assert.That(rTwo.Z, Is.EqualTo(rOne.Z), "z");
+        }
+
+        [Test]
+        public void EachHandCarriesHalfTheWeight()
+        {
+            var solver = new WeightSolver3D(WeightModel.FromMass(3), NamedProfiles.Xyz);
+            solver.BeginHold(new HandPose(-0.15, 1, 0), new HandPose(0.15, 1, 0), 0, 1, 0);
+            Assert.That(solver.HoldingHands, Is.EqualTo(2));
+            Assert.That(solver.PerHandMassKg, Is.EqualTo(1.5));
+            solver.SetGrip(2, false);
+            solver.Step(new HandPose(-0.15, 1, 0), new HandPose(0.15, 1, 0), 1 / 90.0);
+            Assert.That(solver.PerHandMassKg, Is.EqualTo(3.0), "one hand lets go: the other carries it all");
+            Assert.That(solver.FollowedHands, Is.EqualTo(1));
+            var oneHandProfile = new WeightSolver3D(WeightModel.FromMass(3), NamedProfiles.Paper);
+            oneHandProfile.BeginHold(new HandPose(-0.15, 1, 0), new HandPose(0.15, 1, 0), 0, 1, 0);
+            Assert.That(oneHandProfile.PerHandMassKg, Is.EqualTo(3.0), "without the two-hand effect the second hand is ignored");
+            Assert.That(oneHandProfile.FollowedHands, Is.EqualTo(1));
+            Assert.That(() => new TwoHands(0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("share"));
+            Assert.That(() => new TwoHands(1.5), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("share"));
+            Assert.That(() => solver.SetGrip(3, true), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("hand"));
+        }
+
+        static double MaxStepWhileStill(Run3D r, Headset3D.Frames f, double from, double to)
+        {
+            double m = 0;
+            for (int i = 1; i < r.X.Length; i++)
+            {
+                if (f.T[i] < from || f.T[i] > to) continue;
+                double dx = r.X[i] - r.X[i - 1], dy = r.Y[i] - r.Y[i - 1], dz = r.Z[i] - r.Z[i - 1];
+                m = Math.Max(m, Math.Sqrt(dx * dx + dy * dy + dz * dz));
+            }
+            return m;
+        }
+
+        static HandPath3D Still(double x, double y, double z) => (double t, out double px, out double py, out double pz) => { px = x; py = y; pz = z; };
+
+        [Test]
+        public void EitherHandLostAndReturningAtThirtyHertzMakesNoStep([Values(1, 2)] int lostHand, [Values(0.05, 0.2, 1.5)] double lossSeconds, [Values("xyz", "xyz-no-settle")] string profile)
+        {
+            var p = profile == "xyz" ? NamedProfiles.Xyz : NamedProfiles.Xyz.Without<TrackingLossHold>("xyz-no-settle");
+            // Hands 0.4 m apart and 6 cm apart in height, still: losing one moves the followed point by 0.2 m if not re-anchored.
+            var headset = new Headset3D { Seed = 11 }.Drop(lostHand, 0.5, lossSeconds);
+            var f = headset.Render(Still(-0.2, 1.0, 0.3), Still(0.2, 1.06, 0.4), 3);
+            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(2), p), f);
+            Assert.That(Run3D.MaxStep3D(r), Is.LessThan(1e-9), "still hands, one lost and back: the object does not move");
+            Assert.That(r.Holding, Has.All.True);
+        }
+
+        [Test]
+        public void LosingAHandMidLiftOnlySlowsNoStep([Values(1, 2)] int lostHand, [Range(1, 20)] int seed)
+        {
+            var rng = new Random(seed);
+            double start = 0.3 + 1.5 * rng.NextDouble(), length = 0.03 + 1.0 * rng.NextDouble();
+            var headset = new Headset3D { Seed = seed, JitterSd = 0.002, FrameRate = 72 + 48 * rng.NextDouble() }.Drop(lostHand, start, length);
+            var f = headset.Render(Side(-1), Side(1), 3.5);
+            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(0.5 + 5 * rng.NextDouble()), NamedProfiles.Xyz), f);
+            // The hands' own largest motion between two frames bounds the object's (1.1 m/s peak: 3.7 cm per 30 Hz pose).
+            double handStep = 0;
+            for (int i = 1; i < f.Count; i++)
+                foreach (var pair in new[] { (f.A[i - 1], f.A[i]), (f.B[i - 1], f.B[i]) })
+                    if (pair.Item1.IsUsable && pair.Item2.IsUsable)
+                    {
+                        double dx = pair.Item2.X - pair.Item1.X, dy = pair.Item2.Y - pair.Item1.Y, dz = pair.Item2.Z - pair.Item1.Z;
+                        handStep = Math.Max(handStep, Math.Sqrt(dx * dx + dy * dy + dz * dz));
+                    }
+            Assert.That(Run3D.MaxStep3D(r), Is.LessThanOrEqualTo(handStep + 1e-9));
+        }
+
+        [Test]
+        public void HandsCrossingAndAHandReturningFarAwayStayContinuous()
+        {
+            // The hands swap sides through each other (x crosses), then hand 2 is lost and comes back 0.8 m away.
+            HandPath3D a = (double t, out double x, out double y, out double z) => { x = -0.2 + 0.4 * Headset3D.MinJerk(t, 0.5, 1, 0, 1); y = 1; z = 0.3; };
+            HandPath3D b = (double t, out double x, out double y, out double z) =>
+            {
+                x = 0.2 - 0.4 * Headset3D.MinJerk(t, 0.5, 1, 0, 1) + (t > 2.2 ? 0.8 : 0);
+                y = 1 + (t > 2.2 ? 0.3 : 0);
+                z = 0.3;
+            };
+            var f = new Headset3D { Seed = 2 }.Drop(2, 2.0, 0.4).Render(a, b, 4);
+            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Xyz), f);
+            Assert.That(Run.AllFinite(r.X) && Run.AllFinite(r.Y) && Run.AllFinite(r.Z), Is.True);
+            double afterReturn = 0;
+            for (int i = 1; i < f.Count; i++)
+                if (f.T[i] > 2.3)
+                {
+                    double dx = r.X[i] - r.X[i - 1], dy = r.Y[i] - r.Y[i - 1];
+                    afterReturn = Math.Max(afterReturn, Math.Sqrt(dx * dx + dy * dy));
+                }
+            Assert.That(afterReturn, Is.LessThan(1e-9), "the far return is re-anchored: nothing moves while the hands rest");
+            Assert.That(Run3D.MaxStep3D(r), Is.LessThan(0.02), "crossing moves the midpoint little; no step anywhere");
+        }
+    }
+}
