@@ -1,7 +1,6 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
-using System.Text;
 
 namespace Kosmos.PseudoHaptic.Evaluation
 {
@@ -37,38 +36,6 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
-    }
-
-    /// <summary>
-    /// The trials file written in the headset and read by <c>pseudohaptic psychometric</c>:
-    /// <c>participant,condition,trial,standard,comparison,first,catch,response</c> (first = "comparison" or
-    /// "standard"; catch = 1 or 0; response = 1 or 0). psychometric needs only participant, standard,
-    /// comparison and response (condition optional); the other columns are for the experimenter.
-    /// </summary>
-    public static partial class TrialsCsv
-    {
-        public const string Header = "participant,condition,trial,standard,comparison,first,catch,response";
-
-        public static string FormatRow(Trial t)
-        {
-            if (t == null) throw new ArgumentNullException(nameof(t));
-            if (t.Response != 0 && t.Response != 1) throw new InvalidOperationException("trial " + t.Index + " has no answer yet");
-            return CsvTable.Escape(t.Participant) + "," + CsvTable.Escape(t.Condition) + ","
-                   + t.Index.ToString(CultureInfo.InvariantCulture) + ","
-                   + t.Standard.ToString("R", CultureInfo.InvariantCulture) + ","
-                   + t.Comparison.ToString("R", CultureInfo.InvariantCulture) + ","
-                   + (t.ComparisonFirst ? "comparison" : "standard") + ","
-                   + (t.Catch ? "1" : "0") + ","
-                   + t.Response.ToString(CultureInfo.InvariantCulture);
-        }
-
-        /// <summary>A whole file of answered trials, header first, "\n" line ends.</summary>
-        public static string Format(IEnumerable<Trial> trials)
-        {
-            var text = new StringBuilder(Header).Append('\n');
-            foreach (var t in trials) text.Append(FormatRow(t)).Append('\n');
-            return text.ToString();
-        }
     }
 
     /// <summary>
