@@ -9,18 +9,14 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     /// <summary>The headset discrimination task's decisions without the engine: settings, begin, sides, answers, errors, the text shown.</summary>
     public class DiscriminationTaskModelTests
     {
-        string _dir;
-        string TrialsFile => Path.Combine(_dir, "trials.csv");
+        TempFolder _folder;
+        string TrialsFile => _folder.File("trials.csv");
 
         [SetUp]
-        public void SetUp()
-        {
-            _dir = Path.Combine(Path.GetTempPath(), "ph-2afc-task-" + Guid.NewGuid().ToString("N"));
-            Directory.CreateDirectory(_dir);
-        }
+        public void CreateFolder() => _folder = new TempFolder("ph-2afc-task-");
 
         [TearDown]
-        public void TearDown() => Directory.Delete(_dir, true);
+        public void DeleteFolder() => _folder.Dispose();
 
         static DiscriminationSettings Settings(DiscriminationProcedure procedure = DiscriminationProcedure.ConstantStimuli) => new DiscriminationSettings
         {
@@ -33,7 +29,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void TheTrialsFileIsTakenUnderThePackagesFolderUnlessRooted()
         {
-            string data = Path.Combine(_dir, "data");
+            string data = _folder.File("data");
             Assert.That(DiscriminationTaskModel.TrialsPath("", data), Is.EqualTo(Path.Combine(data, "Kosmos.PseudoHaptic", "trials.csv")));
             Assert.That(DiscriminationTaskModel.TrialsPath(null, data), Is.EqualTo(Path.Combine(data, "Kosmos.PseudoHaptic", "trials.csv")));
             Assert.That(DiscriminationTaskModel.TrialsPath("p1.csv", data), Is.EqualTo(Path.Combine(data, "Kosmos.PseudoHaptic", "p1.csv")));
@@ -166,7 +162,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         public void AnAnswerThatCannotBeSavedSaysSoAndIsNotCounted()
         {
             var model = new DiscriminationTaskModel();
-            string path = Path.Combine(_dir, "taken");
+            string path = _folder.File("taken");
             model.Begin(true, Settings(), "P1", "", path);
             Directory.CreateDirectory(path); // a folder where the file should go: the write fails
             model.NoteLift(true, false);
