@@ -1,101 +1,8 @@
 using System;
 using System.Collections.Generic;
-using System.Globalization;
 
 namespace Kosmos.PseudoHaptic.Evaluation
 {
-    /// <summary>
-    /// One two-alternative forced-choice trial: a standard and a comparison (masses in kg, or gains: one unit
-    /// per file), which of the two is presented first (on the left), whether it is a catch trial, and the
-    /// answer once given (1 = the comparison was judged heavier, 0 = not, −1 = not yet answered).
-    /// One row of the trials file (<see cref="TrialsCsv"/>).
-    /// </summary>
-    public sealed class Trial
-    {
-        public int Index { get; }
-        public string Participant { get; }
-        public string Condition { get; }
-        public double Standard { get; }
-        public double Comparison { get; }
-        /// <summary>True when the comparison is presented first (on the left), false when the standard is.</summary>
-        public bool ComparisonFirst { get; }
-        public bool Catch { get; }
-        public int Response { get; set; } = -1;
-
-        public Trial(int index, string participant, string condition, double standard, double comparison, bool comparisonFirst, bool isCatch)
-        {
-            if (!IsFinite(standard)) throw new ArgumentException("standard must be finite", nameof(standard));
-            if (!IsFinite(comparison)) throw new ArgumentException("comparison must be finite", nameof(comparison));
-            Index = index;
-            Participant = participant ?? "";
-            Condition = condition ?? "";
-            Standard = standard;
-            Comparison = comparison;
-            ComparisonFirst = comparisonFirst;
-            Catch = isCatch;
-        }
-
-        static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
-    }
-
-    /// <summary>
-    /// The method of constant stimuli: every comparison level presented <see cref="Repetitions"/> times against
-    /// the standard, plus optional catch trials (comparisons far enough from the standard that an attentive
-    /// participant cannot miss, e.g. 0.5× and 2×, used to check attention), in a seeded random order. Within
-    /// each level the order of standard and comparison is counterbalanced: half the repetitions present the
-    /// comparison first, half the standard (with an odd count the extra one is drawn from the seed). The same
-    /// settings and seed give the same plan on every runtime.
-    /// </summary>
-    public sealed class ConstantStimuliPlan
-    {
-        public double Standard { get; set; } = 1;
-        public double[] Levels { get; set; } = { 0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3 };
-        public int Repetitions { get; set; } = 12;
-        public double[] CatchLevels { get; set; } = new double[0];
-        /// <summary>Repetitions of each catch level.</summary>
-        public int CatchRepetitions { get; set; }
-        public long Seed { get; set; }
-
-        public IReadOnlyList<Trial> Build(string participant, string condition = "")
-        {
-            if (double.IsNaN(Standard) || double.IsInfinity(Standard)) throw new ArgumentException("Standard must be finite");
-            if (Levels == null || Levels.Length == 0) throw new ArgumentException("Levels must not be empty");
-            if (Repetitions < 1) throw new ArgumentException("Repetitions must be at least 1");
-            if (CatchRepetitions < 0) throw new ArgumentException("CatchRepetitions must be ≥ 0");
-            var rng = new SeededRandom(Seed);
-            var items = new List<KeyValuePair<double, bool>>(); // (comparison, first) before shuffling
-            var catches = new List<bool>();
-            AddLevels(rng, Levels, Repetitions, false, items, catches);
-            if (CatchLevels != null && CatchRepetitions > 0) AddLevels(rng, CatchLevels, CatchRepetitions, true, items, catches);
-
-            var order = new int[items.Count];
-            for (int i = 0; i < order.Length; i++) order[i] = i;
-            rng.Shuffle(order);
-            var trials = new List<Trial>(order.Length);
-            for (int i = 0; i < order.Length; i++)
-            {
-                var item = items[order[i]];
-                trials.Add(new Trial(i + 1, participant, condition, Standard, item.Key, item.Value, catches[order[i]]));
-            }
-            return trials;
-        }
-
-        static void AddLevels(SeededRandom rng, double[] levels, int repetitions, bool isCatch, List<KeyValuePair<double, bool>> items, List<bool> catches)
-        {
-            foreach (double level in levels)
-            {
-                if (double.IsNaN(level) || double.IsInfinity(level)) throw new ArgumentException("levels must be finite");
-                int comparisonFirst = repetitions / 2;
-                if (repetitions % 2 == 1 && rng.NextInt(2) == 1) comparisonFirst++;
-                for (int r = 0; r < repetitions; r++)
-                {
-                    items.Add(new KeyValuePair<double, bool>(level, r < comparisonFirst));
-                    catches.Add(isCatch);
-                }
-            }
-        }
-    }
-
     /// <summary>
     /// A transformed up-down staircase (Levitt 1971) on the comparison level: after <see cref="Down"/>
     /// consecutive "heavier" answers the comparison steps down, after one "not heavier" it steps up. With
@@ -218,39 +125,6 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 for (int i = reversalLevels.Count - LastReversals; i < reversalLevels.Count; i++) sum += reversalLevels[i];
                 return sum / LastReversals;
             }
-        }
-    }
-
-    /// <summary>
-    /// A simulated participant for tests and worked examples: answers "heavier" with probability
-    /// Ψ(x) = λ + (1 − 2λ)·Φ((x − PSE)/σ), from their own seeded generator.
-    /// </summary>
-    public sealed class SimulatedObserver
-    {
-        readonly SeededRandom rng;
-        public double Pse { get; }
-        public double Sigma { get; }
-        public double Lapse { get; }
-
-        public SimulatedObserver(double pse, double sigma, long seed, double lapse = 0)
-        {
-            if (!(sigma > 0)) throw new ArgumentOutOfRangeException(nameof(sigma), sigma, "sigma must be positive");
-            if (!(lapse >= 0 && lapse < 0.5)) throw new ArgumentOutOfRangeException(nameof(lapse), lapse, "lapse must be in [0, 0.5)");
-            Pse = pse;
-            Sigma = sigma;
-            Lapse = lapse;
-            rng = new SeededRandom(seed);
-        }
-
-        public double Probability(double comparison) => Lapse + (1 - 2 * Lapse) * Normal.Cdf((comparison - Pse) / Sigma);
-
-        /// <summary>1 when this comparison is judged heavier than the standard.</summary>
-        public int Answer(double comparison) => rng.NextDouble() < Probability(comparison) ? 1 : 0;
-
-        /// <summary>Answers every trial of a plan in place.</summary>
-        public void AnswerAll(IEnumerable<Trial> trials)
-        {
-            foreach (var t in trials) t.Response = Answer(t.Comparison);
         }
     }
 }
