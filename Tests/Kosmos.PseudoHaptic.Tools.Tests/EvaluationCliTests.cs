@@ -10,47 +10,12 @@ namespace Kosmos.PseudoHaptic.Tools.Tests;
 /// computation, every malformed input refused with one line naming the line and nothing written, and
 /// randomly damaged files never escaping as an unhandled exception.
 /// </summary>
-public class EvaluationCliTests
+public class EvaluationCliTests : CliTestFolder
 {
+    public EvaluationCliTests() : base("ph-eval-") { }
+
     const string Header = "participant,questionnaire,item,response";
-    string _dir = "";
-
-    [SetUp]
-    public void SetUp()
-    {
-        _dir = Path.Combine(Path.GetTempPath(), "ph-eval-" + Guid.NewGuid().ToString("N"));
-        Directory.CreateDirectory(_dir);
-    }
-
-    [TearDown]
-    public void TearDown() => Directory.Delete(_dir, recursive: true);
-
-    string Write(string name, string text)
-    {
-        string path = Path.Combine(_dir, name);
-        File.WriteAllText(path, text);
-        return path;
-    }
-
     string Out => Path.Combine(_dir, "S.csv");
-
-    static (int code, string stderr, string stdout) Capture(Func<int> run)
-    {
-        var err = new StringWriter();
-        var outWriter = new StringWriter();
-        var oldErr = Console.Error;
-        var oldOut = Console.Out;
-        Console.SetError(err);
-        Console.SetOut(outWriter);
-        try { return (run(), err.ToString(), outWriter.ToString()); }
-        finally
-        {
-            Console.SetError(oldErr);
-            Console.SetOut(oldOut);
-        }
-    }
-
-    static (int code, string stderr, string stdout) Score(params string[] args) => Capture(() => ScoreCommand.Run(args));
 
     static (int code, string stderr, string stdout) Report(params string[] args) => Capture(() => ReportCommand.Run(args));
 

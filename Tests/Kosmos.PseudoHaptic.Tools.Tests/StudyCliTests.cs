@@ -11,46 +11,12 @@ namespace Kosmos.PseudoHaptic.Tools.Tests;
 /// them, degenerate sets marked, errors naming T.csv:LINE or the option with nothing written) and score's
 /// optional condition column (files without it unchanged byte for byte).
 /// </summary>
-public class StudyCliTests
+public class StudyCliTests : CliTestFolder
 {
-    string _dir = "";
-
-    [SetUp]
-    public void SetUp()
-    {
-        _dir = Path.Combine(Path.GetTempPath(), "ph-study-" + Guid.NewGuid().ToString("N"));
-        Directory.CreateDirectory(_dir);
-    }
-
-    [TearDown]
-    public void TearDown() => Directory.Delete(_dir, recursive: true);
-
-    string Write(string name, string text)
-    {
-        string path = Path.Combine(_dir, name);
-        File.WriteAllText(path, text);
-        return path;
-    }
-
-    static (int code, string stderr, string stdout) Capture(Func<int> run)
-    {
-        var err = new StringWriter();
-        var outWriter = new StringWriter();
-        var oldErr = Console.Error;
-        var oldOut = Console.Out;
-        Console.SetError(err);
-        Console.SetOut(outWriter);
-        try { return (run(), err.ToString(), outWriter.ToString()); }
-        finally
-        {
-            Console.SetError(oldErr);
-            Console.SetOut(oldOut);
-        }
-    }
+    public StudyCliTests() : base("ph-study-") { }
 
     static (int code, string stderr, string stdout) Psychometric(params string[] args) => Capture(() => PsychometricCommand.Run(args));
     static (int code, string stderr, string stdout) Compare(params string[] args) => Capture(() => CompareCommand.Run(args));
-    static (int code, string stderr, string stdout) Score(params string[] args) => Capture(() => ScoreCommand.Run(args));
 
     /// <summary>Simulated participants (constant stimuli, 7 levels × 12) in two conditions, plus degenerate ones.</summary>
     static string SimulatedTrials(out List<(string P, string C, double Pse, double Sigma)> truth)

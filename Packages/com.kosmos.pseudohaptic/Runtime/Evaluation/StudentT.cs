@@ -104,41 +104,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         static double NormalCdfFromTail(double z) => z >= 0 ? 1 - NormalUpperTail(z) : NormalUpperTail(-z);
 
         /// <summary>P(Z &gt; z) = ½·Q(½, z²/2) for z ≥ 0, Q the regularized upper incomplete gamma.</summary>
-        static double NormalUpperTail(double z) => z <= 0 ? 0.5 : 0.5 * RegularizedUpperGammaHalf(0.5 * z * z);
-
-        /// <summary>Q(½, x): series for small x, continued fraction beyond (Numerical Recipes §6.2).</summary>
-        static double RegularizedUpperGammaHalf(double x)
-        {
-            const double a = 0.5;
-            if (x <= 0) return 1;
-            double lnPrefix = -x + a * Math.Log(x) - LogGamma(a);
-            if (x < a + 1)
-            {
-                double term = 1 / a, sum = term, ap = a;
-                for (int n = 0; n < 10000; n++)
-                {
-                    ap += 1;
-                    term *= x / ap;
-                    sum += term;
-                    if (Math.Abs(term) < Math.Abs(sum) * 1e-16) break;
-                }
-                return 1 - sum * Math.Exp(lnPrefix);
-            }
-            const double tiny = 1e-300;
-            double b = x + 1 - a, c = 1 / tiny, d = 1 / b, h = d;
-            for (int i = 1; i < 10000; i++)
-            {
-                double an = -i * (i - a);
-                b += 2;
-                d = an * d + b; if (Math.Abs(d) < tiny) d = tiny;
-                c = b + an / c; if (Math.Abs(c) < tiny) c = tiny;
-                d = 1 / d;
-                double del = d * c;
-                h *= del;
-                if (Math.Abs(del - 1) < 1e-15) break;
-            }
-            return Math.Exp(lnPrefix) * h;
-        }
+        static double NormalUpperTail(double z) => z <= 0 ? 0.5 : 0.5 * Gamma.RegularizedQ(0.5, 0.5 * z * z);
 
         /// <summary>I_x(a, b), the regularized incomplete beta function.</summary>
         internal static double RegularizedIncompleteBeta(double a, double b, double x)

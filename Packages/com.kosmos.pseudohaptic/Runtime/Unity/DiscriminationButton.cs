@@ -10,7 +10,7 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Discrimination Button")]
-    public sealed class DiscriminationButton : MonoBehaviour
+    public sealed class DiscriminationButton : FingertipTrigger
     {
         DiscriminationTask _task;
 
@@ -22,14 +22,14 @@ namespace Kosmos.PseudoHaptic
             Side = side;
         }
 
-        void OnTriggerEnter(Collider other)
+        protected override void Touched(double now)
         {
-            if (_task != null && other.GetComponent<FingertipPoker>() != null) _task.Touch(this, Time.timeAsDouble);
+            if (_task != null) _task.Touch(this, now);
         }
 
-        void OnTriggerStay(Collider other)
+        protected override void Stayed(double now)
         {
-            if (_task != null && other.GetComponent<FingertipPoker>() != null) _task.Stay(Time.timeAsDouble);
+            if (_task != null) _task.Stay(now);
         }
     }
 }

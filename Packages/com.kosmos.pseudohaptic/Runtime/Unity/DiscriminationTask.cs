@@ -9,10 +9,11 @@ namespace Kosmos.PseudoHaptic
     /// The in-headset weight discrimination task (two-alternative forced choice, issue 11): two objects of the
     /// same look stand left and right; each trial gives them the masses of the plan's standard and comparison
     /// (never shown; from a constant-stimuli plan or a transformed staircase), the participant lifts both and
-    /// pokes the button on the side of the one that felt heavier. A catch trial is answered like any other. All of the logic is in the engine-free
+    /// pokes the button on the side of the one that felt heavier. A catch trial is answered like any other. All of the logic is engine-free: the
     /// <see cref="DiscriminationSession"/> (plan from its seed, lift-then-answer, the trials file written by
-    /// write-then-rename after every answer, resume): this component only applies the masses, forwards lifts
-    /// and pokes, puts the objects back between trials, and shows the progress.
+    /// write-then-rename after every answer, resume), its <see cref="DiscriminationSettings"/> and the
+    /// <see cref="DiscriminationTaskModel"/> (begin, sides, debounce, errors, the text shown): this component only
+    /// applies the masses, forwards lifts and pokes, puts the objects back between trials, and shows the text.
     /// </summary>
     /// <remarks>
     /// The two objects must take their mass from <c>Explicit Mass Kg</c> (Mass = Explicit); the task sets it
@@ -30,22 +31,9 @@ namespace Kosmos.PseudoHaptic
         [Tooltip("Begin (or resume) at Start when a participant is set; otherwise call Begin from code.")]
         [SerializeField] bool _beginOnStart = true;
         [Tooltip("The trials file; a relative path is taken under Kosmos.PseudoHaptic in Application.persistentDataPath.")]
-        [SerializeField] string _trialsFile = "trials.csv";
-
-        /// <summary>How comparisons are chosen.</summary>
-        public enum Procedure
-        {
-            /// <summary>The method of constant stimuli: the levels below, in a seeded order.</summary>
-            ConstantStimuli,
-            /// <summary>A 1-up-2-down staircase (converges on 70.7 % "heavier").</summary>
-            Staircase1Up2Down,
-            /// <summary>A 1-up-3-down staircase (converges on 79.4 % "heavier").</summary>
-            Staircase1Up3Down,
-        }
-
+        [SerializeField] string _trialsFile = DiscriminationTaskModel.DefaultTrialsFile;
         [Tooltip("Constant stimuli (the levels below) or a transformed staircase (the staircase settings below).")]
-        [SerializeField] Procedure _procedure = Procedure.ConstantStimuli;
-
+        [SerializeField] DiscriminationProcedure _procedure = DiscriminationProcedure.ConstantStimuli;
         [Header("Plan (method of constant stimuli)")]
         [Tooltip("The standard's mass, kg.")]
         [SerializeField] float _standardKg = 0.5f;
@@ -59,7 +47,6 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] int _catchRepetitions = 0;
         [Tooltip("The plan's seed: the same seed gives the same order, so a session can resume.")]
         [SerializeField] int _seed = 1;
-
         [Header("Staircase")]
         [Tooltip("The comparison's first mass, kg.")]
         [SerializeField] float _staircaseStartKg = 0.7f;
@@ -74,7 +61,6 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] int _lastReversals = 8;
         [Tooltip("The run stops after this many trials in any case.")]
         [SerializeField] int _maxTrials = 120;
-
         [Header("Scene")]
         [SerializeField] PseudoHapticWeight _left;
         [SerializeField] PseudoHapticWeight _right;
@@ -82,19 +68,16 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] DiscriminationButton _rightButton;
         [Tooltip("Shows the instructions and progress; optional.")]
         [SerializeField] TextMesh _display;
-
         [Header("Poking")]
         [SerializeField] float _cooldown = (float)PokeDebounce.DefaultCooldown;
         [SerializeField] float _releaseTime = (float)PokeDebounce.DefaultReleaseTime;
 
-        DiscriminationSession _session;
-        PokeDebounce _debounce;
-        string _error;
+        DiscriminationTaskModel _model;
         Vector3 _leftHome, _rightHome;
 
-        public DiscriminationSession Session => _session;
-        public string Error => _error;
-
+        public DiscriminationTaskModel Model => _model ?? (_model = CreateModel());
+        public DiscriminationSession Session => Model.Session;
+        public string Error => Model.Error;
         public string Participant { get => _participant; set => _participant = value; }
         public string Condition { get => _condition; set => _condition = value; }
 
@@ -108,36 +91,34 @@ namespace Kosmos.PseudoHaptic
             _display = display;
         }
 
-        /// <summary>The plan these settings give (the same for the same seed).</summary>
-        public ConstantStimuliPlan Plan() => new ConstantStimuliPlan
+        /// <summary>The inspector's plan and staircase settings.</summary>
+        public DiscriminationSettings Settings => new DiscriminationSettings
         {
-            Standard = _standardKg,
-            Levels = ToDoubles(_comparisonKg),
-            Repetitions = _repetitions,
-            CatchLevels = ToDoubles(_catchKg),
-            CatchRepetitions = _catchRepetitions,
-            Seed = _seed,
+            Procedure = _procedure, StandardKg = _standardKg, Seed = _seed,
+            ComparisonKg = DiscriminationSettings.ToDoubles(_comparisonKg), Repetitions = _repetitions,
+            CatchKg = DiscriminationSettings.ToDoubles(_catchKg), CatchRepetitions = _catchRepetitions,
+            StaircaseStartKg = _staircaseStartKg, StaircaseStepKg = _staircaseStepKg, HalvingReversals = _halvingReversals,
+            MinStepKg = _minStepKg, StopAfterReversals = _stopAfterReversals, LastReversals = _lastReversals, MaxTrials = _maxTrials,
         };
 
+        /// <summary>The plan these settings give (the same for the same seed).</summary>
+        public ConstantStimuliPlan Plan() => Settings.Plan();
+
         /// <summary>The staircase these settings give for a participant and condition (the same for the same seed).</summary>
-        public Staircase MakeStaircase(string participant, string condition) => new Staircase(
-            participant, condition, _standardKg, _staircaseStartKg, _staircaseStepKg,
-            _procedure == Procedure.Staircase1Up3Down ? 3 : 2, _stopAfterReversals, _lastReversals, _seed,
-            _halvingReversals, _minStepKg, _maxTrials, minLevel: 0.001);
+        public Staircase MakeStaircase(string participant, string condition) => Settings.MakeStaircase(participant, condition);
 
         /// <summary>The trials file's full path.</summary>
-        public string TrialsPath
+        public string TrialsPath => DiscriminationTaskModel.TrialsPath(_trialsFile, Application.persistentDataPath);
+
+        DiscriminationTaskModel CreateModel()
         {
-            get
-            {
-                string file = string.IsNullOrEmpty(_trialsFile) ? "trials.csv" : _trialsFile;
-                return Path.IsPathRooted(file) ? file : Path.Combine(Application.persistentDataPath, "Kosmos.PseudoHaptic", file);
-            }
+            var model = new DiscriminationTaskModel(_cooldown, _releaseTime);
+            model.Failed += e => Debug.LogError("Discrimination task '" + name + "': " + e, this);
+            return model;
         }
 
         void Awake()
         {
-            _debounce = new PokeDebounce(_cooldown, _releaseTime);
             if (_leftButton != null) _leftButton.Initialize(this, PairSide.Left);
             if (_rightButton != null) _rightButton.Initialize(this, PairSide.Right);
             if (_left != null) _leftHome = _left.transform.position;
@@ -155,70 +136,33 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Begins or resumes the session of <see cref="Participant"/> in <see cref="Condition"/>. False (and <see cref="Error"/>) when it cannot.</summary>
-        public bool Begin()
-        {
-            if (_left == null || _right == null) return Fail("the left and right objects are not set");
-            try
-            {
-                _session = _procedure == Procedure.ConstantStimuli
-                    ? new DiscriminationSession(_participant, _condition, TrialsPath, Plan())
-                    : new DiscriminationSession(_participant, _condition, TrialsPath, MakeStaircase);
-            }
-            catch (Exception e) when (e is ArgumentException || e is EvaluationFormatException || e is IOException || e is UnauthorizedAccessException)
-            {
-                _session = null;
-                return Fail(e.Message);
-            }
-            _error = null;
-            ApplyTrial();
-            Show();
-            return true;
-        }
+        public bool Begin() => Shown(Model.Begin(_left != null && _right != null, Settings, _participant, _condition, TrialsPath) && Applied());
 
         void OnHoldBegan(PseudoHapticWeight weight)
         {
-            if (_session == null) return;
-            if (weight == _left) _session.NoteLift(PairSide.Left);
-            else if (weight == _right) _session.NoteLift(PairSide.Right);
-            else return;
-            Show();
+            if (Model.NoteLift(weight == _left, weight == _right)) Show();
         }
 
         /// <summary>A fingertip's contact with a button begins: a poke answers (see <see cref="PokeDebounce"/>).</summary>
         public void Touch(DiscriminationButton button, double now)
         {
-            if (button != null && _debounce != null && _debounce.Touch(now)) Answer(button.Side);
+            if (button != null && Model.Touch(now)) Answer(button.Side);
         }
 
         /// <summary>A fingertip's contact with a button lasts.</summary>
-        public void Stay(double now) => _debounce?.Stay(now);
+        public void Stay(double now) => Model.Stay(now);
 
         /// <summary>Answers "the object on <paramref name="heavier"/> was heavier". True when the answer was saved.</summary>
         public bool Answer(PairSide heavier)
-        {
-            if (_session == null || !_session.CanAnswer) { Show(); return false; }
-            if (_left.IsHeld || _right.IsHeld) return false; // put both down first
-            try
-            {
-                _session.Answer(heavier);
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                Fail("the answer could not be saved: " + e.Message);
-                return false;
-            }
-            _error = null;
-            ApplyTrial();
-            Show();
-            return true;
-        }
+            => Shown(Model.Answer(heavier, (_left != null && _left.IsHeld) || (_right != null && _right.IsHeld)) && Applied());
 
         /// <summary>The current trial's masses on the objects, which go back to where they started.</summary>
-        void ApplyTrial()
+        bool Applied()
         {
-            if (_session == null || _session.IsFinished) return;
-            Place(_left, _leftHome, (float)_session.MassAt(PairSide.Left));
-            Place(_right, _rightHome, (float)_session.MassAt(PairSide.Right));
+            if (!Model.HasTrial) return true;
+            Place(_left, _leftHome, (float)Session.MassAt(PairSide.Left));
+            Place(_right, _rightHome, (float)Session.MassAt(PairSide.Right));
+            return true;
         }
 
         static void Place(PseudoHapticWeight weight, Vector3 home, float massKg)
@@ -226,38 +170,18 @@ namespace Kosmos.PseudoHaptic
             weight.ExplicitMassKg = massKg;
             weight.transform.position = home;
             var body = weight.GetComponent<Rigidbody>();
-            if (body != null && !body.isKinematic)
-            {
-                body.velocity = Vector3.zero;
-                body.angularVelocity = Vector3.zero;
-            }
+            if (body != null && !body.isKinematic) body.velocity = body.angularVelocity = Vector3.zero;
         }
 
-        bool Fail(string error)
+        bool Shown(bool result)
         {
-            _error = error;
-            Debug.LogError("Discrimination task '" + name + "': " + error, this);
             Show();
-            return false;
+            return result;
         }
 
         void Show()
         {
-            if (_display == null) return;
-            if (_error != null) { _display.text = _error; return; }
-            if (_session == null) { _display.text = "Waiting for a participant."; return; }
-            if (_session.IsFinished) { _display.text = "Done. Thank you!"; return; }
-            string lifts = _session.CanAnswer ? "Which was heavier? Poke the button on its side."
-                : "Lift both objects, then put them down." + (_session.WasLifted(PairSide.Left) ? " (left: done)" : "") + (_session.WasLifted(PairSide.Right) ? " (right: done)" : "");
-            _display.text = "Trial " + _session.ProgressText + "\n" + lifts;
-        }
-
-        static double[] ToDoubles(float[] values)
-        {
-            if (values == null) return new double[0];
-            var result = new double[values.Length];
-            for (int i = 0; i < values.Length; i++) result[i] = values[i];
-            return result;
+            if (_display != null) _display.text = Model.DisplayText();
         }
     }
 }

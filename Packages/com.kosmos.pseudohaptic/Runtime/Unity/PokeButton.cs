@@ -8,7 +8,7 @@ namespace Kosmos.PseudoHaptic
     /// is a poke. The panel creates these; they are not meant to be added by hand.
     /// </summary>
     [AddComponentMenu("")]
-    public sealed class PokeButton : MonoBehaviour
+    public sealed class PokeButton : FingertipTrigger
     {
         QuestionnairePanel _panel;
 
@@ -40,14 +40,14 @@ namespace Kosmos.PseudoHaptic
             return local.x >= -Size.x / 2 && local.x <= Size.x / 2 && local.y >= -Size.y / 2 && local.y <= Size.y / 2;
         }
 
-        void OnTriggerEnter(Collider other)
+        protected override void Touched(double now)
         {
-            if (_panel != null && other.GetComponent<FingertipPoker>() != null) _panel.Touch(this, Time.timeAsDouble);
+            if (_panel != null) _panel.Touch(this, now);
         }
 
-        void OnTriggerStay(Collider other)
+        protected override void Stayed(double now)
         {
-            if (_panel != null && other.GetComponent<FingertipPoker>() != null) _panel.Stay(Time.timeAsDouble);
+            if (_panel != null) _panel.Stay(now);
         }
     }
 }

@@ -1,0 +1,76 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using System.IO;
+using System.Text;
+
+namespace Kosmos.PseudoHaptic.Evaluation
+{
+    /// <summary>
+    /// The trials file written in the headset and read by <c>pseudohaptic psychometric</c>:
+    /// <c>participant,condition,trial,standard,comparison,first,catch,response</c> (first = "comparison" or
+    /// "standard"; catch = 1 or 0; response = 1 or 0). psychometric needs only participant, standard,
+    /// comparison and response (condition optional); the other columns are for the experimenter.
+    /// </summary>
+    public static class TrialsCsv
+    {
+        public const string Header = "participant,condition,trial,standard,comparison,first,catch,response";
+
+        public static string FormatRow(Trial t)
+        {
+            if (t == null) throw new ArgumentNullException(nameof(t));
+            if (t.Response != 0 && t.Response != 1) throw new InvalidOperationException("trial " + t.Index + " has no answer yet");
+            return CsvTable.Escape(t.Participant) + "," + CsvTable.Escape(t.Condition) + ","
+                   + t.Index.ToString(CultureInfo.InvariantCulture) + ","
+                   + t.Standard.ToString("R", CultureInfo.InvariantCulture) + ","
+                   + t.Comparison.ToString("R", CultureInfo.InvariantCulture) + ","
+                   + (t.ComparisonFirst ? "comparison" : "standard") + ","
+                   + (t.Catch ? "1" : "0") + ","
+                   + t.Response.ToString(CultureInfo.InvariantCulture);
+        }
+
+        /// <summary>A whole file of answered trials, header first, "\n" line ends.</summary>
+        public static string Format(IEnumerable<Trial> trials)
+        {
+            var text = new StringBuilder(Header).Append('\n');
+            foreach (var t in trials) text.Append(FormatRow(t)).Append('\n');
+            return text.ToString();
+        }
+
+        public static readonly string[] RequiredColumns = { "participant", "standard", "comparison", "response" };
+
+        /// <summary>
+        /// Reads answered trials: columns by name (any order, case-insensitive), <c>participant</c>,
+        /// <c>standard</c>, <c>comparison</c>, <c>response</c> required, <c>condition</c> optional (default ""),
+        /// others ignored. A missing column, an empty participant, a number that does not parse or is not
+        /// finite, or a response other than 0 or 1 throws <see cref="EvaluationFormatException"/> naming the line.
+        /// </summary>
+        public static List<TrialAnswer> Read(TextReader reader, string sourceName, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
+        {
+            var present = new bool[1];
+            var answers = new List<TrialAnswer>();
+            foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, RequiredColumns, new[] { "condition" }, present))
+            {
+                string participant = row[0].Trim();
+                if (participant.Length == 0) throw new EvaluationFormatException(sourceName, row.Line, "participant is empty");
+                double standard = Number(sourceName, row, "standard", row[1]);
+                double comparison = Number(sourceName, row, "comparison", row[2]);
+                string response = row[3].Trim();
+                if (response != "0" && response != "1")
+                    throw new EvaluationFormatException(sourceName, row.Line, "response '" + row[3] + "' must be 1 (comparison judged heavier) or 0");
+                answers.Add(new TrialAnswer(participant, (row[4] ?? "").Trim(), standard, comparison, response == "1" ? 1 : 0, row.Line));
+            }
+            return answers;
+        }
+
+        static double Number(string sourceName, CsvTable.Row row, string column, string text)
+        {
+            double value;
+            if (!double.TryParse(text.Trim(), NumberStyles.Float, CultureInfo.InvariantCulture, out value))
+                throw new EvaluationFormatException(sourceName, row.Line, column + " '" + text + "' is not a number");
+            if (double.IsNaN(value) || double.IsInfinity(value))
+                throw new EvaluationFormatException(sourceName, row.Line, column + " '" + text + "' is not a finite number");
+            return value;
+        }
+    }
+}

@@ -1,0 +1,192 @@
+using System;
+using System.Collections.Generic;
+using System.IO;
+using Kosmos.PseudoHaptic.Evaluation;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.Evaluation
+{
+    /// <summary>The headset discrimination task's decisions without the engine: settings, begin, sides, answers, errors, the text shown.</summary>
+    public class DiscriminationTaskModelTests
+    {
+        TempFolder _folder;
+        string TrialsFile => _folder.File("trials.csv");
+
+        [SetUp]
+        public void CreateFolder() => _folder = new TempFolder("ph-2afc-task-");
+
+        [TearDown]
+        public void DeleteFolder() => _folder.Dispose();
+
+        static DiscriminationSettings Settings(DiscriminationProcedure procedure = DiscriminationProcedure.ConstantStimuli) => new DiscriminationSettings
+        {
+            Procedure = procedure, StandardKg = 0.5, Seed = 7,
+            ComparisonKg = new[] { 0.4, 0.5, 0.6 }, Repetitions = 2, CatchKg = new[] { 1.0 }, CatchRepetitions = 1,
+            StaircaseStartKg = 0.7, StaircaseStepKg = 0.08, HalvingReversals = 2, MinStepKg = 0.01,
+            StopAfterReversals = 6, LastReversals = 4, MaxTrials = 40,
+        };
+
+        [Test]
+        public void TheTrialsFileIsTakenUnderThePackagesFolderUnlessRooted()
+        {
+            string data = _folder.File("data");
+            Assert.That(DiscriminationTaskModel.TrialsPath("", data), Is.EqualTo(Path.Combine(data, "Kosmos.PseudoHaptic", "trials.csv")));
+            Assert.That(DiscriminationTaskModel.TrialsPath(null, data), Is.EqualTo(Path.Combine(data, "Kosmos.PseudoHaptic", "trials.csv")));
+            Assert.That(DiscriminationTaskModel.TrialsPath("p1.csv", data), Is.EqualTo(Path.Combine(data, "Kosmos.PseudoHaptic", "p1.csv")));
+            Assert.That(DiscriminationTaskModel.TrialsPath(TrialsFile, data), Is.EqualTo(TrialsFile));
+        }
+
+        [Test]
+        public void SettingsGiveThePlanOrTheStaircaseTheyName()
+        {
+            var plan = Settings().Plan().Build("P1", "on");
+            Assert.That(plan.Count, Is.EqualTo(3 * 2 + 1));
+            var session = Settings().CreateSession("P1", "on", TrialsFile);
+            Assert.That(session.Staircase, Is.Null);
+            Assert.That(session.Plan.Count, Is.EqualTo(plan.Count));
+            for (int i = 0; i < plan.Count; i++)
+            {
+                Assert.That(session.Plan[i].Comparison, Is.EqualTo(plan[i].Comparison));
+                Assert.That(session.Plan[i].ComparisonFirst, Is.EqualTo(plan[i].ComparisonFirst));
+            }
+
+            Assert.That(Settings(DiscriminationProcedure.Staircase1Up2Down).MakeStaircase("P1", "").Down, Is.EqualTo(2));
+            var three = Settings(DiscriminationProcedure.Staircase1Up3Down).CreateSession("P1", "", TrialsFile);
+            Assert.That(three.Plan, Is.Null);
+            Assert.That(three.Staircase.Down, Is.EqualTo(3));
+            Assert.That(three.Staircase.Start, Is.EqualTo(0.7));
+            Assert.That(three.Staircase.MaxTrials, Is.EqualTo(40));
+            Assert.That(three.Staircase.MinLevel, Is.EqualTo(0.001));
+        }
+
+        [Test]
+        public void InspectorFloatsBecomeDoubles()
+        {
+            Assert.That(DiscriminationSettings.ToDoubles(null), Is.Empty);
+            Assert.That(DiscriminationSettings.ToDoubles(new[] { 0.35f, 2f }), Is.EqualTo(new[] { (double)0.35f, 2.0 }));
+            var none = Settings();
+            none.CatchKg = null;
+            Assert.That(none.Plan().CatchLevels, Is.Empty);
+        }
+
+        [Test]
+        public void BeginRefusesMissingObjectsAndBadSettingsWithAReason()
+        {
+            var model = new DiscriminationTaskModel();
+            var failures = new List<string>();
+            model.Failed += failures.Add;
+            Assert.That(model.DisplayText(), Is.EqualTo(DiscriminationTaskModel.WaitingText));
+
+            Assert.That(model.Begin(false, Settings(), "P1", "", TrialsFile), Is.False);
+            Assert.That(model.Error, Is.EqualTo("the left and right objects are not set"));
+            Assert.That(model.DisplayText(), Is.EqualTo(model.Error));
+
+            Assert.That(model.Begin(true, Settings(), " P1", "", TrialsFile), Is.False);
+            Assert.That(model.Session, Is.Null);
+            Assert.That(model.Error, Does.Contain("surrounding spaces"));
+
+            File.WriteAllText(TrialsFile, "participant,standard\nP1,0.5\n");
+            Assert.That(model.Begin(true, Settings(), "P1", "", TrialsFile), Is.False, "a file psychometric would refuse");
+            Assert.That(model.Error, Does.Contain("trials.csv"));
+            Assert.That(failures.Count, Is.EqualTo(3));
+
+            File.Delete(TrialsFile);
+            Assert.That(model.Begin(true, Settings(), "P1", "", TrialsFile), Is.True);
+            Assert.That(model.Error, Is.Null);
+            Assert.That(model.HasTrial, Is.True);
+        }
+
+        [Test]
+        public void LiftsAreNotedBySideAndOthersIgnored()
+        {
+            var model = new DiscriminationTaskModel();
+            Assert.That(model.NoteLift(true, false), Is.False, "no session yet");
+            model.Begin(true, Settings(), "P1", "", TrialsFile);
+            Assert.That(model.NoteLift(false, false), Is.False, "another object");
+            Assert.That(model.DisplayText(), Does.EndWith(DiscriminationTaskModel.LiftText));
+            Assert.That(model.NoteLift(false, true), Is.True);
+            Assert.That(model.Session.WasLifted(PairSide.Right), Is.True);
+            Assert.That(model.Session.WasLifted(PairSide.Left), Is.False);
+            Assert.That(model.DisplayText(), Is.EqualTo("Trial 1 / 7\n" + DiscriminationTaskModel.LiftText + " (right: done)"));
+            Assert.That(model.NoteLift(true, false), Is.True);
+            Assert.That(model.DisplayText(), Is.EqualTo("Trial 1 / 7\n" + DiscriminationTaskModel.AnswerText));
+        }
+
+        [Test]
+        public void AnAnswerIsTakenOnlyWithBothLiftedAndBothPutDown()
+        {
+            var model = new DiscriminationTaskModel();
+            Assert.That(model.Answer(PairSide.Left, false), Is.False, "no session");
+            model.Begin(true, Settings(), "P1", "", TrialsFile);
+            Assert.That(model.Answer(PairSide.Left, false), Is.False, "nothing lifted");
+            model.NoteLift(true, false);
+            model.NoteLift(false, true);
+            Assert.That(model.Answer(PairSide.Left, true), Is.False, "an object is still held");
+            Assert.That(File.Exists(TrialsFile), Is.False);
+
+            var trial = model.Session.Current;
+            Assert.That(model.Answer(PairSide.Left, false), Is.True);
+            Assert.That(trial.Response, Is.EqualTo(trial.ComparisonFirst ? 1 : 0), "left is the comparison when it is first");
+            Assert.That(File.ReadAllText(TrialsFile), Does.StartWith(TrialsCsv.Header + "\n"));
+            Assert.That(model.Session.AnsweredCount, Is.EqualTo(1));
+            Assert.That(model.DisplayText(), Does.StartWith("Trial 2 / 7\n"));
+        }
+
+        [Test]
+        public void AllAnsweredShowsDoneAndAResumedSessionContinues()
+        {
+            var model = new DiscriminationTaskModel();
+            model.Begin(true, Settings(), "P1", "", TrialsFile);
+            for (int i = 0; i < 3; i++)
+            {
+                model.NoteLift(true, false);
+                model.NoteLift(false, true);
+                Assert.That(model.Answer(PairSide.Right, false), Is.True);
+            }
+            var again = new DiscriminationTaskModel();
+            Assert.That(again.Begin(true, Settings(), "P1", "", TrialsFile), Is.True);
+            Assert.That(again.Session.ResumedCount, Is.EqualTo(3));
+            Assert.That(again.DisplayText(), Does.StartWith("Trial 4 / 7\n"));
+            for (int i = 3; i < 7; i++)
+            {
+                again.NoteLift(true, false);
+                again.NoteLift(false, true);
+                Assert.That(again.Answer(PairSide.Left, false), Is.True);
+            }
+            Assert.That(again.HasTrial, Is.False);
+            Assert.That(again.DisplayText(), Is.EqualTo(DiscriminationTaskModel.DoneText));
+            Assert.That(again.Answer(PairSide.Left, false), Is.False);
+        }
+
+        [Test]
+        public void AnAnswerThatCannotBeSavedSaysSoAndIsNotCounted()
+        {
+            var model = new DiscriminationTaskModel();
+            string path = _folder.File("taken");
+            model.Begin(true, Settings(), "P1", "", path);
+            Directory.CreateDirectory(path); // a folder where the file should go: the write fails
+            model.NoteLift(true, false);
+            model.NoteLift(false, true);
+            string failed = null;
+            model.Failed += e => failed = e;
+            Assert.That(model.Answer(PairSide.Left, false), Is.False);
+            Assert.That(model.Error, Does.StartWith("the answer could not be saved: "));
+            Assert.That(failed, Is.EqualTo(model.Error));
+            Assert.That(model.DisplayText(), Is.EqualTo(model.Error));
+            Assert.That(model.Session.AnsweredCount, Is.Zero);
+            Directory.Delete(path);
+            Assert.That(model.Answer(PairSide.Left, false), Is.True, "the trial is still open");
+            Assert.That(model.Error, Is.Null);
+        }
+
+        [Test]
+        public void APokeWithinTheCooldownDoesNotAnswerAgain()
+        {
+            var model = new DiscriminationTaskModel(cooldown: 0.5, releaseTime: 0.1);
+            Assert.That(model.Touch(10.0), Is.True);
+            model.Stay(10.05);
+            Assert.That(model.Touch(10.3), Is.False, "within the cooldown");
+            Assert.That(model.Touch(11.0), Is.True);
+        }
+    }
+}
