@@ -14,7 +14,7 @@ namespace Kosmos.PseudoHaptic.Cli
 
               demo   [--out DIR] [--trace FILE] [--svg]
                                                      simulate the paper's scenes, write CSV + PNG (+ SVG), print a summary
-              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain]
+              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain] [--grab-offset D]
               score  --responses R.csv --out S.csv [--questionnaires DIR]
                                                      score questionnaire responses
               report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]

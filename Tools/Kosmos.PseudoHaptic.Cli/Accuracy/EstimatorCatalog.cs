@@ -77,8 +77,8 @@ public static class EstimatorCatalog
     /// <summary>Each effect the core has, by name, for "that effect switched on alone".</summary>
     public static IReadOnlyList<WeightEffect> AllEffects { get; } = new WeightEffect[]
     {
-        new TrackingLossHold(), new MotionDeadband(), new WeightGain(), new ExperimentalBlend(), new SpeedCap(),
-        new LoweringGuard(), new OffsetCorrection(), new OffsetRelaxation(), new FloorClamp(),
+        new TrackingLossHold(), new MotionDeadband(), new WeightGain(), new ExperimentalBlend(), new FasterMovesFurther(),
+        new SpeedCap(), new LoweringGuard(), new OffsetCorrection(), new OffsetRelaxation(), new FloorClamp(),
     };
 
     /// <summary>A profile with just the effect named <paramref name="effect"/> ("none": no effect at all).</summary>

@@ -4,25 +4,26 @@ using Kosmos.PseudoHaptic.Simulation;
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
-/// <c>pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile P]</c>:
+/// <c>pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile P] [--grab-offset D]</c>:
 /// runs a recorded trace through the solver, one output row per input row. The contract is in README.md
 /// and ALGORITHM.md; other programs depend on it.
 /// </summary>
 public static class ReplayCommand
 {
-    public const string Usage = "pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain]";
+    public const string Usage = "pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain] [--grab-offset D]";
 
     public static int Run(string[] args)
     {
-        var o = new Options(args, "--trace", "--out", "--mass-kg", "--standard-speed", "--profile");
+        var o = new Options(args, "--trace", "--out", "--mass-kg", "--standard-speed", "--profile", "--grab-offset");
         string trace = o.Require("--trace");
         string output = o.Require("--out");
         var solver = CreateSolver(o);
+        double grabOffset = GrabOffset(o);
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
         bool anyUsable = true;
-        AtomicFile.Write(output, w => anyUsable = Replay(reader, solver, w));
+        AtomicFile.Write(output, w => anyUsable = Replay(reader, solver, w, grabOffset));
         if (!anyUsable) Console.Error.WriteLine($"{trace}: warning: no row has a usable pose; object_y is 0 throughout");
         return 0;
     }
@@ -43,9 +44,19 @@ public static class ReplayCommand
         return new WeightSolver(WeightModel.FromMass(mass), profile, speed);
     }
 
+    /// <summary>--grab-offset D: metres, finite, default 0; the object starts D below the first usable hand (above it
+    /// when negative).</summary>
+    public static double GrabOffset(Options o)
+    {
+        double d = o.Number("--grab-offset") ?? 0;
+        if (!double.IsFinite(d) || Math.Abs(d) > WeightSolver.MaxCoordinate)
+            throw new CliException($"option --grab-offset: must be a finite number of metres, got {NumberText.Format(d)}");
+        return d;
+    }
+
     /// <summary>Streams rows through the solver. Rows before the first usable pose wait in a small buffer
     /// until the starting height is known. Returns false when no row had a usable pose.</summary>
-    static bool Replay(TraceCsvReader reader, WeightSolver solver, TextWriter w)
+    static bool Replay(TraceCsvReader reader, WeightSolver solver, TextWriter w, double grabOffset)
     {
         w.WriteLine("t,hand_y,object_y,offset");
         var waiting = new List<TraceFrame>();
@@ -57,7 +68,9 @@ public static class ReplayCommand
             if (!holding)
             {
                 if (!f.IsUsable) { waiting.Add(f); continue; }
-                solver.BeginHold(f.HandY, f.HandY, f.PoseTime);
+                // The object starts grabOffset below the hand; without a floor in the way its path is exactly the path
+                // of grabOffset 0, shifted by −grabOffset (every effect acts on the offset relative to the grab).
+                solver.BeginHoldWithGrabOffset(f.HandY, grabOffset, f.PoseTime);
                 holding = true;
                 foreach (var early in waiting) Write(w, early, solver.ObjectY);
                 waiting.Clear();

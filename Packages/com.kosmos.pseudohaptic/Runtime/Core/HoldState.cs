@@ -8,8 +8,17 @@ namespace Kosmos.PseudoHaptic
     {
         public bool IsHolding;
 
-        /// <summary>The object's height, m.</summary>
+        /// <summary>The object's height (its pivot), m: <see cref="HeldY"/> − <see cref="GrabOffset"/>.</summary>
         public double ObjectY;
+
+        /// <summary>hand − object when the hold began, m (0 when the hand was not tracked then). Every effect acts on
+        /// the offset relative to this one: a hold that starts with hand and object apart behaves exactly as one that
+        /// starts together, shifted.</summary>
+        public double GrabOffset;
+
+        /// <summary>The object's height plus <see cref="GrabOffset"/>, m: where it would be had it been grabbed with
+        /// hand and object together. The solver and its effects move this; <see cref="ObjectY"/> follows it.</summary>
+        public double HeldY;
 
         /// <summary>Frame time since the hold began, s (double: it never loses the millisecond in hours).</summary>
         public double Time;
@@ -32,7 +41,26 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
 
+        /// <summary><see cref="TrackingLossHold"/>: how long the current loss has lasted, s (0 while tracked).</summary>
+        public double LostFor;
+
+        /// <summary><see cref="SpeedCap"/>: motion the cap has deferred, m.</summary>
+        public double CapDeferred;
+
+        /// <summary><see cref="LoweringGuard"/>: what it added to the object's motion and may give back, m, and how long ago it acted, s.</summary>
+        public double GuardDebt;
+        public double GuardAge;
+
+        /// <summary><see cref="FasterMovesFurther"/>: the hand height its speed judgement follows, m.</summary>
+        public double PaceReference;
+
+        /// <summary><see cref="FasterMovesFurther"/>: the hand's smoothed speed, m/s.</summary>
+        public double Pace;
+
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => HandY - ObjectY;
+
+        /// <summary>hand − object less the grab offset, m: the offset the effects act on.</summary>
+        public double RelativeOffset => HandY - HeldY;
     }
 }

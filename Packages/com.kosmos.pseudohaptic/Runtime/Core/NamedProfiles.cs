@@ -11,13 +11,14 @@ namespace Kosmos.PseudoHaptic
         public const string GainName = "gain";
 
         /// <summary>
-        /// All of the paper's effects: Eq. 4–6 gain, the offset correction past 0.2 m, the floor, plus what a
-        /// headset needs to feed them (deadband, speed cap relative to the user, lowering guard, tracking-loss hold).
+        /// All of the paper's effects: Eq. 4–6 gain, faster moves further (§3.1), the offset correction past 0.2 m,
+        /// the floor, plus what a headset needs to feed them (deadband for light objects, speed cap relative to the
+        /// user, lowering guard, tracking-loss hold).
         /// </summary>
         public static readonly WeightProfile Paper = new WeightProfile(PaperName, new WeightEffect[]
         {
             new TrackingLossHold(), new MotionDeadband(), new WeightGain(), new ExperimentalBlend(),
-            new SpeedCap(), new LoweringGuard(), new OffsetCorrection(), new FloorClamp(),
+            new FasterMovesFurther(), new SpeedCap(), new LoweringGuard(), new OffsetCorrection(), new FloorClamp(),
         });
 
         /// <summary>As the paper's Experiments 1 and 2 ran: everything in <see cref="Paper"/> but the offset correction.</summary>
@@ -25,7 +26,8 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>
         /// Eq. 4 alone, within what every reading must keep: the floor (P5) and the deadband that keeps tracking
-        /// jitter, multiplied by a light object's gain, from moving it at rest (P4); and the safety limits.
+        /// jitter, multiplied by a light object's gain, from moving it at rest (P4; it is 0 at gains up to 1); and the
+        /// safety limits.
         /// </summary>
         public static readonly WeightProfile Gain = new WeightProfile(GainName, new WeightEffect[] { new MotionDeadband(), new WeightGain(), new FloorClamp() });
 

@@ -20,8 +20,23 @@ namespace Kosmos.PseudoHaptic
 
         public readonly SolverLimits Limits;
 
+        /// <summary>Distance from the object's pivot down to its lowest point, m (<see cref="WeightSolver.BottomBelowPivot"/>).</summary>
+        public readonly double BottomBelowPivot;
+
+        /// <summary>ln G, for effects that reshape the gain per frame (<see cref="FasterMovesFurther"/>); −∞ when G is 0.</summary>
+        public readonly double LogGain;
+
         public SolverConstants(double gain, double standardSpeed, double capSpeed, double deadbandWidth, SolverLimits limits)
+            : this(gain, standardSpeed, capSpeed, deadbandWidth, limits, 0) { }
+
+        /// <summary><see cref="OffsetCorrection"/>'s threshold for this object, m (<see cref="OffsetCorrection.ThresholdFor"/>; 0 without it).</summary>
+        public readonly double OffsetThreshold;
+
+        public SolverConstants(double gain, double standardSpeed, double capSpeed, double deadbandWidth, SolverLimits limits, double bottomBelowPivot, double offsetThreshold = 0)
         {
+            BottomBelowPivot = bottomBelowPivot;
+            OffsetThreshold = offsetThreshold;
+            LogGain = gain > 0 ? System.Math.Log(gain) : double.NegativeInfinity;
             Gain = gain;
             StandardSpeed = standardSpeed;
             CapSpeed = capSpeed;

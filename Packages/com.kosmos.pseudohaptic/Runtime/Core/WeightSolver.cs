@@ -40,6 +40,29 @@ namespace Kosmos.PseudoHaptic
         /// <summary>hand − object, m: positive when the object hangs below the hand.</summary>
         public double Offset => _state.Offset;
 
+        /// <summary>hand − object when the hold began, m: the effects act on <see cref="Offset"/> less this.</summary>
+        public double GrabOffset => _state.GrabOffset;
+
+        double _bottomBelowPivot;
+
+        /// <summary>
+        /// Metres from the object's pivot down to its lowest point (finite, ≥ 0; default 0): the floor
+        /// (<see cref="FloorClamp"/>) keeps the object's bottom, not its pivot, above the support. The Unity layer
+        /// sets it from the collider's extent. Set it before <see cref="BeginHold"/>; an invalid value throws
+        /// naming BottomBelowPivot.
+        /// </summary>
+        public double BottomBelowPivot
+        {
+            get => _bottomBelowPivot;
+            set
+            {
+                ConfigurationGuard.InRange(value, 0, MaxCoordinate, nameof(BottomBelowPivot));
+                _bottomBelowPivot = value;
+                var c = _constants;
+                _constants = new SolverConstants(c.Gain, c.StandardSpeed, c.CapSpeed, c.DeadbandWidth, c.Limits, value, c.OffsetThreshold);
+            }
+        }
+
         public WeightSolver(WeightModel model, WeightProfile profile = null, double standardSpeed = DefaultStandardSpeed)
         {
             Configure(model, profile ?? NamedProfiles.Paper, standardSpeed);
@@ -55,6 +78,7 @@ namespace Kosmos.PseudoHaptic
             double gain = model.Gain(profile.Has<WeightGain>(), profile.Has<ExperimentalBlend>(), limits.MaxGain);
             var cap = profile.Find<SpeedCap>();
             var deadband = profile.Find<MotionDeadband>();
+            var correction = profile.Find<OffsetCorrection>();
             Model = model;
             if (!ReferenceEquals(profile, Profile))
             {
@@ -64,20 +88,58 @@ namespace Kosmos.PseudoHaptic
             Profile = profile;
             _constants = new SolverConstants(gain, standardSpeed,
                 cap != null ? cap.CapFor(model, standardSpeed) : double.PositiveInfinity,
-                deadband != null ? deadband.WidthFor(standardSpeed) : 0, limits);
+                deadband != null ? deadband.WidthFor(standardSpeed, gain) : 0, limits, _bottomBelowPivot,
+                correction != null ? correction.ThresholdFor(model.MassKg) : 0);
         }
 
-        /// <summary>Starts a hold: the hand is at <paramref name="handY"/> (may be NaN if not yet tracked), the object at <paramref name="objectY"/>.</summary>
+        /// <summary>
+        /// Starts a hold: the hand is at <paramref name="handY"/> (may be NaN if not yet tracked), the object at
+        /// <paramref name="objectY"/> (raised to the floor if it is below it). hand − object at this moment is the
+        /// grab offset (<see cref="GrabOffset"/>); every effect acts on the offset relative to it.
+        /// </summary>
         public void BeginHold(double handY, double objectY, double poseTime = double.NaN)
         {
             ConfigurationGuard.InRange(objectY, -MaxCoordinate, MaxCoordinate, nameof(objectY));
+            Begin(handY, objectY, double.NaN, poseTime);
+        }
+
+        /// <summary>
+        /// Starts a hold with the object <paramref name="grabOffset"/> metres below the hand (above it when
+        /// negative): <c>BeginHold(handY, handY − grabOffset, poseTime)</c>, except that the grab offset is kept
+        /// exactly as given, so that, wherever the floor is not in the way, the object's path is exactly the path
+        /// of a hold begun with hand and object together, less <paramref name="grabOffset"/>. The hand must be
+        /// usable (the object is placed relative to it); otherwise this throws naming handY.
+        /// </summary>
+        public void BeginHoldWithGrabOffset(double handY, double grabOffset, double poseTime = double.NaN)
+        {
+            if (!HandSample.IsUsableHeight(handY))
+                throw new ArgumentOutOfRangeException(nameof(handY), handY, "handY must be a usable height (finite, within ±" + MaxCoordinate + " m) to place the object relative to it.");
+            ConfigurationGuard.InRange(grabOffset, -MaxCoordinate, MaxCoordinate, nameof(grabOffset));
+            Begin(handY, handY - grabOffset, grabOffset, poseTime);
+        }
+
+        void Begin(double handY, double objectY, double exactGrabOffset, double poseTime)
+        {
             bool handOk = HandSample.IsUsableHeight(handY);
             _state = default;
             _state.IsHolding = true;
             var floor = Profile.Find<FloorClamp>();
-            _state.ObjectY = floor != null && objectY < floor.Floor ? floor.Floor : objectY;
+            double lowest = floor != null ? floor.Floor + _bottomBelowPivot : double.NegativeInfinity;
+            bool raised = objectY < lowest;
+            if (raised) objectY = lowest;
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime);
             _state.HandY = handOk ? handY : objectY;
+            if (handOk)
+            {
+                _state.GrabOffset = !raised && double.IsFinite(exactGrabOffset) ? exactGrabOffset : handY - objectY;
+                _state.HeldY = handY;
+            }
+            else
+            {
+                _state.GrabOffset = 0;
+                _state.HeldY = objectY;
+            }
+            _state.ObjectY = objectY;
             _filter?.Reset(_state.HandY);
             ResetEffects(_state.HandY);
         }
@@ -106,7 +168,7 @@ namespace Kosmos.PseudoHaptic
                 PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
                 IsHighConfidence = sample.IsHighConfidence,
                 Usable = sample.IsUsable,
-                ObjectY = _state.ObjectY,
+                ObjectY = _state.HeldY,
             };
 
             var effects = Profile.InputEffects;
@@ -115,6 +177,9 @@ namespace Kosmos.PseudoHaptic
             _state.Estimator.Update(ref f, limits);
             if (f.Reanchored)
             {
+                // The hand moved, the object did not: to the effects the hand was already there (an offset this
+                // leaves is not motion to follow; the offset correction draws it back at its own pace).
+                f.HandBefore = f.HandAfter;
                 _state.Carry = 0;
                 _filter?.Reset(f.HandAfter);
                 ResetEffects(f.HandAfter);
@@ -153,12 +218,16 @@ namespace Kosmos.PseudoHaptic
             double step = carry > maxStep ? maxStep : (carry < -maxStep ? -maxStep : carry);
             carry -= step;
             _state.Carry = carry > limits.MaxCarry ? limits.MaxCarry : (carry < -limits.MaxCarry ? -limits.MaxCarry : carry);
-            f.NewObjectY = _state.ObjectY + step;
+            f.NewObjectY = _state.HeldY + step;
 
             effects = Profile.PositionEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            if (double.IsFinite(f.NewObjectY)) _state.ObjectY = f.NewObjectY;
+            if (double.IsFinite(f.NewObjectY))
+            {
+                _state.HeldY = f.NewObjectY;
+                _state.ObjectY = f.NewObjectY - _state.GrabOffset;
+            }
             else _state.Carry = 0; // unreachable with the built-in effects; a custom one must not poison the transform
             if (!double.IsFinite(_state.Carry)) _state.Carry = 0;
             return _state.ObjectY;

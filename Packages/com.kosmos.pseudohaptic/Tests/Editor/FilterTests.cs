@@ -203,7 +203,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCaseSource(nameof(Filters))]
         public void InTheSolverTheObjectEndsWhereTheGainPutsIt(IHandFilter filter)
         {
-            var profile = NamedProfiles.Paper.Without<MotionDeadband>().WithHandFilter(filter);
+            var profile = NamedProfiles.Paper.Without<MotionDeadband>().Without<FasterMovesFurther>().WithHandFilter(filter);
             var solver = Run.Solver(1.0, profile);
             var frames = Run.Headset(jitterSd: 0).Render(Run.Lift().Hold(2.0));
             var y = Run.Replay(solver, frames);

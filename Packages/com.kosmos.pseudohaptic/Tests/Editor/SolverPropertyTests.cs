@@ -9,19 +9,30 @@ namespace Kosmos.PseudoHaptic.Tests
     {
         static readonly string[] Profiles = { "paper", "paper-experiment", "gain" };
 
-        // P1: the golf ball, lifted at up to the user's standard speed, stays with the hand (up to the deadband's
-        // width, max(v_std × 6 ms, 4 mm)). Up to v_std = 1.6 m/s: beyond, a smooth lift's peak exceeds the 10 cm-per-pose limit.
-        [TestCase("paper", 0.3), TestCase("paper", 0.5), TestCase("paper", 1.2)]
-        [TestCase("paper-experiment", 0.5), TestCase("gain", 0.5), TestCase("gain", 1.5)]
-        public void P1_StandardWeightStaysWithTheHand(string profile, double standardSpeed)
+        // P1: an object of gain 1 is rigid in the hand: within 5 mm of where the hand puts it while it moves and within
+        // 1 mm once the hand has rested 0.5 s, at every frame clock and pose rate, poses 45 ms late, lifted at several
+        // speeds by users of several standard speeds. The bounds are the property's (algorithm-reading.md), not a
+        // constant of the solver. Up to a 0.4 m lift in 0.3 s (peak 2.5 m/s).
+        [Test]
+        public void P1_StandardWeightIsRigidInTheHand([ValueSource(nameof(Profiles))] string profile, [Values(0.3, 0.5, 1.5)] double standardSpeed)
         {
-            double rise = 0.3, duration = rise / standardSpeed; // mean speed = v_std, peak 1.875 × v_std
-            var frames = Run.Headset(frameRate: 90).Render(Run.Lift(rise, duration));
-            var y = Run.Replay(Run.Solver(PhysicalConstants.StandardMassKg, NamedProfiles.Get(profile), standardSpeed), frames);
-            var band = NamedProfiles.Get(profile).Find<MotionDeadband>();
-            double deadband = band != null ? band.WidthFor(standardSpeed) : 0;
-            Assert.That(Run.MaxOffset(frames, y), Is.LessThanOrEqualTo(deadband + 1e-9), "max offset during the lift");
-            Assert.That(Math.Abs(frames[frames.Length - 1].HandY - Run.Last(y)), Is.LessThanOrEqualTo(deadband + 1e-9), "offset at the end");
+            foreach (var seconds in new[] { 0.3, 0.6, 1.2, 2.0 })
+                foreach (var frameRate in new[] { 60.0, 72, 90, 120 })
+                    foreach (var poseRate in new[] { 30.0, 60 })
+                    {
+                        var path = HandPath.StartAt(0.8).Hold(0.3).MoveTo(1.2, seconds).Hold(0.8).MoveTo(0.9, seconds).Hold(0.8);
+                        var frames = Run.Headset(frameRate, poseRate, jitterSd: poseRate == 30 ? 0.0015 : 0, seed: (int)frameRate).Render(path);
+                        var y = Run.Replay(Run.Solver(PhysicalConstants.StandardMassKg, NamedProfiles.Get(profile), standardSpeed), frames);
+                        string at = profile + ", v_std " + standardSpeed + ", " + seconds + " s lift, " + frameRate + " Hz frames, " + poseRate + " Hz poses";
+                        Assert.That(Run.MaxOffset(frames, y), Is.LessThanOrEqualTo(0.005), at + ": while it moves");
+                        double restedUpTop = 0.3 + seconds + 0.045 + 0.5, restedAtEnd = path.Duration - 0.8 + 0.045 + 0.5;
+                        for (int i = 0; i < frames.Length; i++)
+                        {
+                            double t = frames[i].Time;
+                            bool rested = (t >= restedUpTop && t < 0.3 + seconds + 0.8) || t >= restedAtEnd;
+                            if (rested) Assert.That(Math.Abs(frames[i].HandY - y[i]), Is.LessThanOrEqualTo(0.001), at + ": rested, frame " + i);
+                        }
+                    }
         }
 
         // P2: after the same lift, heavier is never higher.
@@ -67,18 +78,33 @@ namespace Kosmos.PseudoHaptic.Tests
             }
         }
 
-        // P4: no hand motion, no object motion; jitter at rest creeps less than 1 cm in 10 s.
+        // P4: no hand motion, no object motion; jitter at rest moves the object less than 1 cm in 10 s. Over 200 seeds
+        // (a 5 g object at gain 3 crept up to 17.6 mm in 4 of them when the band ignored the gain).
         [Test]
-        public void P4_NoCreepAtRest([ValueSource(nameof(Profiles))] string profile, [Values(1, 2, 3)] int seed)
+        public void P4_NoCreepAtRest([ValueSource(nameof(Profiles))] string profile)
         {
             foreach (var m in new[] { 0.005, 0.045, 0.5, 5 })
             {
                 var still = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile)), Run.Headset().Render(HandPath.StartAt(1).Hold(10)));
                 Assert.That(Run.MaxAbs(Array.ConvertAll(still, v => v - 1)), Is.EqualTo(0), "a still hand moves nothing");
-
-                var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(HandPath.StartAt(1).Hold(10));
-                var y = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile)), frames);
-                Assert.That(Math.Abs(Run.Last(y) - y[0]), Is.LessThan(0.01), m + " kg creep in 10 s");
+                double worst = 0;
+                int worstSeed = 0;
+                for (int seed = 1; seed <= 200; seed++)
+                {
+                    var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(HandPath.StartAt(1).Hold(10));
+                    var y = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile)), frames);
+                    // Creep: where the object ends against where it began; and it never strays from its start by more
+                    // than 1 cm or than the hand's own poses strayed from theirs (a golf ball is the hand).
+                    double creep = Math.Abs(Run.Last(y) - y[0]), stray = 0, handStray = 0;
+                    for (int i = 0; i < y.Length; i++)
+                    {
+                        stray = Math.Max(stray, Math.Abs(y[i] - y[0]));
+                        handStray = Math.Max(handStray, Math.Abs(frames[i].HandY - frames[0].HandY));
+                    }
+                    Assert.That(stray, Is.LessThanOrEqualTo(Math.Max(0.01, handStray) + 1e-12), m + " kg, seed " + seed + ": strays from where it began");
+                    if (creep > worst) { worst = creep; worstSeed = seed; }
+                }
+                Assert.That(worst, Is.LessThan(0.01), m + " kg: worst creep in 10 s over 200 seeds (seed " + worstSeed + ")");
             }
         }
 
@@ -104,9 +130,50 @@ namespace Kosmos.PseudoHaptic.Tests
             var path = HandPath.StartAt(0.5).Hold(0.2).MoveTo(1.3, 1.2).Hold(1).MoveTo(0.7, 1).MoveTo(1.6, 0.8).Hold(2);
             var frames = Run.Headset(frameRate: 72, jitterSd: 0.001).Render(path);
             var y = Run.Replay(Run.Solver(massKg, NamedProfiles.Paper), frames);
-            Assert.That(Run.MaxOffset(frames, y), Is.LessThan(0.25));
+            Assert.That(Run.MaxOffset(frames, y), Is.LessThanOrEqualTo(0.25));
             var uncorrected = Run.Replay(Run.Solver(massKg, NamedProfiles.PaperExperiment), frames);
             Assert.That(Run.MaxOffset(frames, uncorrected), Is.GreaterThan(0.3), "without the correction the offset grows");
+        }
+
+        // P6: ... and heavier objects still settle lower: after a 0.5 m lift, 0.5, 1, 2 and 5 kg settle at least 5 mm
+        // apart, in mass order, each offset at most 0.25 m (they all settled at exactly 0.22 m when the threshold
+        // ignored the mass).
+        [Test]
+        public void P6_TheCorrectionKeepsWeightsApart([Values(0.5, 1.0, 2.0)] double liftSeconds, [Values(0.3, 0.5, 1.2)] double standardSpeed)
+        {
+            var path = HandPath.StartAt(0.6).Hold(0.3).MoveTo(1.1, liftSeconds).Hold(2);
+            var frames = Run.Headset(frameRate: 90, jitterSd: 0.001, seed: 5).Render(path);
+            double previous = double.NegativeInfinity;
+            foreach (var m in new[] { 0.5, 1, 2, 5 })
+            {
+                var y = Run.Replay(Run.Solver(m, NamedProfiles.Paper, standardSpeed), frames);
+                double offset = frames[frames.Length - 1].HandY - Run.Last(y);
+                Assert.That(Run.MaxOffset(frames, y), Is.LessThanOrEqualTo(0.25), m + " kg: offset at most 0.25 m");
+                Assert.That(offset, Is.GreaterThanOrEqualTo(previous + 0.005), m + " kg settles at least 5 mm below the next lighter");
+                previous = offset;
+            }
+        }
+
+        // P6b: offsets are measured from the grab: a hold that starts with hand and object apart behaves exactly as one
+        // that starts together, shifted; a still hand moves nothing, whatever the grab offset.
+        [Test]
+        public void P6b_AHoldBegunApartBehavesAsOneBegunTogetherShifted([ValueSource(nameof(Profiles))] string profile, [Values(0.12, 0.3, -0.1)] double grabOffset)
+        {
+            var path = HandPath.StartAt(1.0).Hold(1.0).MoveTo(1.3, 1.0).Hold(1.0).MoveTo(0.9, 0.8).Hold(1);
+            var frames = Run.Headset(frameRate: 90, jitterSd: 0.0015, seed: 3).Render(path);
+            foreach (var m in new[] { 0.01, 0.5, 2, 5 })
+            {
+                var together = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile)), frames);
+                var solver = Run.Solver(m, NamedProfiles.Get(profile));
+                var apart = new double[frames.Length];
+                solver.BeginHold(frames[0].HandY, frames[0].HandY - grabOffset, frames[0].PoseTime);
+                apart[0] = solver.ObjectY;
+                for (int i = 1; i < frames.Length; i++) apart[i] = solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+                for (int i = 0; i < frames.Length; i++)
+                    Assert.That(apart[i], Is.EqualTo(together[i] - grabOffset).Within(1e-9), m + " kg, frame " + i);
+                int oneSecond = Array.FindIndex(frames, f => f.Time >= 1.0);
+                Assert.That(Math.Abs(apart[oneSecond] - apart[0]), Is.LessThan(0.005), m + " kg: a still hand for 1 s after the grab (jitter only)");
+            }
         }
 
         // P7: the same motion on any frame clock ends in the same place.
@@ -142,7 +209,9 @@ namespace Kosmos.PseudoHaptic.Tests
                         rng.Next(5) != 0, rng.Next(3) != 0, rng.Next(2) == 0 ? double.NaN : i * 0.011);
                     double y = solver.Step(sample, dts[rng.Next(dts.Length)]);
                     Assert.That(double.IsNaN(y) || double.IsInfinity(y), Is.False);
-                    Assert.That(Math.Abs(y - last), Is.LessThanOrEqualTo(0.1 + 1e-12), "step " + i);
+                    // A jump is what a user sees as a teleport: 15 cm in one frame (a hand at 6 m/s moves 5–8 cm per
+                    // 90–72 Hz frame). Without the speed limit, a 30 cm pose step times a gain of 3 moves 90 cm.
+                    Assert.That(Math.Abs(y - last), Is.LessThanOrEqualTo(0.15), "step " + i);
                     last = y;
                 }
             }
@@ -157,7 +226,7 @@ namespace Kosmos.PseudoHaptic.Tests
             {
                 var y = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile)), frames);
                 Assert.That(Run.AllFinite(y), Is.True);
-                Assert.That(Run.MaxStep(y), Is.LessThanOrEqualTo(0.1 + 1e-12), m + " kg");
+                Assert.That(Run.MaxStep(y), Is.LessThanOrEqualTo(0.15), m + " kg: no teleport (15 cm in one frame)");
                 int back = Array.FindIndex(frames, f => f.Time > 3.9);
                 Assert.That(Math.Abs(y[back] - y[back - 1]), Is.LessThan(0.01), m + " kg: no jump when tracking returns");
             }
@@ -180,6 +249,33 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(hand - solver.ObjectY, Is.EqualTo(offsetAtOneMinute).Within(1e-9), "same phase, nine minutes later");
             Assert.That(Math.Abs(hand - solver.ObjectY), Is.LessThan(0.01), "bounded by the deadband and one pose");
             Assert.That(solver.State.Time, Is.EqualTo(600).Within(1e-6), "the hold's clock keeps the millisecond");
+        }
+
+        // P11: faster moves further (paper §3.1): the same 0.4 m lift done faster, or by a user whose v_std is lower,
+        // leaves an object heavier than the standard higher once the hand has rested; the standard weight is unaffected.
+        // Today's reading without it: a 2 kg object rose 12.8 cm whether the lift took 2 s or 0.3 s.
+        [Test]
+        public void P11_FasterMovesFurther([Values("paper", "paper-experiment")] string profile, [Values(0.5, 1, 2, 5)] double massKg)
+        {
+            // Under the offset correction a lift whose offset would pass 0.2 m is held at the threshold whatever its speed:
+            // the paper profile is judged on a lift that stays below it.
+            double lift = profile == "paper" ? 0.25 : 0.4;
+            double Rise(double seconds, double standardSpeed, double m)
+            {
+                var frames = Run.Headset(frameRate: 90, jitterSd: 0.001, seed: 11).Render(HandPath.StartAt(0.7).Hold(0.3).MoveTo(0.7 + lift, seconds).Hold(2.5));
+                var y = Run.Replay(Run.Solver(m, NamedProfiles.Get(profile), standardSpeed), frames);
+                return Run.Last(y) - y[0];
+            }
+            double previous = double.NegativeInfinity;
+            foreach (var seconds in new[] { 2.0, 1.0, 0.6, 0.3 })
+            {
+                double rise = Rise(seconds, 0.5, massKg);
+                Assert.That(rise, Is.GreaterThan(previous + 0.002), massKg + " kg: a " + lift + " m lift in " + seconds + " s rises further than a slower one");
+                previous = rise;
+            }
+            Assert.That(Rise(1.0, 0.3, massKg), Is.GreaterThan(Rise(1.0, 0.8, massKg) + 0.002), massKg + " kg: the same lift by a user with a lower v_std rises further");
+            foreach (var seconds in new[] { 2.0, 0.3 })
+                Assert.That(Rise(seconds, 0.5, PhysicalConstants.StandardMassKg), Is.EqualTo(lift).Within(0.003), "the golf ball rises with the hand");
         }
     }
 }

@@ -2,7 +2,8 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// Son et al. 2022, §3.1, confinement condition 2: the object's local y never goes below 0 (P5).
-    /// Acts on the final height, after the speed limit, so nothing can push the object through.
+    /// Acts on the final height, after the speed limit, so nothing can push the object through. It keeps the
+    /// object's bottom, <see cref="WeightSolver.BottomBelowPivot"/> below its pivot, on or above the floor.
     /// </summary>
     public sealed class FloorClamp : WeightEffect
     {
@@ -19,9 +20,12 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (frame.NewObjectY >= Floor) return;
-            frame.NewObjectY = Floor;
+            // NewObjectY is the held height (pivot + grab offset): the pivot's lowest height moves with it.
+            double lowest = Floor + constants.BottomBelowPivot + state.GrabOffset;
+            if (frame.NewObjectY >= lowest) return;
+            frame.NewObjectY = lowest;
             if (state.Carry < 0) state.Carry = 0; // do not keep pushing into the floor
+            if (state.CapDeferred < 0) state.CapDeferred = 0;
         }
     }
 }

@@ -4,23 +4,65 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// The paper covers lifting only (design note, open question 4). While the hand moves down, the offset
-    /// between hand and object never grows: a heavy object the hand lowers past follows it down instead of
-    /// hanging above it, and a light one does not dive below it. Holding still moves nothing.
+    /// between hand and object (relative to the one at the grab) never grows past what it was, or past
+    /// <see cref="Slack"/>: a heavy object the hand lowers past follows it down instead of hanging above it, and
+    /// a light one does not dive below it. The slack is tracking jitter's size: without it, every downward
+    /// jitter of a still hand would drag an object held near the hand down and every upward one would lift it by
+    /// only G times as much, a ratchet. Holding still moves nothing.
     /// </summary>
     public sealed class LoweringGuard : WeightEffect
     {
         public override string Name => "lowering-guard";
         public override EffectStage Stage => EffectStage.ObjectMotion;
 
+        /// <summary>Offsets up to this size, m, may grow while lowering (jitter at rest is not lowering).</summary>
+        public double Slack { get; }
+
+        public LoweringGuard(double slack = 0.005)
+        {
+            Slack = ConfigurationGuard.InRange(slack, 0, 0.1, nameof(slack));
+        }
+
+        /// <summary>For this long after it acted, s of pose time, the guard gives its pull back if the hand turns back up: a one-pose
+        /// glitch down and back, or jitter, then leaves no trace (a one-sided pull would ratchet the object down).</summary>
+        public const double GiveBackTime = 0.2;
+
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (frame.HandDelta >= 0) return;
+            state.GuardAge += frame.MotionInterval; // pose time: every frame clock expires the debt at the same pose
+            if (state.GuardAge > GiveBackTime) state.GuardDebt = 0;
+            if (frame.HandDelta > 0)
+            {
+                // The hand turned back up: return what the guard added, moving the object at most as the hand moves.
+                double debt = state.GuardDebt;
+                if (debt == 0) return;
+                double room = frame.HandDelta - frame.ObjectDelta; // > 0 for a heavy object, < 0 for a light one
+                double back = -debt;
+                if (room >= 0) back = back < 0 ? 0 : (back > room ? room : back);
+                else back = back > 0 ? 0 : (back < room ? room : back);
+                frame.ObjectDelta += back;
+                state.GuardDebt += back;
+                return;
+            }
+            if (frame.HandDelta == 0) return;
             double limit = Math.Abs(frame.OffsetBefore);
+            if (limit < Slack) limit = Slack;
             double centre = frame.HandAfter - frame.ObjectY; // the delta that would leave no offset
             double lo = centre - limit, hi = centre + limit;
             double total = frame.TotalDelta;
             if (total < lo) frame.TotalDelta = lo;
             else if (total > hi) frame.TotalDelta = hi;
+            else return;
+            double added = frame.TotalDelta - total;
+            state.GuardDebt += added;
+            state.GuardAge = 0;
+            SpeedCap.Settle(ref state, added);
+        }
+
+        protected internal override void Reset(ref HoldState state, double handY)
+        {
+            state.GuardDebt = 0;
+            state.GuardAge = 0;
         }
     }
 }

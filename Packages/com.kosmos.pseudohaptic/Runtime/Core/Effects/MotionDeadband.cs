@@ -3,37 +3,45 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// A motion deadband (backlash) on the hand: the followed hand height moves only when the tracked hand
-    /// leaves a band of ±width around it, so millimetre tracking jitter at rest moves nothing (P4) while
-    /// real motion passes with a constant, small lead-in. The width is tied to the user's speed
-    /// (design note, open question 2): width = v_std × <see cref="LagTime"/>, i.e. the deadband costs
-    /// <see cref="LagTime"/> of lag to a hand moving at the user's standard speed, but never less than
-    /// <see cref="MinWidth"/>, the jitter of a tracked hand at rest. Later effects see the deadbanded hand.
+    /// A motion deadband (backlash) on the hand, only where the gain amplifies jitter: the followed hand height
+    /// moves only when the tracked hand leaves a band of ±width around it, so millimetre tracking jitter at rest,
+    /// multiplied by a light object's gain, moves nothing (P4). At a gain of 1 or less nothing is amplified and
+    /// the band is 0: the standard weight follows every pose exactly and loses no motion (P1), and a heavier
+    /// object's jitter is already smaller than the hand's.
+    /// Above a gain of 1 the half-width is w = span × (1 − 1/G), span = max(<see cref="JitterSpan"/>,
+    /// v_std × <see cref="LagTime"/>): a hand at rest whose poses wander over ±span moves the object by at most
+    /// G × (span − w) = span, no more than the hand itself (a light object never shimmers more than the hand that
+    /// holds it). Real motion passes less the band at each reversal (the price of a light object at rest).
+    /// Later effects see the deadbanded hand.
     /// </summary>
     public sealed class MotionDeadband : WeightEffect
     {
         public override string Name => "motion-deadband";
         public override EffectStage Stage => EffectStage.HandMotion;
 
-        /// <summary>Lag the deadband may cost at the user's standard speed, s.</summary>
+        /// <summary>Lag the band may cost at the user's standard speed, s (a fast user's jitter span grows with their speed).</summary>
         public double LagTime { get; }
 
-        /// <summary>The band is never narrower than this, m: Quest 2 hand jitter at rest is a few millimetres
-        /// whoever the user is, and a light object multiplies it by up to the gain cap.</summary>
-        public double MinWidth { get; }
+        /// <summary>How far a Quest 2 hand pose at rest wanders from where it started over seconds, m (about ±3σ of
+        /// 1.5 mm jitter, the difference of two such poses).</summary>
+        public double JitterSpan { get; }
 
-        public MotionDeadband(double lagTime = 0.006, double minWidth = 0.004)
+        public MotionDeadband(double lagTime = 0.006, double jitterSpan = 0.012)
         {
             LagTime = ConfigurationGuard.InRange(lagTime, 0, 0.1, nameof(lagTime));
-            MinWidth = ConfigurationGuard.InRange(minWidth, 0, 0.05, nameof(minWidth));
+            JitterSpan = ConfigurationGuard.InRange(jitterSpan, 0, 0.05, nameof(jitterSpan));
         }
 
-        /// <summary>The band's half-width for a user, m: max(v_std × lag time, minimum width).</summary>
-        public double WidthFor(double standardSpeed) => Math.Max(LagTime * standardSpeed, MinWidth);
+        /// <summary>The band's half-width for a user and an object's gain, m: max(span, v_std × lag time) × (1 − 1/G)
+        /// above a gain of 1, else 0.</summary>
+        public double WidthFor(double standardSpeed, double gain)
+            => gain > 1 ? Math.Max(LagTime * standardSpeed, JitterSpan) * (1 - 1 / gain) : 0;
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double w = constants.DeadbandWidth, h = frame.HandAfter, r = state.DeadbandReference;
+            double w = constants.DeadbandWidth;
+            if (w <= 0) { state.DeadbandReference = frame.HandAfter; return; } // gain ≤ 1: nothing to suppress, nothing lost
+            double h = frame.HandAfter, r = state.DeadbandReference;
             double next = r < h - w ? h - w : (r > h + w ? h + w : r);
             // Later effects see the deadbanded hand: jitter the band swallowed is not hand motion to them either.
             frame.HandBefore = r;

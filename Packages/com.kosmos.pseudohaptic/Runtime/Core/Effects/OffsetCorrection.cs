@@ -6,40 +6,72 @@ namespace Kosmos.PseudoHaptic
     /// Son et al. 2022, §3.1: past a hand–object distance of 0.2 m the object's speed is corrected
     /// "in a gradual deceleration manner", "+0.02 (m) faster if lighter, −0.02 slower if heavier".
     /// Adopted reading (design note, open question 3): past the threshold the object moves more and more
-    /// with the hand. Its share s of the hand's motion rises linearly from 0 at <see cref="Threshold"/> to 1 at
-    /// threshold + <see cref="Band"/> (the paper's 0.02 m), judged at the step's midpoint (reversible: a still
+    /// with the hand. Its share s of the hand's motion rises linearly from 0 at the threshold T to 1 at
+    /// T + <see cref="Band"/> (the paper's 0.02 m), judged at the step's midpoint (reversible: a still
     /// hand's jitter does not ratchet the object), so growth saturates smoothly; the offset the user sees
-    /// never grows past threshold + band, however large one pose's step. Beyond the band (an offset left by
+    /// never grows past T + band, however large one pose's step. Beyond the band (an offset left by
     /// re-anchoring) the object is drawn back toward the hand at up to <see cref="PullSpeed"/>, ramping up over
-    /// five band widths. Position never jumps.
+    /// five band widths. Position never jumps. Offsets are measured from the one at the grab.
+    /// The threshold depends on the mass, so the correction keeps weights apart instead of holding every heavy
+    /// object at the same offset: T(m) = <see cref="Threshold"/> × clamp(1 + <see cref="PerDoubling"/> · log2(m / 1 kg),
+    /// <see cref="MinScale"/>, <see cref="MaxScale"/>): with the defaults 0.2 m at 1 kg and 1 cm more per doubling
+    /// of the mass (<see cref="ThresholdFor"/>), so that after the same lift heavier still settles lower.
     /// </summary>
     public sealed class OffsetCorrection : WeightEffect
     {
         public override string Name => "offset-correction";
         public override EffectStage Stage => EffectStage.ObjectMotion;
 
+        /// <summary>The threshold for a 1 kg object, m.</summary>
         public double Threshold { get; }
         public double Band { get; }
         public double PullSpeed { get; }
 
-        public OffsetCorrection(double threshold = 0.2, double band = 0.02, double pullSpeed = 0.5)
+        /// <summary>Relative change of the threshold per doubling of the mass.</summary>
+        public double PerDoubling { get; }
+
+        /// <summary>Bounds of the threshold relative to <see cref="Threshold"/>.</summary>
+        public double MinScale { get; }
+        public double MaxScale { get; }
+
+        public OffsetCorrection(double threshold = 0.2, double band = 0.02, double pullSpeed = 0.5,
+            double perDoubling = 0.05, double minScale = 0.75, double maxScale = 1.14)
         {
             Threshold = ConfigurationGuard.InRange(threshold, 0.001, 10, nameof(threshold));
             Band = ConfigurationGuard.InRange(band, 0.001, 10, nameof(band));
             PullSpeed = ConfigurationGuard.InRange(pullSpeed, 0, 10, nameof(pullSpeed));
+            PerDoubling = ConfigurationGuard.InRange(perDoubling, 0, 1, nameof(perDoubling));
+            MinScale = ConfigurationGuard.InRange(minScale, 0.01, 1, nameof(minScale));
+            MaxScale = ConfigurationGuard.InRange(maxScale, 1, 10, nameof(maxScale));
+        }
+
+        /// <summary>
+        /// The threshold for an object of <paramref name="massKg"/>, m: Threshold × clamp(1 + PerDoubling · log2(m / 1 kg),
+        /// MinScale, MaxScale). Defaults: 0.19 m at 0.5 kg, 0.20 at 1 kg, 0.21 at 2 kg, 0.223 at 5 kg, at most 0.228
+        /// (so the visible offset, at most threshold + band, stays ≤ 0.248 m), at least 0.15 (objects up to about 35 g,
+        /// the standard weight's lighter neighbours, which lead the hand).
+        /// </summary>
+        public double ThresholdFor(double massKg)
+        {
+            double scale = massKg > 0 ? 1 + PerDoubling * Math.Log(massKg) / Math.Log(2) : MinScale;
+            if (!(scale > MinScale)) scale = MinScale;
+            else if (scale > MaxScale) scale = MaxScale;
+            return Threshold * scale;
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
+            double threshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            double start = frame.TotalDelta;
             // 1. Inside the band, against the deadbanded hand, by the implicit midpoint rule
             //    d = d0 + (1 − s((d0 + d)/2))·Δ: it is reversible, so jitter back and forth leaves the object where it
             //    was (a rule judged at one end would ratchet a still-held object toward the hand).
             double before = Math.Abs(frame.OffsetBefore);
             double after = Math.Abs(frame.HandAfter - frame.ObjectY - frame.TotalDelta);
             double delta = after - before;
-            if (delta != 0 && (before > Threshold || after > Threshold) && !(delta < 0 && before >= Threshold + Band))
+            if (delta != 0 && (before > threshold || after > threshold) && !(delta < 0 && before >= threshold + Band))
             {
-                double reached = MidpointOffset(before, delta);
+                double reached = MidpointOffset(before, delta, threshold);
                 double share = (after - reached) / delta; // of the change the hand's own motion would make
                 frame.TotalDelta += share * (frame.HandDelta - frame.TotalDelta);
             }
@@ -47,7 +79,7 @@ namespace Kosmos.PseudoHaptic
             // 2. The offset the user sees never grows past the band's end, however large one pose's step.
             double visibleBefore = Math.Abs(frame.VisibleOffsetBefore);
             double visibleAfter = Math.Abs(frame.PoseHandAfter - frame.ObjectY - frame.TotalDelta);
-            double ceiling = visibleBefore > Threshold + Band ? visibleBefore : Threshold + Band;
+            double ceiling = visibleBefore > threshold + Band ? visibleBefore : threshold + Band;
             if (visibleAfter > ceiling)
             {
                 double share = (visibleAfter - ceiling) / (visibleAfter - visibleBefore);
@@ -56,7 +88,7 @@ namespace Kosmos.PseudoHaptic
 
             // 3. Offsets the hand's motion did not make (re-anchoring) are drawn back, against the deadbanded hand.
             double afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
-            double beyond = Math.Abs(afterSigned) - (Threshold + Band);
+            double beyond = Math.Abs(afterSigned) - (threshold + Band);
             if (beyond > 0 && PullSpeed > 0)
             {
                 double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
@@ -65,23 +97,24 @@ namespace Kosmos.PseudoHaptic
                 double pull = Math.Min(beyond, speed * dt);
                 frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             }
+            SpeedCap.Settle(ref state, frame.TotalDelta - start);
         }
 
         /// <summary>
         /// The offset d reached from <paramref name="d0"/> when the hand alone would change it by <paramref name="delta"/>:
         /// d = d0 + (1 − s(m))·Δ with m = (d0 + d)/2 and s(m) = clamp((m − T)/B, 0, 1), solved piecewise.
         /// </summary>
-        double MidpointOffset(double d0, double delta)
+        double MidpointOffset(double d0, double delta, double threshold)
         {
             double free = d0 + delta;
-            if ((d0 + free) / 2 <= Threshold) return free;          // s = 0 over the whole step
-            if (d0 >= Threshold + Band && free >= d0) return d0;     // s = 1: past the band nothing grows
+            if ((d0 + free) / 2 <= threshold) return free;          // s = 0 over the whole step
+            if (d0 >= threshold + Band && free >= d0) return d0;     // s = 1: past the band nothing grows
             double denominator = 1 + delta / (2 * Band);
             double d = denominator > 0.25
-                ? (d0 + delta * (1 - (d0 / 2 - Threshold) / Band)) / denominator
-                : d0 + (1 - Clamp01((d0 - Threshold) / Band)) * delta; // a very large shrink: judge at the start
+                ? (d0 + delta * (1 - (d0 / 2 - threshold) / Band)) / denominator
+                : d0 + (1 - Clamp01((d0 - threshold) / Band)) * delta; // a very large shrink: judge at the start
             double m = (d0 + d) / 2;
-            if (m > Threshold + Band) d = d0;                        // the step ends past the band: s = 1
+            if (m > threshold + Band) d = d0;                        // the step ends past the band: s = 1
             // Between no correction and full correction, whatever rounding says.
             double lo = delta > 0 ? d0 : free, hi = delta > 0 ? free : d0;
             return d < lo ? lo : (d > hi ? hi : d);

@@ -27,7 +27,9 @@ namespace Kosmos.PseudoHaptic
             double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
             double after = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
             // dt/(τ+dt) ≈ 1 − e^(−dt/τ) without an exponential per frame; never overshoots.
-            frame.ObjectDelta += after * dt / (TimeConstant + dt);
+            double relax = after * dt / (TimeConstant + dt);
+            frame.ObjectDelta += relax;
+            SpeedCap.Settle(ref state, relax);
         }
     }
 }

@@ -3,12 +3,17 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// A person does not lift 5 kg as fast as a golf ball (design note, open question 2): the object's
-    /// speed is capped at the experimental speed of its mass rescaled to this user,
-    /// v_cap = headroom · v_std · v_exp(m)/v_exp(m_std). At the standard weight the cap is headroom · v_std,
-    /// never below the user's standard speed; the default headroom 2.5 clears the peak of a smooth lift
-    /// (1.875 × its mean speed) with room for the speed noise of jittery 60 Hz poses. Speed is judged over the pose's own interval, so 30 Hz poses under
-    /// 120 Hz frames are not mistaken for fourfold spikes. Capped motion is lost: the object lags more.
+    /// A person does not lift 5 kg as fast as a golf ball (design note, open question 2): an object heavier than
+    /// the standard moves no faster than the experimental speed of its mass rescaled to this user,
+    /// v_cap = headroom · v_std · v_exp(m)/v_exp(m_std). The standard weight and lighter objects are not capped (the
+    /// golf ball is rigid in the hand, P1). The default headroom 2.5 clears the peak of a smooth lift at the
+    /// user's standard speed (1.875 × its mean speed) with room for jittery poses.
+    /// Capped motion is deferred, not lost: the object keeps rising at v_cap after the hand stops until it has
+    /// made up what the cap held back (at most <see cref="SolverLimits.MaxCarry"/>), so a faster lift never ends
+    /// lower than a slower one (the cap never reverses <see cref="FasterMovesFurther"/>). Motion of the hand in
+    /// the other direction cancels what is owed; the lowering guard, the offset correction and the floor settle it
+    /// when they change the motion. The cap is judged per pose, over the pose's own interval: the object's speed
+    /// over each pose never exceeds v_cap, and every frame clock showing the same poses gives the same motion.
     /// </summary>
     public sealed class SpeedCap : WeightEffect
     {
@@ -23,18 +28,38 @@ namespace Kosmos.PseudoHaptic
             Headroom = ConfigurationGuard.InRange(headroom, 1, 100, nameof(headroom));
         }
 
-        /// <summary>The cap for an object and a user, m/s.</summary>
-        public double CapFor(WeightModel model, double standardSpeed) => Headroom * standardSpeed * model.ExperimentalRatio;
+        /// <summary>The cap for an object and a user, m/s: infinite for the standard weight and lighter objects.</summary>
+        public double CapFor(WeightModel model, double standardSpeed)
+            => model.MassKg > PhysicalConstants.StandardMassKg ? Headroom * standardSpeed * model.ExperimentalRatio : double.PositiveInfinity;
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            // Over the pose's interval when a pose arrived; otherwise over the frame, for a hand filter that moves
-            // the followed hand between poses.
-            double window = frame.MotionInterval > 0 ? frame.MotionInterval : frame.Dt;
-            if (window <= 0) return;
-            double max = constants.CapSpeed * window;
-            if (frame.ObjectDelta > max) frame.ObjectDelta = max;
-            else if (frame.ObjectDelta < -max) frame.ObjectDelta = -max;
+            double cap = constants.CapSpeed;
+            if (!(cap < double.PositiveInfinity)) return;
+            // Judged per pose, over the pose's own interval, so every frame clock that shows the same poses makes the
+            // same decisions; a frame without a new pose moves nothing and pays nothing (a hand filter that moves the
+            // followed hand between poses is judged over the frame).
+            double window = frame.MotionInterval > 0 ? frame.MotionInterval : (frame.ObjectDelta != 0 ? frame.Dt : 0);
+            if (!(window > 0)) return;
+            double allowed = cap * window;
+            double wanted = frame.ObjectDelta + state.CapDeferred; // a hand that turns back cancels what it is owed
+            double step = wanted > allowed ? allowed : (wanted < -allowed ? -allowed : wanted);
+            frame.ObjectDelta = step;
+            double deferred = wanted - step, limit = constants.Limits.MaxCarry;
+            state.CapDeferred = deferred > limit ? limit : (deferred < -limit ? -limit : deferred);
         }
+
+        /// <summary>An effect after the cap changed the object's motion by <paramref name="extra"/>: in the direction of
+        /// what the cap owes, that pays the debt; against it, a constraint blocked that much of it. Either way the
+        /// debt shrinks by |extra| (never changing sign), so nothing is owed twice or pushed against a constraint.</summary>
+        internal static void Settle(ref HoldState state, double extra)
+        {
+            double owed = state.CapDeferred;
+            if (owed == 0 || extra == 0) return;
+            double left = Math.Abs(owed) - Math.Abs(extra);
+            state.CapDeferred = left <= 0 ? 0 : (owed > 0 ? left : -left);
+        }
+
+        protected internal override void Reset(ref HoldState state, double handY) => state.CapDeferred = 0;
     }
 }

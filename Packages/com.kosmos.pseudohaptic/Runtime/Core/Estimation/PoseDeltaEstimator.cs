@@ -85,8 +85,12 @@ namespace Kosmos.PseudoHaptic
                 : (_sincePose > MinPosePeriod ? _sincePose : MinPosePeriod);
             if (interval < 1e-4) interval = 1e-4;
             double delta = f.PoseY - _poseY;
-            // Judged over at least one 30 Hz pose period: without timestamps two poses can land in one short frame.
-            double window = interval < SolverLimits.MinJumpWindow ? SolverLimits.MinJumpWindow : (interval > SolverLimits.JumpWindow ? SolverLimits.JumpWindow : interval);
+            // Judged over at least one 30 Hz pose period: without timestamps two poses can land in one short frame;
+            // and over at most 50 ms, so a long still spell does not license a teleport, plus the time tracking was
+            // lost, so a hand that moved during a short loss is caught up, not rejected (only a pose no hand could
+            // have reached is).
+            double longest = SolverLimits.JumpWindow + (_lost ? _lostFor : 0);
+            double window = interval < SolverLimits.MinJumpWindow ? SolverLimits.MinJumpWindow : (interval > longest ? longest : interval);
             if (Math.Abs(delta) > limits.MaxHandSpeed * window)
             {
                 Reanchor(ref f);

@@ -5,9 +5,10 @@ namespace Kosmos.PseudoHaptic.Simulation
 {
     /// <summary>
     /// Degrades a true hand path the way a Quest 2 delivers it: poses sampled at 30 Hz (60 in fast-motion
-    /// mode), about 45 ms late, with millimetre jitter, held over 72–120 Hz frames whose times may wobble,
-    /// and stretches of lost tracking. Seeded: the same settings give the same frames, and a pose's jitter
-    /// depends only on the seed and the pose, not on the frame clock.
+    /// mode), about 45 ms late, with millimetre jitter, held over 72–120 Hz frames whose times may wobble;
+    /// low-confidence poses in fast motion; one-pose glitches (a joint jumping a few centimetres for one pose);
+    /// and stretches of lost or low-confidence tracking. Seeded: the same settings give the same frames, and a
+    /// pose's jitter, confidence and glitch depend only on the seed and the pose, not on the frame clock.
     /// </summary>
     public sealed class HeadsetSimulator
     {
@@ -29,14 +30,37 @@ namespace Kosmos.PseudoHaptic.Simulation
 
         public int Seed = 1;
 
+        /// <summary>A pose whose true hand speed exceeds this, m/s, may be delivered with low confidence (∞: never).</summary>
+        public double LowConfidenceAboveSpeed = double.PositiveInfinity;
+
+        /// <summary>The chance that such a fast pose is low-confidence, 0–1.</summary>
+        public double LowConfidenceChance = 0.5;
+
+        /// <summary>The chance that a pose is a glitch: displaced by ±<see cref="GlitchSize"/> for that one pose, 0–1.</summary>
+        public double GlitchChance;
+
+        /// <summary>How far a glitched pose is off, m (a joint jumping a few centimetres).</summary>
+        public double GlitchSize = 0.03;
+
         readonly List<double> _dropStart = new List<double>();
         readonly List<double> _dropEnd = new List<double>();
+        readonly List<double> _lowStart = new List<double>();
+        readonly List<double> _lowEnd = new List<double>();
 
         /// <summary>Tracking is lost from <paramref name="start"/> for <paramref name="seconds"/> (frames there are untracked, NaN).</summary>
         public HeadsetSimulator Drop(double start, double seconds)
         {
             _dropStart.Add(start);
             _dropEnd.Add(start + seconds);
+            return this;
+        }
+
+        /// <summary>Tracking is low-confidence from <paramref name="start"/> for <paramref name="seconds"/> (frames there are
+        /// tracked, with their poses, but flagged <see cref="TraceFrame.LowConfidence"/>).</summary>
+        public HeadsetSimulator LowConfidence(double start, double seconds)
+        {
+            _lowStart.Add(start);
+            _lowEnd.Add(start + seconds);
             return this;
         }
 
@@ -50,6 +74,7 @@ namespace Kosmos.PseudoHaptic.Simulation
             double t = 0;
             long lastPose = long.MinValue;
             double poseY = 0, poseT = 0;
+            bool poseLow = false;
             while (t <= end + 1e-12)
             {
                 // The newest pose that has arrived by frame time t was sampled at or before t − latency.
@@ -59,13 +84,21 @@ namespace Kosmos.PseudoHaptic.Simulation
                     lastPose = k;
                     poseT = k * posePeriod;
                     poseY = path.HeightAt(poseT) + (JitterSd > 0 ? JitterSd * Gaussian(Seed, k) : 0);
+                    if (GlitchChance > 0 && Uniform(Mix(Seed, k, 3)) < GlitchChance)
+                        poseY += Uniform(Mix(Seed, k, 4)) < 0.5 ? -GlitchSize : GlitchSize;
+                    double speed = Math.Abs(path.HeightAt(poseT + 0.005) - path.HeightAt(poseT - 0.005)) / 0.01;
+                    poseLow = speed > LowConfidenceAboveSpeed && Uniform(Mix(Seed, k, 5)) < LowConfidenceChance;
                 }
-                bool lost = false;
+                bool lost = false, low = poseLow;
                 for (int i = 0; i < _dropStart.Count; i++)
                     if (t >= _dropStart[i] && t < _dropEnd[i]) lost = true;
-                frames.Add(lost
+                for (int i = 0; i < _lowStart.Count; i++)
+                    if (t >= _lowStart[i] && t < _lowEnd[i]) low = true;
+                var frame = lost
                     ? new TraceFrame(t, double.NaN, false, double.NaN)
-                    : new TraceFrame(t, poseY, true, WritePoseTime ? poseT : double.NaN));
+                    : new TraceFrame(t, poseY, true, WritePoseTime ? poseT : double.NaN);
+                frame.LowConfidence = !lost && low;
+                frames.Add(frame);
                 double wobble = FrameTimeWobble > 0 ? 1 + FrameTimeWobble * (2 * rng.NextDouble() - 1) : 1;
                 t += framePeriod * wobble;
             }
@@ -80,6 +113,8 @@ namespace Kosmos.PseudoHaptic.Simulation
             double u2 = Uniform((ulong)seed * 0x9E3779B97F4A7C15UL + (ulong)k * 2 + 1);
             return Math.Sqrt(-2.0 * Math.Log(u1)) * Math.Cos(2 * Math.PI * u2);
         }
+
+        static ulong Mix(int seed, long k, int stream) => (ulong)seed * 0x9E3779B97F4A7C15UL + (ulong)k * 8 + (ulong)stream + 0x5851F42D4C957F2DUL;
 
         /// <summary>SplitMix64 of <paramref name="x"/> as a double in [0, 1).</summary>
         static double Uniform(ulong x)

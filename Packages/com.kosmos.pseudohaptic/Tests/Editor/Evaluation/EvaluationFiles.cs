@@ -37,7 +37,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                     string candidate = Path.Combine(dir.FullName, "shared", relativePath);
                     if (File.Exists(candidate)) return candidate;
                 }
-            Assert.Ignore("shared/" + relativePath + " is not beside this repository (it lives in the project's shared folder, not in the package)");
+            SharedFolder.Missing("shared/" + relativePath + " is not beside this repository (it lives in the project's shared folder, not in the package)");
             return null;
         }
 

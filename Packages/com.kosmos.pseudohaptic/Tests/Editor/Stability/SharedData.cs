@@ -21,7 +21,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                     string candidate = Path.Combine(dir.FullName, "shared", "data", name);
                     if (File.Exists(candidate)) return candidate;
                 }
-            Assert.Ignore("../shared/data/" + name + " is absent (it lives beside the package's repository, not in a user's project)");
+            SharedFolder.Missing("../shared/data/" + name + " is absent (it lives beside the package's repository, not in a user's project)");
             return null;
         }
 
