@@ -97,6 +97,19 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ALiftOverTooQuicklyIsRefusedWithItsDuration()
+        {
+            // 0.3 m in 0.1 s: 10–90 % of the rise takes about 0.08 s (3 m/s, within the speed bounds).
+            var (t, y) = Ramp(0.3, 0.1, 1000);
+            var lift = StandardSpeedCalibration.MeasureLift(t, y);
+            Assert.That(lift.IsAccepted, Is.False);
+            Assert.That(lift.Speed, Is.NaN);
+            Assert.That(lift.Duration, Is.LessThan(0.1).And.GreaterThan(0.05));
+            Assert.That(lift.Rise, Is.EqualTo(0.3).Within(1e-9));
+            Assert.That(lift.Reason, Is.EqualTo("too short: the lift took " + lift.Duration.ToString("0.###", CultureInfo.InvariantCulture) + " s, at least 0.1 s needed"));
+        }
+
+        [Test]
         public void CombiningNothingOrOnlyRefusedLiftsSaysSo()
         {
             var none = StandardSpeedCalibration.Combine(new LiftMeasurement[0]);
