@@ -1,0 +1,166 @@
+using System;
+using System.Collections.Generic;
+using System.Globalization;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// The standard-speed calibration to the number and the word: a straight ramp measured exactly (10–90 % of
+    /// the rise), each refusal's message, and how several lifts combine (outliers only when the lifts spread at
+    /// all; inconsistent lifts refused with their spread).
+    /// </summary>
+    public class CalibrationContractTests
+    {
+        /// <summary>Rest at 1 m, a straight ramp of <paramref name="rise"/> m over <paramref name="seconds"/>, rest; sampled at <paramref name="hz"/>.</summary>
+        static (double[] T, double[] Y) Ramp(double rise, double seconds, double hz = 100, double rest = 0.5)
+        {
+            var t = new List<double>();
+            var y = new List<double>();
+            int n = (int)Math.Round((2 * rest + seconds) * hz);
+            for (int i = 0; i <= n; i++)
+            {
+                double ti = i / hz;
+                double u = Math.Min(1, Math.Max(0, (ti - rest) / seconds));
+                t.Add(ti);
+                y.Add(1.0 + rise * u);
+            }
+            return (t.ToArray(), y.ToArray());
+        }
+
+        static LiftMeasurement Accepted(double speed) => new LiftMeasurement(true, speed, 0.3, 0.5, null);
+
+        static LiftMeasurement Rejected(string reason) => new LiftMeasurement(false, double.NaN, 0.05, 0.5, reason);
+
+        [Test]
+        public void AStraightRampIsMeasuredExactly()
+        {
+            var (t, y) = Ramp(0.3, 0.6);
+            var lift = StandardSpeedCalibration.MeasureLift(t, y);
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Rise, Is.EqualTo(0.3).Within(1e-9));
+            Assert.That(lift.Duration, Is.EqualTo(0.8 * 0.6).Within(1e-9), "from 10 % to 90 % of the rise");
+            Assert.That(lift.Speed, Is.EqualTo(0.5).Within(1e-9));
+            Assert.That(lift.Reason, Is.Null);
+            Assert.That(lift.ToString(), Is.EqualTo("lift of 0.300 m at 0.500 m/s"));
+        }
+
+        [Test]
+        public void OnlyTheLargestRiseCounts()
+        {
+            // A small lift (0.12 m) first, down again, then the real one (0.3 m) from a lower start.
+            var t = new List<double>();
+            var y = new List<double>();
+            for (int i = 0; i <= 400; i++)
+            {
+                double ti = i / 100.0;
+                double h = ti < 0.5 ? 1.0 : ti < 0.8 ? 1.0 + 0.4 * (ti - 0.5) : ti < 1.1 ? 1.12 - 0.5 * (ti - 0.8) : ti < 1.5 ? 0.97
+                    : ti < 2.1 ? 0.97 + 0.5 * (ti - 1.5) : 1.27;
+                t.Add(ti);
+                y.Add(h);
+            }
+            var lift = StandardSpeedCalibration.MeasureLift(t.ToArray(), y.ToArray());
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Rise, Is.EqualTo(0.3).Within(1e-9));
+            Assert.That(lift.Speed, Is.EqualTo(0.5).Within(1e-9));
+        }
+
+        [Test]
+        public void EachRefusalSaysWhy()
+        {
+            Assert.That(StandardSpeedCalibration.MeasureLift(new[] { 0.0, 1.0 }, new[] { 1.0 }).Reason,
+                Is.EqualTo("times and heights differ in length (2 vs 1)"));
+            Assert.That(StandardSpeedCalibration.MeasureLift(new[] { 0.0, 1.0 }, new[] { 1.0, 1.5 }).Reason,
+                Is.EqualTo("too short: 2 samples, at least 3 needed"));
+            Assert.That(StandardSpeedCalibration.MeasureLift(new[] { 0.0, 1.0, 2.0 }, new[] { 1.0, 1.0, 1.0 }).Reason,
+                Is.EqualTo("too short: the hand rose 0 m, at least 0.1 m needed"), "three samples are enough to be judged");
+            var (t, y) = Ramp(0.05, 0.5);
+            Assert.That(StandardSpeedCalibration.MeasureLift(t, y).Reason, Is.EqualTo("too short: the hand rose 0.05 m, at least 0.1 m needed"));
+        }
+
+        [Test]
+        public void TooSlowAndTooFastLiftsAreRefusedWithTheirSpeed()
+        {
+            var (ts, ys) = Ramp(0.3, 8.0);
+            var slow = StandardSpeedCalibration.MeasureLift(ts, ys);
+            Assert.That(slow.IsAccepted, Is.False);
+            Assert.That(slow.Speed, Is.NaN);
+            Assert.That(slow.Reason, Is.EqualTo("too slow: 0.038 m/s, at least 0.05 m/s expected"), "0.3 m at 0.0375 m/s");
+            Assert.That(slow.ToString(), Is.EqualTo("rejected: " + slow.Reason));
+
+            var (tf, yf) = Ramp(1.0, 0.15, 1000);
+            var fast = StandardSpeedCalibration.MeasureLift(tf, yf);
+            Assert.That(fast.IsAccepted, Is.False);
+            string speed = (0.8 * fast.Rise / fast.Duration).ToString("0.###", CultureInfo.InvariantCulture);
+            Assert.That(0.8 * fast.Rise / fast.Duration, Is.GreaterThan(5));
+            Assert.That(fast.Reason, Is.EqualTo("too fast: " + speed + " m/s, at most 5 m/s expected"));
+        }
+
+        [Test]
+        public void ALiftOverTooQuicklyIsRefusedWithItsDuration()
+        {
+            // 0.3 m in 0.1 s: 10–90 % of the rise takes about 0.08 s (3 m/s, within the speed bounds).
+            var (t, y) = Ramp(0.3, 0.1, 1000);
+            var lift = StandardSpeedCalibration.MeasureLift(t, y);
+            Assert.That(lift.IsAccepted, Is.False);
+            Assert.That(lift.Speed, Is.NaN);
+            Assert.That(lift.Duration, Is.LessThan(0.1).And.GreaterThan(0.05));
+            Assert.That(lift.Rise, Is.EqualTo(0.3).Within(1e-9));
+            Assert.That(lift.Reason, Is.EqualTo("too short: the lift took " + lift.Duration.ToString("0.###", CultureInfo.InvariantCulture) + " s, at least 0.1 s needed"));
+        }
+
+        [Test]
+        public void CombiningNothingOrOnlyRefusedLiftsSaysSo()
+        {
+            var none = StandardSpeedCalibration.Combine(new LiftMeasurement[0]);
+            Assert.That((none.IsAccepted, none.LiftsUsed, none.LiftsOffered, none.Reason), Is.EqualTo((false, 0, 0, "no lifts recorded")));
+            Assert.That(none.StandardSpeed, Is.NaN);
+            var refused = StandardSpeedCalibration.Combine(new[] { Rejected("too slow: first"), Rejected("too fast: second") });
+            Assert.That(refused.Reason, Is.EqualTo("no usable lift (first: too slow: first)"));
+            Assert.That(refused.LiftsOffered, Is.EqualTo(2));
+            Assert.That(refused.ToString(), Is.EqualTo("rejected: no usable lift (first: too slow: first)"));
+            Assert.That(() => StandardSpeedCalibration.Combine(null), Throws.ArgumentNullException);
+        }
+
+        [Test]
+        public void AnOutlierIsDroppedOnlyWhenTheOtherLiftsSpread()
+        {
+            var spread = StandardSpeedCalibration.Combine(new[] { Accepted(0.5), Accepted(0.52), Accepted(0.48), Accepted(0.5), Accepted(1.5), Rejected("x") });
+            Assert.That(spread.IsAccepted, Is.True);
+            Assert.That((spread.LiftsUsed, spread.LiftsOffered), Is.EqualTo((4, 6)), "1.5 m/s is 50 MADs out");
+            Assert.That(spread.StandardSpeed, Is.EqualTo(0.5).Within(1e-12));
+            Assert.That(spread.ToString(), Is.EqualTo("v_std = 0.500 m/s from 4 of 6 lifts"));
+
+            // Three identical lifts: the MAD is 0, nothing is an outlier, the fourth stays in (the median is 0.5).
+            var same = StandardSpeedCalibration.Combine(new[] { Accepted(0.5), Accepted(0.5), Accepted(0.5), Accepted(0.9) });
+            Assert.That(same.IsAccepted, Is.True);
+            Assert.That(same.LiftsUsed, Is.EqualTo(4));
+            Assert.That(same.StandardSpeed, Is.EqualTo(0.5));
+            Assert.That(same.RelativeSpread, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void InconsistentLiftsAreRefusedWithTheirSpread()
+        {
+            // Median 0.5, MAD 0.2 (no outlier within 3 × 1.4826 × 0.2): spread 40 % > 35 %.
+            var r = StandardSpeedCalibration.Combine(new[] { Accepted(0.3), Accepted(0.5), Accepted(0.8) });
+            Assert.That(r.IsAccepted, Is.False);
+            Assert.That(r.StandardSpeed, Is.NaN);
+            Assert.That(r.RelativeSpread, Is.EqualTo(0.4).Within(1e-12));
+            Assert.That(r.LiftsUsed, Is.EqualTo(3));
+            Assert.That(r.Reason, Is.EqualTo("inconsistent lifts: speeds spread 40 % around their median, at most 35 % allowed"));
+        }
+
+        [Test]
+        public void FromLiftsRefusesMismatchedLists()
+        {
+            var (t, y) = Ramp(0.3, 0.6);
+            Assert.That(() => StandardSpeedCalibration.FromLifts(null, new[] { y }), Throws.ArgumentNullException);
+            Assert.That(() => StandardSpeedCalibration.FromLifts(new[] { t }, null), Throws.ArgumentNullException);
+            Assert.That(Assert.Throws<ArgumentException>(() => StandardSpeedCalibration.FromLifts(new[] { t, t }, new[] { y })).ParamName, Is.EqualTo("heights"));
+            var one = StandardSpeedCalibration.FromLifts(new[] { t }, new[] { y });
+            Assert.That(one.IsAccepted, Is.True);
+            Assert.That(one.StandardSpeed, Is.EqualTo(0.5).Within(1e-9));
+        }
+    }
+}
