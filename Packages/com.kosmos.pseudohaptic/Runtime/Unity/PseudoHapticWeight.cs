@@ -6,11 +6,13 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// Makes a grabbable object feel heavy (Son et al. 2022): while held, its local y is the core solver's answer
-    /// to the hand's height. Glue only: the decisions (mass, hands, hand point, release velocity) are the
-    /// engine-free <see cref="HeldObject"/> and <see cref="WeightSettings"/>; this reads the transform, the
-    /// Rigidbody and the collider, and writes the answer. A grab driver calls BeginHold, Step once per frame,
-    /// then EndHold, each with its hand's id (two hands may hold one object); it moves x and z itself.
-    /// Give held objects an upright parent of unit scale. Steps allocate nothing and never write NaN.
+    /// to the hands (<see cref="WeightSolver3D"/>), and so are x/z when the profile has lateral inertia. Glue only:
+    /// the decisions (mass, hands, per-hand share, break-away, release velocity) are the engine-free
+    /// <see cref="HeldObject"/> and <see cref="WeightSettings"/>; this reads the transform, the Rigidbody and the
+    /// collider, and writes the answer. A grab driver calls BeginHold, Step once per frame, then EndHold, each with
+    /// its hand's id (two hands may hold one object); it moves x and z itself unless <see cref="HeldObject.MovesHorizontal"/>,
+    /// and releases when <see cref="HeldObject.BrokeAway"/> (the Rigidbody then falls). Overloads without a hand id:
+    /// <see cref="PseudoHapticWeightCalls"/>. Give held objects an upright parent of unit scale. Steps allocate nothing and never write NaN.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pseudo-Haptic Weight")]
@@ -57,15 +59,16 @@ namespace Kosmos.PseudoHaptic
         public WeightSolver Solver => Hold.Solver;
         public string ConfigurationError => _error;
         public bool IsHeld => Hold.IsHeld;
-        public double MassKg => Solver != null ? Solver.Model.MassKg : double.NaN;
-        public double WeightNewtons => Solver != null ? Solver.Model.WeightNewtons : double.NaN;
+        public double MassKg => Hold.MassKg;
+        public double WeightNewtons => Hold.MassKg * PhysicalConstants.Gravity;
         public double Gain => Solver != null ? Solver.Gain : double.NaN;
         public double StandardSpeed => Solver != null ? Solver.StandardSpeed : double.NaN;
         /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
         public double Offset => IsHeld ? Solver.Offset : 0;
         public HandSample LastHand => Hold.LastHand;
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
-        public Vector3 HandWorldPosition => Hold.HandPoint.ToUnity();
+        /// <summary>The point the solver follows, world space (its height converted from the parent's).</summary>
+        public Vector3 HandWorldPosition => Hold.HandPoint.ToUnity() + (transform.parent != null ? transform.parent.position.y : 0) * Vector3.up;
         public Vector3 HandVelocity => Hold.HandVelocity.ToUnity();
         public Vector3 ObjectVelocity => Hold.ObjectVelocity.ToUnity();
         public HandDrawingMode HandDrawing => _profile != null ? _profile.HandDrawing : HandDrawingMode.HandTrue;
@@ -153,27 +156,16 @@ namespace Kosmos.PseudoHaptic
             return began;
         }
 
-        public bool BeginHold(Vector3 handWorld, double poseTime = double.NaN, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
-            => BeginHold(0, handWorld, poseTime, rigidbody);
-
-        public bool BeginHold(IHandPoseSource hand, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
-            => hand != null && BeginHold(0, hand.Position, hand.PoseTime, rigidbody);
-
-        /// <summary>One frame of hand <paramref name="hand"/>; writes the object's local y and returns it. Never throws, never allocates.</summary>
+        /// <summary>One frame of hand <paramref name="hand"/>; writes the object's local y (and x/z with lateral inertia) and returns y. Never throws, never allocates.</summary>
         public float Step(int hand, Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt)
         {
             if (IsHeld && NeedsConfiguration) Configure(); // only after a setting changed
-            SetLocalY(Hold.Step(hand, handWorld.ToDouble(), isTracked, isHighConfidence, poseTime, dt));
+            double y = Hold.Step(hand, handWorld.ToDouble(), isTracked, isHighConfidence, poseTime, dt);
+            transform.position = Hold.Horizontal(transform.position.ToDouble()).ToUnity();
+            SetLocalY(y);
             Hold.TrackObject(transform.position.ToDouble());
             return transform.localPosition.y;
         }
-
-        public float Step(Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt)
-            => Step(0, handWorld, isTracked, isHighConfidence, poseTime, dt);
-
-        public float Step(IHandPoseSource hand, float dt) => hand == null
-            ? Step(0, default, false, false, double.NaN, dt)
-            : Step(0, hand.Position, hand.IsTracked, hand.IsHighConfidence, hand.PoseTime, dt);
 
         /// <summary>Hand <paramref name="hand"/> lets go; the last hand ends the hold and the Rigidbody gets its state and release velocity back.</summary>
         public void EndHold(int hand) => Hold.End(hand);
