@@ -45,9 +45,7 @@ namespace Kosmos.PseudoHaptic
         HeldObject _hold;
         HeldBody _body;
         RigidbodyControl _rigidbodyControl;
-        bool _dirty = true;
-        PseudoHapticProfile _configuredAsset;
-        int _configuredVersion;
+        readonly ConfigurationWatch _watch = new ConfigurationWatch();
         string _error;
 
         /// <summary>Raised after a hold began (first hand), after each solver step, and after it ended (last hand); a throwing handler is logged.</summary>
@@ -60,7 +58,6 @@ namespace Kosmos.PseudoHaptic
         public string ConfigurationError => _error;
         public bool IsHeld => Hold.IsHeld;
         public double MassKg => Hold.MassKg;
-        public double WeightNewtons => Hold.MassKg * PhysicalConstants.Gravity;
         public double Gain => Solver != null ? Solver.Gain : double.NaN;
         public double StandardSpeed => Solver != null ? Solver.StandardSpeed : double.NaN;
         /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
@@ -69,20 +66,18 @@ namespace Kosmos.PseudoHaptic
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
         /// <summary>The point the solver follows, world space (its height converted from the parent's).</summary>
         public Vector3 HandWorldPosition => Hold.HandPoint.ToUnity() + (transform.parent != null ? transform.parent.position.y : 0) * Vector3.up;
-        public Vector3 HandVelocity => Hold.HandVelocity.ToUnity();
-        public Vector3 ObjectVelocity => Hold.ObjectVelocity.ToUnity();
         public HandDrawingMode HandDrawing => _profile != null ? _profile.HandDrawing : HandDrawingMode.HandTrue;
         public Collider Collider => _volumeCollider != null ? _volumeCollider : GetComponent<Collider>();
-        public Collider VolumeCollider { get => _volumeCollider; set { _volumeCollider = value; _dirty = true; } }
-        public PseudoHapticProfile Profile { get => _profile; set { _profile = value; _dirty = true; } }
-        public MassSource Mass { get => _massSource; set { _massSource = value; _dirty = true; } }
-        public float ExplicitMassKg { get => _explicitMassKg; set { _explicitMassKg = value; _dirty = true; } }
-        public float DensityKgPerCubicMetre { get => _densityKgPerCubicMetre; set { _densityKgPerCubicMetre = value; _dirty = true; } }
-        public StandardSpeedSource SpeedSource { get => _standardSpeedSource; set { _standardSpeedSource = value; _dirty = true; } }
-        public float ExplicitStandardSpeed { get => _explicitStandardSpeed; set { _explicitStandardSpeed = value; _dirty = true; } }
+        public Collider VolumeCollider { get => _volumeCollider; set { _volumeCollider = value; _watch.MarkDirty(); } }
+        public PseudoHapticProfile Profile { get => _profile; set { _profile = value; _watch.MarkDirty(); } }
+        public MassSource Mass { get => _massSource; set { _massSource = value; _watch.MarkDirty(); } }
+        public float ExplicitMassKg { get => _explicitMassKg; set { _explicitMassKg = value; _watch.MarkDirty(); } }
+        public float DensityKgPerCubicMetre { get => _densityKgPerCubicMetre; set { _densityKgPerCubicMetre = value; _watch.MarkDirty(); } }
+        public StandardSpeedSource SpeedSource { get => _standardSpeedSource; set { _standardSpeedSource = value; _watch.MarkDirty(); } }
+        public float ExplicitStandardSpeed { get => _explicitStandardSpeed; set { _explicitStandardSpeed = value; _watch.MarkDirty(); } }
         public ReleaseVelocity Release { get => _releaseVelocity; set => _releaseVelocity = value; }
         Rigidbody Body => GetComponent<Rigidbody>();
-        bool NeedsConfiguration => _dirty || _profile != _configuredAsset || (_profile != null && _profile.Version != _configuredVersion);
+        bool NeedsConfiguration => _watch.IsStale(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
 
         HeldObject CreateHold()
         {
@@ -95,11 +90,11 @@ namespace Kosmos.PseudoHaptic
 
         void OnEnable() { s_enabled.Add(this); UserCalibrationStore.Changed += MarkDirty; }
         void OnDisable() { Hold.EndAll(); s_enabled.Remove(this); UserCalibrationStore.Changed -= MarkDirty; }
-        void MarkDirty() => _dirty = true;
+        void MarkDirty() => _watch.MarkDirty();
 
         void OnValidate()
         {
-            _dirty = true;
+            _watch.MarkDirty();
 #if UNITY_EDITOR
             if (_massSource == MassSource.DensityTimesVolume) StoreMeshVolume();
 #endif
@@ -111,13 +106,15 @@ namespace Kosmos.PseudoHaptic
             if (!ColliderVolume.TryReadMesh(Collider, out Mesh mesh, out double volume)) return false; // keeps what was stored
             _storedVolumeMesh = mesh;
             _storedMeshVolume = volume;
-            return _dirty = true;
+            _watch.MarkDirty();
+            return true;
         }
 
         /// <summary>The weight model of this object's settings, or false with the reason. Reading a mesh's volume allocates.</summary>
         public bool TryCreateModel(out WeightModel model, out string error) =>
-            WeightSettings.TryCreateModel(_massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
-                                          (out double v, out string e) => ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out v, out e), name, out model, out error);
+            WeightSettings.TryCreateModel(_massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg, Volume, name, out model, out error);
+
+        bool Volume(out double volume, out string error) => ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out volume, out error);
 
         /// <summary>The profile this object uses: its asset's, or the "paper" preset.</summary>
         public bool TryGetProfile(out WeightProfile profile, out string error)
@@ -133,14 +130,12 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Applies the settings to the solver (also during a hold); on invalid ones logs the reason, keeps the last valid configuration, returns false.</summary>
         public bool Configure()
         {
-            _dirty = false;
-            _configuredAsset = _profile;
-            _configuredVersion = _profile != null ? _profile.Version : 0;
-            bool ok = TryCreateModel(out WeightModel model, out _error) && TryGetProfile(out WeightProfile profile, out _error)
-                      && Hold.Configure(model, profile, ResolveStandardSpeed());
-            _error = ok ? null : _error ?? Hold.Error;
+            _watch.Configured(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
+            TryGetProfile(out WeightProfile profile, out string profileError);
+            bool ok = WeightSettings.TryConfigure(Hold, _massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
+                                                  Volume, name, profile, profileError, ResolveStandardSpeed(), out double write, out _error);
             if (!ok) Debug.LogError("Pseudo-haptic weight on '" + name + "' is not configured: " + _error, this);
-            if (ok && WeightSettings.WritesRigidbodyMass(_massSource) && Body != null) Body.mass = (float)model.MassKg;
+            if (!double.IsNaN(write)) Body.mass = (float)write;
             return ok;
         }
 
