@@ -68,6 +68,21 @@ namespace Kosmos.PseudoHaptic.Tests
             double two = Lift(Object(2, NamedProfiles.Paper), true, 0.3, 4);
             double one = Lift(Object(2, NamedProfiles.Paper), false, 0.3, 4);
             Assert.That(two, Is.EqualTo(one).Within(0.01), "the paper's weight is unchanged by a second hand");
+
+            // The second hand is followed: with the first lost for most of the lift, the lift goes on with the second.
+            HeldObject hold = Object(0.5, NamedProfiles.Paper);
+            HandFrame[] left = Hand(QuestHand.Lift(Table + LeftGrip, 0.3, 0.4, 0.8), 1.8, 5, loseAt: 0.45, loseFor: 1.3);
+            HandFrame[] right = Hand(QuestHand.Lift(Table + RightGrip, 0.3, 0.4, 0.8), 1.8, 6);
+            hold.Begin(1, Table + LeftGrip, double.NaN, Table, Table.Y);
+            hold.Begin(2, Table + RightGrip, double.NaN, Table, Table.Y);
+            double y = Table.Y;
+            for (int i = 0; i < left.Length; i++)
+            {
+                double a = hold.Step(1, left[i].Position, left[i].Tracked, left[i].HighConfidence, double.NaN, left[i].Dt);
+                double b = hold.Step(2, right[i].Position, right[i].Tracked, right[i].HighConfidence, double.NaN, right[i].Dt);
+                y = double.IsNaN(a) ? b : a;
+            }
+            Assert.That(y - Table.Y, Is.GreaterThan(0.1), "the object went up with the hand still tracked");
         }
 
         /// <summary>A sideways carry of 0.4 m: x/z are the solver's with lateral inertia, heavier lags more, and it ends at the hand.</summary>
