@@ -54,6 +54,12 @@ namespace Kosmos.PseudoHaptic.Editor
             EditorGUILayout.LabelField("Standard speed v_std", F(speed, "0.###") + " m/s"
                 + (weight.SpeedSource == StandardSpeedSource.UserCalibration && UserCalibrationStore.Current == null ? "  (default: not calibrated)" : ""));
             EditorGUILayout.LabelField("Profile", profile.ToString(), EditorStyles.wordWrappedMiniLabel);
+            TwoHands twoHands = profile.Find<TwoHands>();
+            BreakAway breakAway = profile.Find<BreakAway>();
+            EditorGUILayout.LabelField("x / z", profile.Has<LateralInertia>() ? "the solver's (lateral inertia: trails the hand)" : "the grab's (follows the hand)");
+            EditorGUILayout.LabelField("Each of two hands carries", F(model.MassKg * (twoHands != null ? twoHands.Share : 1), "0.###") + " kg"
+                + (twoHands != null ? "" : "  (no Two Hands effect: the whole mass)"));
+            EditorGUILayout.LabelField("Break-away", breakAway != null ? "beyond " + F(breakAway.Distance * 100, "0.#") + " cm for " + F(breakAway.Dwell, "0.###") + " s" : "off");
 
             DrawCurve(profile, speed, model.MassKg, preview.Gain);
 
@@ -66,6 +72,10 @@ namespace Kosmos.PseudoHaptic.Editor
                 {
                     EditorGUILayout.LabelField("Hand − object", F(weight.Offset * 100, "0.0") + " cm");
                     EditorGUILayout.LabelField("Hand y / object y", F(weight.Solver.HandY, "0.000") + " / " + F(weight.Solver.ObjectY, "0.000") + " m");
+                    WeightSolver3D solver = weight.Hold.Solver3D;
+                    EditorGUILayout.LabelField("Hands on / followed / carrying", weight.Hold.HandCount + " / " + solver.FollowedHands + " / " + solver.HoldingHands
+                        + "  (each carries " + F(solver.PerHandMassKg, "0.###") + " kg)");
+                    EditorGUILayout.LabelField("Lateral lag x / z", F(solver.LagX * 100, "0.0") + " / " + F(solver.LagZ * 100, "0.0") + " cm");
                 }
                 if (weight.ConfigurationError != null) EditorGUILayout.HelpBox(weight.ConfigurationError, MessageType.Error);
             }

@@ -60,7 +60,7 @@ namespace Kosmos.PseudoHaptic.Editor
         public static void Experiment1()
         {
             if (!NewScene(out Scene scene, out Transform root, out _)) return;
-            SampleContent.Experiment1(root, Profile(NamedProfiles.PaperExperimentName, NamedProfiles.PaperExperimentName));
+            SampleContent.Experiment1(root, TwoHandedExperimentProfile()); // both hands, as the paper's participants lifted
             Save(scene, "Experiment1");
         }
 
@@ -68,7 +68,7 @@ namespace Kosmos.PseudoHaptic.Editor
         public static void Experiment2()
         {
             if (!NewScene(out Scene scene, out Transform root, out _)) return;
-            SampleContent.Experiment2(root, Profile(NamedProfiles.PaperExperimentName, NamedProfiles.PaperExperimentName));
+            SampleContent.Experiment2(root, TwoHandedExperimentProfile());
             Save(scene, "Experiment2");
         }
 
@@ -81,7 +81,7 @@ namespace Kosmos.PseudoHaptic.Editor
             handOnObject.HandDrawing = HandDrawingMode.HandOnObject; // the same effects, the hand drawn at the object
             EditorUtility.SetDirty(handOnObject);
             AssetDatabase.SaveAssets();
-            SampleContent.Playground(root, Profile("Playground", NamedProfiles.PaperName), sources, handOnObject);
+            SampleContent.Playground(root, Profile("Playground", NamedProfiles.PaperName), sources, handOnObject, Profile("Playground-xyz", NamedProfiles.XyzName));
             Save(scene, "Playground");
         }
 
@@ -91,6 +91,16 @@ namespace Kosmos.PseudoHaptic.Editor
             if (!NewScene(out Scene scene, out Transform root, out _)) return;
             DiscriminationStation.Build(root, Profile(NamedProfiles.PaperName, NamedProfiles.PaperName), "P1");
             Save(scene, "Discrimination");
+        }
+
+        /// <summary>"paper-experiment" with Two Hands switched on (each hand carries half), saved as Experiment-TwoHands.</summary>
+        static PseudoHapticProfile TwoHandedExperimentProfile()
+        {
+            PseudoHapticProfile profile = Profile("Experiment-TwoHands", NamedProfiles.PaperExperimentName);
+            SampleContent.LiftWithBothHands(profile);
+            EditorUtility.SetDirty(profile);
+            AssetDatabase.SaveAssets();
+            return profile;
         }
 
         /// <summary>The profile asset of that name, created or reset to <paramref name="preset"/>.</summary>

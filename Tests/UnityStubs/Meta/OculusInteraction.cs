@@ -53,6 +53,11 @@ namespace Oculus.Interaction
     {
         event Action<PointerEvent> WhenPointerEventRaised;
     }
+
+    public interface IPointableElement : IPointable
+    {
+        void ProcessPointerEvent(PointerEvent evt);
+    }
 }
 
 namespace Oculus.Interaction.Input

@@ -30,6 +30,7 @@ namespace Kosmos.PseudoHaptic
         bool _holds1, _holds2;               // the hand has been followed since it gripped (carries its share)
         bool _in1, _in2;                     // followed this frame
         bool _last1, _last2;                 // the last non-empty followed set
+        bool _anchorFromPoint;               // the last followed hand let go: anchor the next set at the followed point
         double _join1, _join2;               // steady tracking while waiting to join the other hand, s
         double _k1x, _k1y, _k1z, _k2x, _k2y, _k2z; // each hand's last followable position
         double _cx, _cy, _cz;                // anchor: followed point = hands' mean + c
@@ -156,7 +157,7 @@ namespace Kosmos.PseudoHaptic
             _holding = true;
             _brokeAway = false;
             _grip1 = _grip2 = true;
-            _holds1 = _holds2 = _in1 = _in2 = _last1 = _last2 = false;
+            _holds1 = _holds2 = _in1 = _in2 = _last1 = _last2 = _anchorFromPoint = false;
             _join1 = _join2 = 0;
             _cx = _cy = _cz = 0;
             _hHas = false;
@@ -198,7 +199,27 @@ namespace Kosmos.PseudoHaptic
             if (hand != 1 && hand != 2) throw new ArgumentOutOfRangeException(nameof(hand), hand, "hand must be 1 or 2, got " + hand + ".");
             if (hand == 1) { _grip1 = grips; if (!grips) _holds1 = false; }
             else { _grip2 = grips; if (!grips) _holds2 = false; }
+            if (!grips) Forget(hand);
             ApplyMass(force: false, _y.StandardSpeed);
+        }
+
+        /// <summary>A hand that lets go leaves the last followed set now, so that whatever is followed next (the other
+        /// hand, or a new grasp in this slot) is re-anchored to the followed point instead of being taken for this
+        /// hand returning from a loss.</summary>
+        void Forget(int hand)
+        {
+            bool was = hand == 1 ? _last1 : _last2, other = hand == 1 ? _last2 : _last1;
+            if (!was) return;
+            if (other)
+            {
+                Mean(true, true, out double ox, out double oy, out double oz);
+                Mean(hand == 2, hand == 1, out double nx, out double ny, out double nz);
+                _cx += ox - nx;
+                _cy += oy - ny;
+                _cz += oz - nz;
+            }
+            else _anchorFromPoint = true;
+            if (hand == 1) _last1 = false; else _last2 = false;
         }
 
         /// <summary>One-hand step.</summary>
@@ -252,7 +273,16 @@ namespace Kosmos.PseudoHaptic
             if (!f2) _join2 = 0;
             if (n1 || n2)
             {
-                if ((_last1 || _last2) && (n1 != _last1 || n2 != _last2))
+                if (_anchorFromPoint)
+                {
+                    // The last followed hand let go: continue from the followed point where it was.
+                    Mean(n1, n2, out double px, out double py, out double pz);
+                    _cx = _vx - px;
+                    _cy = _vy - py;
+                    _cz = _vz - pz;
+                    _anchorFromPoint = false;
+                }
+                else if ((_last1 || _last2) && (n1 != _last1 || n2 != _last2))
                 {
                     // Keep the followed point where it was: the old set's mean minus the new set's, at each hand's last position.
                     Mean(_last1, _last2, out double ox, out double oy, out double oz);

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using Oculus.Interaction;
 using Oculus.Interaction.HandGrab;
@@ -8,8 +9,14 @@ namespace Kosmos.PseudoHaptic.Interaction
     /// <summary>
     /// The pseudo-haptic weight as a transformer of Meta's Interaction SDK: put it on a <c>Grabbable</c> that
     /// also has a <see cref="PseudoHapticWeight"/> and make it the Grabbable's one-grab transformer (and its
-    /// two-grab one, for lifting with both hands). x and z follow the hand (the mean of the grabbing hands),
-    /// keeping the offset they had at the grab; the object's rotation is left as it is; y comes from the solver.
+    /// two-grab one, for lifting with both hands). Each grab (pointer id) is a hand of one hold on the weight: two
+    /// grabs are the solver's two-hand case (each hand's share of the mass, re-anchoring when one joins or leaves;
+    /// the Grabbable ends and begins its transformer whenever the count changes, so hands join and leave through its
+    /// Select and Unselect events, not through Begin/EndTransform). x and z follow the mean of the grabbing hands,
+    /// keeping the offset they had when the count last changed, unless the profile has lateral inertia (then they
+    /// are the solver's); the object's rotation is left as it is; y comes from the solver. A break-away cancels
+    /// every grab point through the Grabbable (<see cref="IPointableElement.ProcessPointerEvent"/>), which then
+    /// unlocks its Rigidbody, and the object falls.
     /// The hand is the tracked one: a hand grab interactor's grab point is not the hand at the start of a grab
     /// (its movement provider, <c>MoveTowardsTargetProvider</c> by default, slides it from the object toward the
     /// hand), so for every grab by an <see cref="IHandGrabInteractor"/> (the pointer event's data) the solver
@@ -27,7 +34,8 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         IGrabbable _grabbable;
         IPointable _pointable;
-        // The hand grab interactors selecting the object, by pointer id (from the Grabbable's Select events).
+        // The grabs selecting the object, by pointer id (from the Grabbable's Select events), and the hand grab
+        // interactor of each (null for other interactors).
         readonly List<int> _handIds = new List<int>(4);
         readonly List<IHandGrabInteractor> _hands = new List<IHandGrabInteractor>(4);
         Vector3 _grabOffset;
@@ -72,24 +80,36 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_grabbable == null || _weight == null || !TryHandCentre(out Vector3 grab, out _, out _)) return;
             _grabOffset = _weight.transform.position - grab;
             _lastTime = Time.timeAsDouble;
-            _holding = _weight.BeginHold(grab, double.NaN, RigidbodyControl.External);
+            for (int i = 0; i < _handIds.Count; i++) _weight.BeginHold(_handIds[i], HandPose(i, out _, out _), double.NaN, RigidbodyControl.External);
+            _holding = _weight.IsHeld;
         }
 
         public void UpdateTransform()
         {
-            if (!_holding || !TryHandCentre(out Vector3 grab, out bool tracked, out bool highConfidence)) return;
+            if (!_holding || !TryHandCentre(out Vector3 grab, out bool tracked, out _)) return;
             double now = Time.timeAsDouble;
             float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
             _lastTime = now;
             Transform target = _weight.transform;
-            target.position = GrabFollow.Horizontal(target.position.ToDouble(), grab.ToDouble(), _grabOffset.ToDouble(), tracked, true).ToUnity();
-            _weight.Step(grab, tracked, highConfidence, double.NaN, dt);
+            target.position = GrabFollow.Horizontal(target.position.ToDouble(), grab.ToDouble(), _grabOffset.ToDouble(), tracked, GrabFollow.GrabMovesHorizontal(true, _weight.Hold)).ToUnity();
+            for (int i = 0; i < _handIds.Count; i++)
+            {
+                Vector3 hand = HandPose(i, out bool handTracked, out bool highConfidence);
+                _weight.Step(_handIds[i], hand, handTracked, highConfidence, double.NaN, dt);
+            }
+            if (_weight.Hold.BrokeAway) CancelGrabs();
         }
 
-        public void EndTransform()
+        // Hands leave the hold through Unselect and Cancel (the Grabbable also ends its transformer when a second hand joins).
+        public void EndTransform() => _holding = false;
+
+        /// <summary>Break-away: every grab point is cancelled through the Grabbable, which unlocks its Rigidbody.</summary>
+        void CancelGrabs()
         {
-            if (_holding && _weight != null) _weight.EndHold();
-            _holding = false;
+            var element = _grabbable as IPointableElement;
+            for (int i = _handIds.Count - 1; i >= 0 && element != null; i = Math.Min(i - 1, _handIds.Count - 1))
+                element.ProcessPointerEvent(new PointerEvent(_handIds[i], PointerEventType.Cancel, default(Pose)));
+            if (_weight != null) _weight.EndHold(); // whatever the Grabbable did not report
         }
 
         void OnDestroy()
@@ -103,10 +123,10 @@ namespace Kosmos.PseudoHaptic.Interaction
         {
             if (evt.Type == PointerEventType.Select)
             {
-                if (evt.Data is IHandGrabInteractor hand && !_handIds.Contains(evt.Identifier))
+                if (!_handIds.Contains(evt.Identifier))
                 {
                     _handIds.Add(evt.Identifier);
-                    _hands.Add(hand);
+                    _hands.Add(evt.Data as IHandGrabInteractor);
                 }
             }
             else if (evt.Type == PointerEventType.Unselect || evt.Type == PointerEventType.Cancel)
@@ -117,22 +137,32 @@ namespace Kosmos.PseudoHaptic.Interaction
                     _handIds.RemoveAt(i);
                     _hands.RemoveAt(i);
                 }
+                if (_weight != null) _weight.EndHold(evt.Identifier);
             }
         }
 
         /// <summary>
-        /// The mean of the grabbing hands (<see cref="GrabCentre"/>): the tracked hands when every grab comes from a hand grab
-        /// interactor, else the Grabbable's grab points. Tracked (and high confidence) only when every hand is.
+        /// Grab <paramref name="i"/>'s point: the tracked hand's for a hand grab interactor, else the Grabbable's grab point
+        /// of the same index (its grab points are kept in the order of the Select events, as these lists are).
         /// </summary>
+        Vector3 HandPose(int i, out bool tracked, out bool highConfidence)
+        {
+            IHandGrabInteractor hand = _hands[i];
+            var points = _grabbable.GrabPoints;
+            tracked = hand == null || hand.Hand.IsTrackedDataValid;
+            highConfidence = hand == null || hand.Hand.IsHighConfidence;
+            return hand != null ? hand.GetHandGrabPose().position : points != null && i < points.Count ? points[i].position : _weight.transform.position;
+        }
+
+        /// <summary>The mean of the grabbing hands (<see cref="GrabCentre"/>); tracked only when every hand is.</summary>
         bool TryHandCentre(out Vector3 centre, out bool tracked, out bool highConfidence)
         {
-            var points = _grabbable.GrabPoints;
-            int n = points != null ? points.Count : 0;
             var mean = new GrabCentre();
-            for (int i = 0; i < n && _hands.Count == n; i++)
-                mean.Add(_hands[i].GetHandGrabPose().position.ToDouble(), _hands[i].Hand.IsTrackedDataValid, _hands[i].Hand.IsHighConfidence);
-            for (int i = 0; i < n && _hands.Count != n; i++)
-                mean.Add(points[i].position.ToDouble());
+            for (int i = 0; i < _handIds.Count; i++)
+            {
+                Vector3 p = HandPose(i, out bool t, out bool h);
+                mean.Add(p.ToDouble(), t, h);
+            }
             centre = mean.Point.ToUnity();
             tracked = mean.IsTracked;
             highConfidence = mean.IsHighConfidence;

@@ -14,6 +14,10 @@ namespace Kosmos.PseudoHaptic
             return new Vector3d(target.X, objectNow.Y, target.Z);
         }
 
+        /// <summary>Whether a grab driver moves the held object's x/z itself: when asked to and the hold's solver does not (no lateral inertia).</summary>
+        public static bool GrabMovesHorizontal(bool followHorizontal, HeldObject hold) =>
+            followHorizontal && (hold == null || !hold.MovesHorizontal);
+
         /// <summary>The held object's lag behind a rigid grab: where it is minus hand + grab offset (NaN for a lost hand).</summary>
         public static Vector3d Lag(Vector3d objectNow, Vector3d hand, Vector3d grabOffset) => objectNow - (hand + grabOffset);
 

@@ -10,30 +10,36 @@ namespace Kosmos.PseudoHaptic
     }
 
     /// <summary>
-    /// One object's hold, engine-free: its <see cref="WeightSolver"/>, the hands on it (one or two), the hand point
-    /// the solver follows, the clock, the hand's and the object's velocity for the release, and the events an
-    /// observer (the session recorder) reads. The Unity component converts poses and writes the answer.
+    /// One object's hold, engine-free: its <see cref="WeightSolver3D"/>, the hands on it (one or two), the clock,
+    /// the hand's and the object's velocity for the release, and the events an observer (the session recorder)
+    /// reads. The Unity component converts poses and writes the answer.
     /// </summary>
     /// <remarks>
-    /// Two hands: the first hand that grabs begins the hold; a second joins it; the hold ends when the last one
-    /// lets go. The solver follows one point: the first hand's position moved by the mean motion of the tracked
-    /// hands since the set of tracked hands last changed. A hand that joins, leaves, loses or regains tracking
-    /// re-anchors that point where it is, so it never jumps. Only the first hand (<see cref="IsLeader"/>) steps
-    /// the solver, once per frame; the other's step records its pose. No allocation per frame.
+    /// The solver sees each hand as world x/z and parent-space y (the object's parent is upright, of unit scale).
+    /// Two hands: the first hand that grabs begins the hold in the solver's slot 1, a second joins in the other
+    /// slot (the solver follows their mean and, with <see cref="TwoHands"/>, gives each its share of the mass);
+    /// a hand that lets go leaves its slot (<see cref="WeightSolver3D.SetGrip"/>), a hand that comes takes a free
+    /// one, and the solver re-anchors the followed point so nothing steps. A profile without
+    /// <see cref="TwoHands"/> gets <c>TwoHands(1)</c> here: both hands are followed, each carrying the whole
+    /// mass (the paper's weight, unchanged). The solver steps once per frame, on the call that completes the
+    /// frame's poses: when every hand on the object has given one since the last step (two hands calling in any
+    /// order), or when a hand gives a second one before the other gave any (the other is not stepping). x and z are the
+    /// solver's (<see cref="Horizontal"/>) when the profile has <see cref="LateralInertia"/>; otherwise the grab
+    /// driver moves them as before. A break-away ends the solver's hold: <see cref="BrokeAway"/> tells the
+    /// drivers to release, and the last release raises <see cref="Ended"/>. No allocation per frame.
     /// </remarks>
     public sealed class HeldObject
     {
         public const int MaxHands = 2;
+        const int Empty = int.MinValue;
 
         readonly IParentSpace _space;
-        readonly int[] _ids = new int[MaxHands];
-        readonly Vector3d[] _pos = new Vector3d[MaxHands];
-        readonly Vector3d[] _ref = new Vector3d[MaxHands];
-        readonly bool[] _tracked = new bool[MaxHands];
-        readonly bool[] _contributes = new bool[MaxHands];
-        readonly bool[] _lastSeen = new bool[MaxHands]; // contributed just before every hand was lost
+        readonly int[] _slotHand = { Empty, Empty }; // the hand id in solver slot 1 and 2
+        readonly HandPose[] _pose = new HandPose[MaxHands];
+        readonly bool[] _fresh = new bool[MaxHands]; // recorded a pose since the solver's last step
         int _count;
-        Vector3d _base, _point;
+        bool _active; // a hold began and its Ended has not been raised
+        WeightProfile _given, _used;
         VelocityTracker _handVelocity, _objectVelocity;
         double _clock;
 
@@ -42,24 +48,37 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Raised when the first hand's hold began, after each solver step, and when the last hand let go.</summary>
         public event Action Began, Stepped, Ended;
 
-        /// <summary>The core solver, null until the first successful configuration.</summary>
-        public WeightSolver Solver { get; private set; }
+        /// <summary>The 3D solver, null until the first successful configuration.</summary>
+        public WeightSolver3D Solver3D { get; private set; }
 
-        public bool IsHeld => Solver != null && Solver.IsHolding;
+        /// <summary>Its y solver (configured with the per-hand mass while two hands carry shares), null until configured.</summary>
+        public WeightSolver Solver => Solver3D?.Vertical;
+
+        /// <summary>The object's mass, kg (NaN until configured); the y solver may see a per-hand share of it.</summary>
+        public double MassKg => Solver3D != null ? Solver3D.Model.MassKg : double.NaN;
+
+        /// <summary>The solver holds the object (false after a break-away, while the hands have not yet let go).</summary>
+        public bool IsHeld => Solver3D != null && Solver3D.IsHolding;
+
+        /// <summary>The object has torn loose from the hands (<see cref="BreakAway"/>): every grab driver should release.</summary>
+        public bool BrokeAway => _active && Solver3D.BrokeAway;
+
+        /// <summary>x and z are the solver's (the profile has <see cref="LateralInertia"/>); otherwise the grab moves them.</summary>
+        public bool MovesHorizontal { get; private set; }
 
         /// <summary>Hands on the object now.</summary>
         public int HandCount => _count;
 
-        /// <summary>The point the solver follows, world space (the last tracked one while every hand is lost).</summary>
-        public Vector3d HandPoint => _point;
+        /// <summary>The point the solver follows: world x/z, parent-space y (the last followed one while every hand is lost).</summary>
+        public Vector3d HandPoint { get; private set; }
 
-        /// <summary>The hand as the solver was given it on the hold's last frame.</summary>
+        /// <summary>The hand as the y solver was given it on the hold's last frame.</summary>
         public HandSample LastHand { get; private set; }
 
         /// <summary>The frame time given to the last step, s (0 right after the hold began).</summary>
         public double LastDeltaTime { get; private set; }
 
-        /// <summary>The hand point's velocity over its last motion, world space.</summary>
+        /// <summary>The hand point's velocity over its last motion.</summary>
         public Vector3d HandVelocity => _handVelocity.VelocityAt(_clock);
 
         /// <summary>The object's velocity over its last motion, world space (fed by <see cref="TrackObject"/>).</summary>
@@ -76,9 +95,14 @@ namespace Kosmos.PseudoHaptic
         {
             try
             {
-                if (Solver == null) Solver = new WeightSolver(model, profile, standardSpeed);
-                else Solver.Configure(model, profile, standardSpeed);
-                ApplyBottom();
+                if (profile == null) throw new ArgumentNullException(nameof(profile));
+                WeightProfile used = ReferenceEquals(profile, _given) ? _used : WithBothHands(profile);
+                if (Solver3D == null) Solver3D = new WeightSolver3D(model, used, standardSpeed);
+                else Solver3D.Configure(model, used, standardSpeed);
+                _given = profile;
+                _used = used;
+                MovesHorizontal = profile.Has<LateralInertia>();
+                Solver3D.BottomBelowPivot = BottomBelowPivot;
             }
             catch (ArgumentException e)
             {
@@ -89,80 +113,86 @@ namespace Kosmos.PseudoHaptic
             return true;
         }
 
-        void ApplyBottom()
-        {
-            Solver.BottomBelowPivot = BottomBelowPivot; // the agreed solver property (issue 9): the floor keeps the bottom up
-        }
+        /// <summary>The profile the solver runs: <paramref name="profile"/>, with <c>TwoHands(1)</c> when it has no <see cref="TwoHands"/>.</summary>
+        public static WeightProfile WithBothHands(WeightProfile profile) =>
+            profile.Has<TwoHands>() ? profile : profile.With(new TwoHands(1), profile.Name);
 
         /// <summary>Whether hand <paramref name="hand"/> is on the object.</summary>
-        public bool Holds(int hand) => Slot(hand) >= 0;
-
-        /// <summary>Whether hand <paramref name="hand"/> is the one that steps the solver.</summary>
-        public bool IsLeader(int hand) => _count > 0 && _ids[0] == hand;
+        public bool Holds(int hand) => SlotOf(hand) >= 0;
 
         /// <summary>
         /// Hand <paramref name="hand"/> takes the object at <paramref name="handWorld"/>: the first one begins the hold
-        /// (the object's current local y, the grab offset objectY − handY going to the solver), a second joins it.
-        /// False when the solver is not configured, the hand already holds it, two hands do, or the solver refuses.
+        /// (the object where it is: world x/z, local y), a second joins it. False when the solver is not configured,
+        /// the hand already holds it, two hands do, the object has broken away, or the solver refuses.
         /// </summary>
         public bool Begin(int hand, Vector3d handWorld, double poseTime, Vector3d objectWorld, double objectLocalY)
         {
-            if (Solver == null || Slot(hand) >= 0 || _count >= MaxHands) return false;
-            bool usable = Usable(handWorld);
+            if (Solver3D == null || hand == Empty || SlotOf(hand) >= 0 || _count >= MaxHands || (_count > 0 && !IsHeld)) return false;
             if (_count > 0)
             {
-                Add(hand, handWorld, usable);
-                Reanchor();
+                int free = _slotHand[0] == Empty ? 0 : 1;
+                Take(free, hand, handWorld, true, true, poseTime);
+                Solver3D.SetGrip(free + 1, true); // joins once steadily tracked; the followed point is re-anchored
                 return true;
             }
-            double handY = usable ? _space.HeightOf(handWorld) : double.NaN;
+            Take(0, hand, handWorld, true, true, poseTime);
             try
             {
-                ApplyBottom();
-                Solver.BeginHold(handY, objectLocalY, poseTime);
+                Solver3D.BottomBelowPivot = BottomBelowPivot;
+                Solver3D.BeginHold(in _pose[0], HandPose.Lost, objectWorld.X, objectLocalY, objectWorld.Z);
             }
             catch (ArgumentException e)
             {
                 Error = e.Message;
+                _slotHand[0] = Empty;
+                _count = 0;
                 return false;
             }
-            Add(hand, handWorld, usable);
-            _base = _point = handWorld;
-            Reanchor();
+            Solver3D.SetGrip(2, false);
+            _fresh[0] = _fresh[1] = false;
+            _active = true;
             _clock = 0;
-            _handVelocity.Reset(handWorld, 0);
+            HandPoint = Followed(_pose[0]);
+            _handVelocity.Reset(HandPoint, 0);
             _objectVelocity.Reset(objectWorld, 0);
-            LastHand = new HandSample(handY, usable, usable, poseTime);
+            bool usable = _pose[0].IsUsable;
+            LastHand = new HandSample(usable ? _pose[0].Y : double.NaN, usable, usable, poseTime);
             LastDeltaTime = 0;
             Began?.Invoke();
             return true;
         }
 
         /// <summary>
-        /// One frame of hand <paramref name="hand"/>. The leader steps the solver with the combined point and gets the
-        /// object's new local y; any other hand records its pose and gets NaN (nothing to write). Never throws.
+        /// One frame of hand <paramref name="hand"/>. The call that completes the frame's poses steps the solver and
+        /// gets the object's new local y; an earlier call records its pose and gets NaN (nothing to write). Never throws.
         /// </summary>
         public double Step(int hand, Vector3d handWorld, bool tracked, bool highConfidence, double poseTime, double dt)
         {
-            int slot = Slot(hand);
+            int slot = SlotOf(hand);
             if (slot < 0 || !IsHeld) return double.NaN;
-            bool usable = tracked && Usable(handWorld);
-            _tracked[slot] = usable;
-            if (usable) _pos[slot] = handWorld;
-            Refresh();
-            if (slot != 0) return double.NaN;
+            bool again = _fresh[slot];
+            Take(slot, hand, handWorld, tracked, highConfidence, poseTime);
+            _fresh[slot] = true;
+            if (!again && !AllFresh()) return double.NaN; // the other hand's pose of this frame is still to come
+            _fresh[0] = _fresh[1] = false;
 
-            bool any = AnyContributes();
-            double handY = any ? _space.HeightOf(_point) : double.NaN;
-            var sample = new HandSample(handY, any, any && highConfidence, poseTime);
-            double y = Solver.Step(in sample, dt);
-            LastHand = sample;
+            WeightSolver3D s = Solver3D;
+            s.Step(in _pose[0], in _pose[1], dt);
+            bool any = s.FollowedHands > 0;
+            if (any) HandPoint = new Vector3d(s.FollowedX, s.FollowedY, s.FollowedZ);
+            bool confident = any && (_slotHand[0] == Empty || !_pose[0].IsUsable || _pose[0].IsHighConfidence)
+                                 && (_slotHand[1] == Empty || !_pose[1].IsUsable || _pose[1].IsHighConfidence);
+            LastHand = new HandSample(any ? s.FollowedY : double.NaN, any, confident, poseTime);
             LastDeltaTime = dt;
             if (dt > 0 && !double.IsInfinity(dt)) _clock += dt;
-            if (any) _handVelocity.Add(_point, _clock);
+            if (any) _handVelocity.Add(HandPoint, _clock);
             Stepped?.Invoke();
-            return y;
+            return s.ObjectY;
         }
+
+        /// <summary>The object's world position with x/z the solver's when it moves them (<see cref="MovesHorizontal"/>), else <paramref name="objectNow"/>.</summary>
+        public Vector3d Horizontal(Vector3d objectNow) =>
+            MovesHorizontal && _active ? new Vector3d(Solver3D.ObjectX, objectNow.Y, Solver3D.ObjectZ) : objectNow;
 
         /// <summary>The object's world position after the step's write, for its release velocity.</summary>
         public void TrackObject(Vector3d objectWorld) => _objectVelocity.Add(objectWorld, _clock);
@@ -170,27 +200,21 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Hand <paramref name="hand"/> lets go. True when that ended the hold (it was the last hand).</summary>
         public bool End(int hand)
         {
-            int slot = Slot(hand);
+            int slot = SlotOf(hand);
             if (slot < 0) return false;
-            Vector3d at = Combined(); // where the point is, with the leaving hand still counted
-            for (int i = slot; i < _count - 1; i++)
-            {
-                _ids[i] = _ids[i + 1];
-                _pos[i] = _pos[i + 1];
-                _ref[i] = _ref[i + 1];
-                _tracked[i] = _tracked[i + 1];
-                _contributes[i] = _contributes[i + 1];
-                _lastSeen[i] = _lastSeen[i + 1];
-            }
+            _slotHand[slot] = Empty;
+            _fresh[slot] = false;
+            _pose[slot] = HandPose.Lost;
             _count--;
             if (_count > 0)
             {
-                AnchorAt(at);
+                if (IsHeld) Solver3D.SetGrip(slot + 1, false); // the other hand continues; its share grows back
                 return false;
             }
-            if (Solver != null && Solver.IsHolding)
+            if (IsHeld) Solver3D.EndHold();
+            if (_active)
             {
-                Solver.EndHold();
+                _active = false;
                 Ended?.Invoke();
             }
             return true;
@@ -199,95 +223,36 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Every hand lets go (the object was disabled).</summary>
         public void EndAll()
         {
-            while (_count > 0) End(_ids[0]);
+            for (int i = 0; i < MaxHands; i++)
+                if (_slotHand[i] != Empty) End(_slotHand[i]);
         }
 
         /// <summary>The velocity a released body gets under <paramref name="kind"/>.</summary>
         public Vector3d ReleaseVelocity(ReleaseVelocity kind) => WeightSettings.Release(kind, HandVelocity, ObjectVelocity);
 
-        /// <summary>A pose the hands' point may follow: finite and within ±<see cref="WeightSolver.MaxCoordinate"/> m (the solver's rule for heights).</summary>
-        static bool Usable(Vector3d p) =>
-            HandSample.IsUsableHeight(p.Y) && HandSample.IsUsableHeight(p.X) && HandSample.IsUsableHeight(p.Z);
-
-        int Slot(int hand)
+        bool AllFresh()
         {
-            for (int i = 0; i < _count; i++)
-                if (_ids[i] == hand) return i;
+            for (int i = 0; i < MaxHands; i++)
+                if (_slotHand[i] != Empty && !_fresh[i]) return false;
+            return true;
+        }
+
+        int SlotOf(int hand)
+        {
+            if (hand == Empty) return -1;
+            for (int i = 0; i < MaxHands; i++)
+                if (_slotHand[i] == hand) return i;
             return -1;
         }
 
-        void Add(int hand, Vector3d world, bool usable)
+        void Take(int slot, int hand, Vector3d world, bool tracked, bool highConfidence, double poseTime)
         {
-            _ids[_count] = hand;
-            _pos[_count] = world;
-            _tracked[_count] = usable;
-            _contributes[_count] = false;
-            _lastSeen[_count] = false;
-            _count++;
+            if (_slotHand[slot] == Empty) _count++;
+            _slotHand[slot] = hand;
+            double y = world.IsFinite ? _space.HeightOf(world) : double.NaN;
+            _pose[slot] = new HandPose(world.X, y, world.Z, tracked, tracked && highConfidence, poseTime);
         }
 
-        bool AnyContributes()
-        {
-            for (int i = 0; i < _count; i++)
-                if (_contributes[i]) return true;
-            return false;
-        }
-
-        /// <summary>
-        /// Recomputes the point. When the set of tracked hands changed, it is re-anchored where it is, except when a
-        /// hand that was tracked until every hand was lost comes back: then its motion during the loss counts, as
-        /// the solver alone would see it (one hand's point stays its position).
-        /// </summary>
-        void Refresh()
-        {
-            bool changed = false, returning = false;
-            for (int i = 0; i < _count; i++)
-            {
-                changed |= _tracked[i] != _contributes[i];
-                returning |= _tracked[i] && _lastSeen[i];
-            }
-            if (!changed) { _point = Combined(); return; }
-            if (AnyContributes())
-            {
-                bool anyLeft = false;
-                for (int i = 0; i < _count; i++) anyLeft |= _tracked[i];
-                for (int i = 0; i < _count; i++) _lastSeen[i] = !anyLeft && _contributes[i];
-                Reanchor();
-            }
-            else if (returning)
-            {
-                for (int i = 0; i < _count; i++) { _contributes[i] = _tracked[i]; _lastSeen[i] = false; }
-            }
-            else Reanchor(); // another hand takes over: continue from where the point is
-            _point = Combined();
-        }
-
-        void Reanchor() => AnchorAt(AnyContributes() ? Combined() : _point);
-
-        void AnchorAt(Vector3d point)
-        {
-            _base = point;
-            for (int i = 0; i < _count && !_base.IsFinite; i++)
-                if (_tracked[i]) _base = _pos[i]; // the hold began untracked: start from the first tracked pose
-            for (int i = 0; i < _count; i++)
-            {
-                _ref[i] = _pos[i];
-                _contributes[i] = _tracked[i];
-            }
-            _point = _base;
-        }
-
-        Vector3d Combined()
-        {
-            Vector3d sum = Vector3d.Zero;
-            int n = 0;
-            for (int i = 0; i < _count; i++)
-            {
-                if (!_contributes[i]) continue;
-                sum += _pos[i] - _ref[i];
-                n++;
-            }
-            return n == 0 ? _point : _base + sum / n;
-        }
+        static Vector3d Followed(in HandPose p) => p.IsUsable ? new Vector3d(p.X, p.Y, p.Z) : Vector3d.NaN;
     }
 }

@@ -44,6 +44,28 @@ namespace Kosmos.PseudoHaptic
     /// <summary>The volume of the object's collider, m³, or false with the reason (asked only when the mass needs it).</summary>
     public delegate bool VolumeQuery(out double volume, out string error);
 
+    /// <summary>Which settings a component was last configured with, to know when to configure again (a setting, the profile asset or its version changed).</summary>
+    public sealed class ConfigurationWatch
+    {
+        object _asset;
+        int _version;
+        bool _dirty = true;
+
+        /// <summary>A setting changed.</summary>
+        public void MarkDirty() => _dirty = true;
+
+        /// <summary>Whether the configuration is out of date for this profile asset (null: none) at this version.</summary>
+        public bool IsStale(object asset, int version) => _dirty || !ReferenceEquals(asset, _asset) || version != _version;
+
+        /// <summary>Configured now with this asset at this version.</summary>
+        public void Configured(object asset, int version)
+        {
+            _dirty = false;
+            _asset = asset;
+            _version = version;
+        }
+    }
+
     /// <summary>The decisions behind an object's weight settings: its mass, the user's speed, the release velocity.</summary>
     public static class WeightSettings
     {
@@ -80,6 +102,24 @@ namespace Kosmos.PseudoHaptic
                 error = e.Message;
                 return false;
             }
+        }
+
+        /// <summary>
+        /// Configures <paramref name="hold"/> from an object's settings: its model (see <see cref="TryCreateModel"/>), its
+        /// profile (null with <paramref name="profileError"/> when the asset is invalid) and the user's speed. False with
+        /// the reason (naming the field), the hold keeping its last valid configuration. <paramref name="rigidbodyMassToWrite"/>
+        /// is the mass to write back to the Rigidbody, NaN when nothing is to be written.
+        /// </summary>
+        public static bool TryConfigure(HeldObject hold, MassSource source, double rigidbodyMass, double density, double explicitMass,
+                                        VolumeQuery volume, string objectName, WeightProfile profile, string profileError, double standardSpeed,
+                                        out double rigidbodyMassToWrite, out string error)
+        {
+            rigidbodyMassToWrite = double.NaN;
+            error = profileError ?? (profile == null ? "no profile" : null);
+            if (error != null || !TryCreateModel(source, rigidbodyMass, density, explicitMass, volume, objectName, out WeightModel model, out error)) return false;
+            if (!hold.Configure(model, profile, standardSpeed)) { error = hold.Error; return false; }
+            if (WritesRigidbodyMass(source) && !double.IsNaN(rigidbodyMass)) rigidbodyMassToWrite = model.MassKg;
+            return true;
         }
 
         /// <summary>Whether the resolved mass is written back to the Rigidbody (it came from elsewhere).</summary>

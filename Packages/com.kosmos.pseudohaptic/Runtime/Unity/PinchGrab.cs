@@ -7,7 +7,9 @@ namespace Kosmos.PseudoHaptic
     /// <see cref="HandGrab"/> (pinch with hysteresis, release on an opened hand, a long tracking loss or a
     /// break-away), <see cref="GrabSelection"/> (the nearest enabled <see cref="PseudoHapticWeight"/> in reach; two
     /// hands may share one) and <see cref="HandDrawing"/> (where the hand's visual root is drawn, per the held
-    /// object's profile). x and z follow the hand; y comes from the weight's solver. Runs in LateUpdate, after the
+    /// object's profile). Two of these (one per hand) on one weight are one two-handed hold. x and z follow the hand,
+    /// unless the weight's profile has lateral inertia (then they are its solver's); y comes from the weight's
+    /// solver. A break-away reported by the solver releases the grab, and the Rigidbody falls. Runs in LateUpdate, after the
     /// hand SDK has updated its pose; nothing is allocated per frame.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pinch Grab")]
@@ -94,12 +96,12 @@ namespace Kosmos.PseudoHaptic
         }
 
         bool IGrabDriver.IsStillHeld => _held != null && _held.Hold.Holds(Id);
-        bool IGrabDriver.BrokeAway => false; // the solver reports no break-away yet (issue 10 adds it)
+        bool IGrabDriver.BrokeAway => _held != null && _held.Hold.BrokeAway;
 
         void IGrabDriver.Follow(bool tracked)
         {
             Transform t = _held.transform;
-            t.position = GrabFollow.Horizontal(t.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble(), tracked, _followHorizontal).ToUnity();
+            t.position = GrabFollow.Horizontal(t.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble(), tracked, GrabFollow.GrabMovesHorizontal(_followHorizontal, _held.Hold)).ToUnity();
             IPinchHandPoseSource hand = Hand;
             _held.Step(Id, _position, tracked, hand.IsHighConfidence, hand.PoseTime, _dt);
         }

@@ -7,7 +7,9 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The effects a scene calls for, as an asset: one switch and the settings of each of the core's effects,
     /// and the safety limits. <see cref="Build"/> turns it into the core's immutable <see cref="WeightProfile"/>;
-    /// the presets copy <see cref="NamedProfiles"/> ("paper", "paper-experiment", "gain"). Values are validated
+    /// the presets copy <see cref="NamedProfiles"/> ("paper", "paper-experiment", "gain", "xyz"). The 3D and
+    /// two-hand effects (lateral inertia, two hands, break-away) act through <see cref="WeightSolver3D"/>, which
+    /// every <see cref="PseudoHapticWeight"/> runs. Values are validated
     /// by the core when built, and an invalid one is reported with the field's name.
     /// </summary>
     [CreateAssetMenu(menuName = "Kosmos/Pseudo-Haptic Profile", fileName = "PseudoHapticProfile", order = 400)]
@@ -34,6 +36,22 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] bool _experimentalBlend;
 
         [Header("Object motion")]
+        [Tooltip("§5's next step: on the way up, an object heavier than the standard rises more slowly the higher it is above where the hold began (never below a floor fraction).")]
+        [SerializeField] bool _heightDeceleration;
+        [Tooltip("Height scale, m: at this height a very heavy object rises at the midpoint between full speed and the floor fraction.")]
+        [SerializeField] float _decelerationHeight;
+        [Tooltip("The floor fraction: the upward motion is never multiplied by less than this, in (0, 1].")]
+        [SerializeField] float _decelerationMinFraction;
+        [Tooltip("§3.1: a fast motion moves a heavy object further than a slow one over the same distance (the gain's exponent follows the hand's speed relative to the user's).")]
+        [SerializeField] bool _fasterMovesFurther;
+        [Tooltip("The gain's exponent for a hand much faster than the user's standard speed (≤ 1).")]
+        [SerializeField] float _fastExponent;
+        [Tooltip("The gain's exponent for a hand much slower than it, and at rest (≥ 1).")]
+        [SerializeField] float _slowExponent;
+        [Tooltip("Half-width of the band that keeps jitter at rest from reading as speed, m.")]
+        [SerializeField] float _restBand;
+        [Tooltip("Time constant over which the hand's pace is smoothed, s.")]
+        [SerializeField] float _speedSmoothingTime;
         [Tooltip("Cap the object's speed at the user's rescaled experimental speed of its mass.")]
         [SerializeField] bool _speedCap;
         [SerializeField] float _speedCapHeadroom;
@@ -54,6 +72,24 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] bool _floorClamp;
         [SerializeField] float _floor;
 
+        [Header("Three dimensions and both hands")]
+        [Tooltip("x/z trail the hand for objects heavier than the standard (the solver moves x/z instead of the grab).")]
+        [SerializeField] bool _lateralInertia;
+        [Tooltip("s, the trailing's time constant at gain 0 (scaled by 1 − gain).")]
+        [SerializeField] float _lateralTimeConstant;
+        [Tooltip("m, the largest horizontal lag.")]
+        [SerializeField] float _lateralMaxOffset;
+        [Tooltip("Each of two holding hands carries a share of the mass (the paper's participants lifted with both hands).")]
+        [SerializeField] bool _twoHands;
+        [Tooltip("The share of the mass each hand carries while both hold (0.5: half each).")]
+        [SerializeField] float _twoHandsShare;
+        [Tooltip("The object tears loose and falls when the hands are pulled this far from it for this long.")]
+        [SerializeField] bool _breakAway;
+        [Tooltip("m beyond the grab offset.")]
+        [SerializeField] float _breakAwayDistance;
+        [Tooltip("s the hands must stay beyond it.")]
+        [SerializeField] float _breakAwayDwell;
+
         [Header("Safety limits (every profile)")]
         [SerializeField] float _maxGain;
         [SerializeField] float _maxObjectSpeed;
@@ -65,6 +101,9 @@ namespace Kosmos.PseudoHaptic
         [Header("Where the hand is drawn")]
         [Tooltip("Hand True (the paper): the rendered hand stays with the tracked hand and the object visibly lags. Hand On Object (Samad et al. 2019, Rietzler et al. 2018): the rendered hand is drawn at the object.")]
         [SerializeField] HandDrawingMode _handDrawing = HandDrawingMode.HandTrue;
+
+        /// <summary>The break-away distance an asset offers when it is switched on (the core has no default), m.</summary>
+        public const float DefaultBreakAwayDistance = 0.25f;
 
         [NonSerialized] WeightProfile _built;
         [NonSerialized] int _version;
@@ -105,12 +144,14 @@ namespace Kosmos.PseudoHaptic
         [ContextMenu("Preset/paper")] void PresetPaper() => ApplyPreset(NamedProfiles.PaperName);
         [ContextMenu("Preset/paper-experiment")] void PresetPaperExperiment() => ApplyPreset(NamedProfiles.PaperExperimentName);
         [ContextMenu("Preset/gain")] void PresetGain() => ApplyPreset(NamedProfiles.GainName);
+        [ContextMenu("Preset/xyz")] void PresetXyz() => ApplyPreset(NamedProfiles.XyzName);
 
         /// <summary>The effects a profile asset lists, in the order they are built (within a stage, as in NamedProfiles.Paper).</summary>
         static readonly Type[] s_effectTypes =
         {
             typeof(TrackingLossHold), typeof(MotionDeadband), typeof(WeightGain), typeof(ExperimentalBlend), typeof(SpeedCap),
             typeof(LoweringGuard), typeof(OffsetCorrection), typeof(OffsetRelaxation), typeof(FloorClamp),
+            typeof(HeightDeceleration), typeof(FasterMovesFurther), typeof(LateralInertia), typeof(TwoHands), typeof(BreakAway),
         };
 
         /// <summary>The core's names of those effects ("weight-gain", …), index for index.</summary>
@@ -118,6 +159,7 @@ namespace Kosmos.PseudoHaptic
         {
             new TrackingLossHold().Name, new MotionDeadband().Name, new WeightGain().Name, new ExperimentalBlend().Name, new SpeedCap().Name,
             new LoweringGuard().Name, new OffsetCorrection().Name, new OffsetRelaxation().Name, new FloorClamp().Name,
+            new HeightDeceleration().Name, new FasterMovesFurther().Name, new LateralInertia().Name, new TwoHands().Name, new BreakAway(DefaultBreakAwayDistance).Name,
         };
 
         /// <summary>The core's names of the effects a profile asset lists ("weight-gain", …), in build order.</summary>
@@ -136,6 +178,11 @@ namespace Kosmos.PseudoHaptic
                 case 6: return ref _offsetCorrection;
                 case 7: return ref _offsetRelaxation;
                 case 8: return ref _floorClamp;
+                case 9: return ref _heightDeceleration;
+                case 10: return ref _fasterMovesFurther;
+                case 11: return ref _lateralInertia;
+                case 12: return ref _twoHands;
+                case 13: return ref _breakAway;
                 default: throw new ArgumentOutOfRangeException(nameof(index));
             }
         }
@@ -179,17 +226,22 @@ namespace Kosmos.PseudoHaptic
         public WeightProfile Build()
         {
             if (_built != null) return _built;
-            var effects = new List<WeightEffect>(9);
+            var effects = new List<WeightEffect>(14);
             // Same order within each stage as NamedProfiles.Paper, so a preset builds exactly the preset.
             if (_trackingLossHold) effects.Add(new TrackingLossHold(_settleTime, _requireHighConfidence));
             if (_motionDeadband) effects.Add(new MotionDeadband(_deadbandLagTime));
             if (_weightGain) effects.Add(new WeightGain());
             if (_experimentalBlend) effects.Add(new ExperimentalBlend());
+            if (_heightDeceleration) effects.Add(new HeightDeceleration(_decelerationHeight, _decelerationMinFraction));
+            if (_fasterMovesFurther) effects.Add(new FasterMovesFurther(_fastExponent, _slowExponent, _restBand, _speedSmoothingTime));
             if (_speedCap) effects.Add(new SpeedCap(_speedCapHeadroom));
             if (_loweringGuard) effects.Add(new LoweringGuard());
             if (_offsetCorrection) effects.Add(new OffsetCorrection(_offsetThreshold, _offsetBand, _offsetPullSpeed));
             if (_offsetRelaxation) effects.Add(new OffsetRelaxation(_relaxationTimeConstant, _relaxationStillFraction));
             if (_floorClamp) effects.Add(new FloorClamp(_floor));
+            if (_lateralInertia) effects.Add(new LateralInertia(_lateralTimeConstant, _lateralMaxOffset));
+            if (_twoHands) effects.Add(new TwoHands(_twoHandsShare));
+            if (_breakAway) effects.Add(new BreakAway(_breakAwayDistance, _breakAwayDwell));
             var limits = new SolverLimits(_maxGain, _maxObjectSpeed, _maxFrameTime, _maxHandSpeed, _maxCatchUpGap, _maxCarry);
             string label = !string.IsNullOrWhiteSpace(_profileName) ? _profileName : (!string.IsNullOrWhiteSpace(name) ? name : "custom");
             _built = new WeightProfile(label, effects, limits);
@@ -237,6 +289,20 @@ namespace Kosmos.PseudoHaptic
             _weightGain = p.Has<WeightGain>();
             _experimentalBlend = p.Has<ExperimentalBlend>();
 
+            var hd = p.Find<HeightDeceleration>();
+            _heightDeceleration = hd != null;
+            hd = hd ?? new HeightDeceleration();
+            _decelerationHeight = (float)hd.Height;
+            _decelerationMinFraction = (float)hd.MinFraction;
+
+            var fm = p.Find<FasterMovesFurther>();
+            _fasterMovesFurther = fm != null;
+            fm = fm ?? new FasterMovesFurther();
+            _fastExponent = (float)fm.FastExponent;
+            _slowExponent = (float)fm.SlowExponent;
+            _restBand = (float)fm.RestBand;
+            _speedSmoothingTime = (float)fm.SmoothingTime;
+
             var cap = p.Find<SpeedCap>();
             _speedCap = cap != null;
             _speedCapHeadroom = (float)(cap ?? new SpeedCap()).Headroom;
@@ -259,6 +325,22 @@ namespace Kosmos.PseudoHaptic
             var fc = p.Find<FloorClamp>();
             _floorClamp = fc != null;
             _floor = (float)(fc ?? new FloorClamp()).Floor;
+
+            var li = p.Find<LateralInertia>();
+            _lateralInertia = li != null;
+            li = li ?? new LateralInertia();
+            _lateralTimeConstant = (float)li.TimeConstant;
+            _lateralMaxOffset = (float)li.MaxOffset;
+
+            var th = p.Find<TwoHands>();
+            _twoHands = th != null;
+            _twoHandsShare = (float)(th ?? new TwoHands()).Share;
+
+            var ba = p.Find<BreakAway>();
+            _breakAway = ba != null;
+            ba = ba ?? new BreakAway(DefaultBreakAwayDistance);
+            _breakAwayDistance = (float)ba.Distance;
+            _breakAwayDwell = (float)ba.Dwell;
 
             SolverLimits l = p.Limits;
             _maxGain = (float)l.MaxGain;

@@ -6,11 +6,13 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// Makes a grabbable object feel heavy (Son et al. 2022): while held, its local y is the core solver's answer
-    /// to the hand's height. Glue only: the decisions (mass, hands, hand point, release velocity) are the
-    /// engine-free <see cref="HeldObject"/> and <see cref="WeightSettings"/>; this reads the transform, the
-    /// Rigidbody and the collider, and writes the answer. A grab driver calls BeginHold, Step once per frame,
-    /// then EndHold, each with its hand's id (two hands may hold one object); it moves x and z itself.
-    /// Give held objects an upright parent of unit scale. Steps allocate nothing and never write NaN.
+    /// to the hands (<see cref="WeightSolver3D"/>), and so are x/z when the profile has lateral inertia. Glue only:
+    /// the decisions (mass, hands, per-hand share, break-away, release velocity) are the engine-free
+    /// <see cref="HeldObject"/> and <see cref="WeightSettings"/>; this reads the transform, the Rigidbody and the
+    /// collider, and writes the answer. A grab driver calls BeginHold, Step once per frame, then EndHold, each with
+    /// its hand's id (two hands may hold one object); it moves x and z itself unless <see cref="HeldObject.MovesHorizontal"/>,
+    /// and releases when <see cref="HeldObject.BrokeAway"/> (the Rigidbody then falls). Overloads without a hand id:
+    /// <see cref="PseudoHapticWeightCalls"/>. Give held objects an upright parent of unit scale. Steps allocate nothing and never write NaN.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pseudo-Haptic Weight")]
@@ -43,9 +45,7 @@ namespace Kosmos.PseudoHaptic
         HeldObject _hold;
         HeldBody _body;
         RigidbodyControl _rigidbodyControl;
-        bool _dirty = true;
-        PseudoHapticProfile _configuredAsset;
-        int _configuredVersion;
+        readonly ConfigurationWatch _watch = new ConfigurationWatch();
         string _error;
 
         /// <summary>Raised after a hold began (first hand), after each solver step, and after it ended (last hand); a throwing handler is logged.</summary>
@@ -57,29 +57,27 @@ namespace Kosmos.PseudoHaptic
         public WeightSolver Solver => Hold.Solver;
         public string ConfigurationError => _error;
         public bool IsHeld => Hold.IsHeld;
-        public double MassKg => Solver != null ? Solver.Model.MassKg : double.NaN;
-        public double WeightNewtons => Solver != null ? Solver.Model.WeightNewtons : double.NaN;
+        public double MassKg => Hold.MassKg;
         public double Gain => Solver != null ? Solver.Gain : double.NaN;
         public double StandardSpeed => Solver != null ? Solver.StandardSpeed : double.NaN;
         /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
         public double Offset => IsHeld ? Solver.Offset : 0;
         public HandSample LastHand => Hold.LastHand;
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
-        public Vector3 HandWorldPosition => Hold.HandPoint.ToUnity();
-        public Vector3 HandVelocity => Hold.HandVelocity.ToUnity();
-        public Vector3 ObjectVelocity => Hold.ObjectVelocity.ToUnity();
+        /// <summary>The point the solver follows, world space (its height converted from the parent's).</summary>
+        public Vector3 HandWorldPosition => Hold.HandPoint.ToUnity() + (transform.parent != null ? transform.parent.position.y : 0) * Vector3.up;
         public HandDrawingMode HandDrawing => _profile != null ? _profile.HandDrawing : HandDrawingMode.HandTrue;
         public Collider Collider => _volumeCollider != null ? _volumeCollider : GetComponent<Collider>();
-        public Collider VolumeCollider { get => _volumeCollider; set { _volumeCollider = value; _dirty = true; } }
-        public PseudoHapticProfile Profile { get => _profile; set { _profile = value; _dirty = true; } }
-        public MassSource Mass { get => _massSource; set { _massSource = value; _dirty = true; } }
-        public float ExplicitMassKg { get => _explicitMassKg; set { _explicitMassKg = value; _dirty = true; } }
-        public float DensityKgPerCubicMetre { get => _densityKgPerCubicMetre; set { _densityKgPerCubicMetre = value; _dirty = true; } }
-        public StandardSpeedSource SpeedSource { get => _standardSpeedSource; set { _standardSpeedSource = value; _dirty = true; } }
-        public float ExplicitStandardSpeed { get => _explicitStandardSpeed; set { _explicitStandardSpeed = value; _dirty = true; } }
+        public Collider VolumeCollider { get => _volumeCollider; set { _volumeCollider = value; _watch.MarkDirty(); } }
+        public PseudoHapticProfile Profile { get => _profile; set { _profile = value; _watch.MarkDirty(); } }
+        public MassSource Mass { get => _massSource; set { _massSource = value; _watch.MarkDirty(); } }
+        public float ExplicitMassKg { get => _explicitMassKg; set { _explicitMassKg = value; _watch.MarkDirty(); } }
+        public float DensityKgPerCubicMetre { get => _densityKgPerCubicMetre; set { _densityKgPerCubicMetre = value; _watch.MarkDirty(); } }
+        public StandardSpeedSource SpeedSource { get => _standardSpeedSource; set { _standardSpeedSource = value; _watch.MarkDirty(); } }
+        public float ExplicitStandardSpeed { get => _explicitStandardSpeed; set { _explicitStandardSpeed = value; _watch.MarkDirty(); } }
         public ReleaseVelocity Release { get => _releaseVelocity; set => _releaseVelocity = value; }
         Rigidbody Body => GetComponent<Rigidbody>();
-        bool NeedsConfiguration => _dirty || _profile != _configuredAsset || (_profile != null && _profile.Version != _configuredVersion);
+        bool NeedsConfiguration => _watch.IsStale(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
 
         HeldObject CreateHold()
         {
@@ -92,11 +90,11 @@ namespace Kosmos.PseudoHaptic
 
         void OnEnable() { s_enabled.Add(this); UserCalibrationStore.Changed += MarkDirty; }
         void OnDisable() { Hold.EndAll(); s_enabled.Remove(this); UserCalibrationStore.Changed -= MarkDirty; }
-        void MarkDirty() => _dirty = true;
+        void MarkDirty() => _watch.MarkDirty();
 
         void OnValidate()
         {
-            _dirty = true;
+            _watch.MarkDirty();
 #if UNITY_EDITOR
             if (_massSource == MassSource.DensityTimesVolume) StoreMeshVolume();
 #endif
@@ -108,13 +106,15 @@ namespace Kosmos.PseudoHaptic
             if (!ColliderVolume.TryReadMesh(Collider, out Mesh mesh, out double volume)) return false; // keeps what was stored
             _storedVolumeMesh = mesh;
             _storedMeshVolume = volume;
-            return _dirty = true;
+            _watch.MarkDirty();
+            return true;
         }
 
         /// <summary>The weight model of this object's settings, or false with the reason. Reading a mesh's volume allocates.</summary>
         public bool TryCreateModel(out WeightModel model, out string error) =>
-            WeightSettings.TryCreateModel(_massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
-                                          (out double v, out string e) => ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out v, out e), name, out model, out error);
+            WeightSettings.TryCreateModel(_massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg, Volume, name, out model, out error);
+
+        bool Volume(out double volume, out string error) => ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out volume, out error);
 
         /// <summary>The profile this object uses: its asset's, or the "paper" preset.</summary>
         public bool TryGetProfile(out WeightProfile profile, out string error)
@@ -130,14 +130,12 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Applies the settings to the solver (also during a hold); on invalid ones logs the reason, keeps the last valid configuration, returns false.</summary>
         public bool Configure()
         {
-            _dirty = false;
-            _configuredAsset = _profile;
-            _configuredVersion = _profile != null ? _profile.Version : 0;
-            bool ok = TryCreateModel(out WeightModel model, out _error) && TryGetProfile(out WeightProfile profile, out _error)
-                      && Hold.Configure(model, profile, ResolveStandardSpeed());
-            _error = ok ? null : _error ?? Hold.Error;
+            _watch.Configured(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
+            TryGetProfile(out WeightProfile profile, out string profileError);
+            bool ok = WeightSettings.TryConfigure(Hold, _massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
+                                                  Volume, name, profile, profileError, ResolveStandardSpeed(), out double write, out _error);
             if (!ok) Debug.LogError("Pseudo-haptic weight on '" + name + "' is not configured: " + _error, this);
-            if (ok && WeightSettings.WritesRigidbodyMass(_massSource) && Body != null) Body.mass = (float)model.MassKg;
+            if (!double.IsNaN(write)) Body.mass = (float)write;
             return ok;
         }
 
@@ -153,27 +151,16 @@ namespace Kosmos.PseudoHaptic
             return began;
         }
 
-        public bool BeginHold(Vector3 handWorld, double poseTime = double.NaN, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
-            => BeginHold(0, handWorld, poseTime, rigidbody);
-
-        public bool BeginHold(IHandPoseSource hand, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
-            => hand != null && BeginHold(0, hand.Position, hand.PoseTime, rigidbody);
-
-        /// <summary>One frame of hand <paramref name="hand"/>; writes the object's local y and returns it. Never throws, never allocates.</summary>
+        /// <summary>One frame of hand <paramref name="hand"/>; writes the object's local y (and x/z with lateral inertia) and returns y. Never throws, never allocates.</summary>
         public float Step(int hand, Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt)
         {
             if (IsHeld && NeedsConfiguration) Configure(); // only after a setting changed
-            SetLocalY(Hold.Step(hand, handWorld.ToDouble(), isTracked, isHighConfidence, poseTime, dt));
+            double y = Hold.Step(hand, handWorld.ToDouble(), isTracked, isHighConfidence, poseTime, dt);
+            transform.position = Hold.Horizontal(transform.position.ToDouble()).ToUnity();
+            SetLocalY(y);
             Hold.TrackObject(transform.position.ToDouble());
             return transform.localPosition.y;
         }
-
-        public float Step(Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt)
-            => Step(0, handWorld, isTracked, isHighConfidence, poseTime, dt);
-
-        public float Step(IHandPoseSource hand, float dt) => hand == null
-            ? Step(0, default, false, false, double.NaN, dt)
-            : Step(0, hand.Position, hand.IsTracked, hand.IsHighConfidence, hand.PoseTime, dt);
 
         /// <summary>Hand <paramref name="hand"/> lets go; the last hand ends the hold and the Rigidbody gets its state and release velocity back.</summary>
         public void EndHold(int hand) => Hold.End(hand);

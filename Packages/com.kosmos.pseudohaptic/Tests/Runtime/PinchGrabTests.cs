@@ -120,6 +120,51 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ABreakAwayReleasesBothHandsAndTheBoxFalls()
+        {
+            PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.XyzName);
+            profile.SetEnabled<BreakAway>(true); // 0.25 m for 0.1 s
+            PseudoHapticWeight box = Box("5 kg", 5f, default, profile);
+            Vector3 l0 = box.transform.position + new Vector3(-0.04f, 0.05f, 0), r0 = box.transform.position + new Vector3(0.04f, 0.05f, 0);
+            var left = new ScriptedHand(l0) { IsPinching = true };
+            var right = new ScriptedHand(r0) { IsPinching = true };
+            PinchGrab l = Grabber(left), r = Grabber(right);
+            l.Tick(FrameTime);
+            r.Tick(FrameTime);
+            Assert.That(box.Hold.HandCount, Is.EqualTo(2));
+            int n = Mathf.CeilToInt(0.6f / FrameTime);
+            for (int i = 1; i <= n && box.IsHeld; i++)
+            {
+                float u = (float)ScriptedHand.MinimumJerk(i / (0.4 / FrameTime));
+                left.Track(l0 + new Vector3(0, 0.8f * u, 0), FrameTime);
+                right.Track(r0 + new Vector3(0, 0.8f * u, 0), FrameTime);
+                l.Tick(FrameTime);
+                r.Tick(FrameTime);
+            }
+            l.Tick(FrameTime);
+            r.Tick(FrameTime);
+            Assert.That(l.Grab.LastEnd, Is.EqualTo(GrabEnd.BrokeAway));
+            Assert.That(r.Grab.LastEnd, Is.EqualTo(GrabEnd.BrokeAway));
+            Assert.That(l.Held == null && r.Held == null && !box.IsHeld, Is.True);
+            Assert.That(box.GetComponent<Rigidbody>().isKinematic, Is.False, "the Rigidbody falls");
+        }
+
+        [Test]
+        public void WithLateralInertiaXAndZAreTheSolversAndTrailTheHand()
+        {
+            PseudoHapticWeight box = Box("2 kg", 2f, default, PseudoHapticProfile.CreatePreset(NamedProfiles.XyzName));
+            Vector3 start = box.transform.position + new Vector3(0, 0.05f, 0);
+            var hand = new ScriptedHand(start) { IsPinching = true };
+            PinchGrab grab = Grabber(hand);
+            grab.Tick(FrameTime);
+            Vector3 side = start + new Vector3(0.4f, 0, 0);
+            Frames(grab, hand, start, side, 0.35f);
+            Assert.That(box.transform.position.x, Is.LessThan(side.x - 0.01f), "2 kg trails a fast sideways carry");
+            Frames(grab, hand, side, side, 1.5f);
+            Assert.That(box.transform.position.x, Is.EqualTo(side.x).Within(0.005f), "and arrives under the hand");
+        }
+
+        [Test]
         public void AHandOnObjectProfileDrawsTheHandVisualAtTheObjectAndReturnsIt()
         {
             PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);

@@ -146,9 +146,23 @@ namespace Kosmos.PseudoHaptic.Samples
             return calibrator;
         }
 
-        /// <summary>Experiment 1 (paper §4.1): boxes A, B, C of one size and different densities, B heaviest.</summary>
+        /// <summary>Height of the Playground's high shelf top, m (above a standing user's shoulder: height deceleration).</summary>
+        public const float HighShelfHeight = 1.6f;
+
+        /// <summary>
+        /// The paper's participants lifted with both hands: switches on the profile's Two Hands effect (each hand carries
+        /// its share, half by default), so two PinchGrabs on one object are one two-handed hold. Null: nothing to switch
+        /// (the weight then uses "paper", where a second hand is followed and each carries the whole mass).
+        /// </summary>
+        public static void LiftWithBothHands(PseudoHapticProfile profile)
+        {
+            if (profile != null) profile.SetEnabled<TwoHands>(true);
+        }
+
+        /// <summary>Experiment 1 (paper §4.1): boxes A, B, C of one size and different densities, B heaviest, lifted with both hands.</summary>
         public static List<PseudoHapticWeight> Experiment1(Transform root, PseudoHapticProfile profile)
         {
+            LiftWithBothHands(profile);
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.0f, 0.5f));
             var size = Vector3.one * BoxSize;
             return new List<PseudoHapticWeight>
@@ -159,9 +173,10 @@ namespace Kosmos.PseudoHaptic.Samples
             };
         }
 
-        /// <summary>Experiment 2 (paper §4.2): water bottles of several sizes.</summary>
+        /// <summary>Experiment 2 (paper §4.2): water bottles of several sizes, lifted with both hands.</summary>
         public static List<PseudoHapticWeight> Experiment2(Transform root, PseudoHapticProfile profile)
         {
+            LiftWithBothHands(profile);
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.2f, 0.5f));
             var bottles = new List<PseudoHapticWeight>();
             float x = -0.45f;
@@ -175,9 +190,13 @@ namespace Kosmos.PseudoHaptic.Samples
             return bottles;
         }
 
-        /// <summary>The playground: objects from 10 g to 5 kg sharing one profile, and a switch for every effect.</summary>
+        /// <summary>
+        /// The playground: objects from 10 g to 5 kg sharing one profile, and a switch for every effect (two rows); a
+        /// sideways carry (a 2 kg box to carry to the side table: lateral inertia) and a high shelf (a 1 kg box to lift
+        /// onto it: height deceleration), both under the "xyz" profile <paramref name="threeD"/> (an in-memory preset when null).
+        /// </summary>
         /// <remarks>With <paramref name="handOnObject"/> (a profile drawing the hand on the object), a 2 kg box under it too.</remarks>
-        public static List<PseudoHapticWeight> Playground(Transform root, PseudoHapticProfile profile, IReadOnlyList<IHandPoseSource> hands, PseudoHapticProfile handOnObject = null)
+        public static List<PseudoHapticWeight> Playground(Transform root, PseudoHapticProfile profile, IReadOnlyList<IHandPoseSource> hands, PseudoHapticProfile handOnObject = null, PseudoHapticProfile threeD = null)
         {
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.4f, 0.6f));
             var objects = new List<PseudoHapticWeight>
@@ -192,12 +211,20 @@ namespace Kosmos.PseudoHaptic.Samples
             if (handOnObject != null)
                 objects.Add(Box(surface, "2 kg (hand on object)", new Vector3(0.6f, 0, 0.05f), Vector3.one * 0.1f, 2000f, handOnObject));
 
-            float x = -0.6f;
-            foreach (string effect in PseudoHapticProfile.EffectNames)
-            {
-                EffectSwitch.Create(surface, effect, new Vector3(x, 0, -0.22f), profile, hands);
-                x += 0.15f;
-            }
+            IReadOnlyList<string> effects = PseudoHapticProfile.EffectNames;
+            int perRow = (effects.Count + 1) / 2;
+            for (int i = 0; i < effects.Count; i++)
+                EffectSwitch.Create(surface, effects[i], new Vector3(-0.6f + 0.18f * (i % perRow), 0, -0.14f - 0.12f * (i / perRow)), profile, hands);
+
+            threeD = threeD != null ? threeD : PseudoHapticProfile.CreatePreset(NamedProfiles.XyzName);
+            Transform carryFrom = Table(root, "Carry Table", new Vector3(-1.1f, TableHeight, 0.2f), new Vector2(0.5f, 0.5f));
+            objects.Add(Box(carryFrom, "2 kg sideways carry (xyz)", Vector3.zero, Vector3.one * 0.12f, 2f / (0.12f * 0.12f * 0.12f), threeD));
+            Transform carryTo = Table(root, "Carry Target Table", new Vector3(-1.1f, TableHeight, -0.6f), new Vector2(0.5f, 0.5f));
+            Label(carryTo, "Carry the 2 kg box here", new Vector3(0, 0.1f, 0));
+            Transform low = Table(root, "Shelf Table", new Vector3(1.1f, TableHeight, 0.2f), new Vector2(0.5f, 0.5f));
+            objects.Add(Box(low, "1 kg to the high shelf (xyz)", Vector3.zero, Vector3.one * 0.1f, 1000f, threeD));
+            Transform shelf = Table(root, "High Shelf", new Vector3(1.1f, HighShelfHeight, 0.55f), new Vector2(0.6f, 0.3f));
+            Label(shelf, "Lift the 1 kg box up here", new Vector3(0, 0.12f, 0));
             return objects;
         }
 

@@ -231,7 +231,6 @@ namespace Kosmos.PseudoHaptic.Tests
             for (int frame = 0; frame < 600; frame++)
             {
                 double maxMove = 0;
-                bool[] trackedBefore = { tracked[0], tracked[1] };
                 for (int h = 0; h < 2; h++)
                 {
                     Vector3d d = new Vector3d(random.NextDouble() - 0.5, random.NextDouble() - 0.5, random.NextDouble() - 0.5) * 0.01;
@@ -245,13 +244,15 @@ namespace Kosmos.PseudoHaptic.Tests
                         on[h] = hold.Holds(h + 1);
                     }
                 }
+                bool followedLast = hold.IsHeld && hold.Solver3D.FollowedHands > 0;
                 for (int h = 0; h < 2; h++)
                     if (on[h]) hold.Step(h + 1, tracked[h] ? pos[h] : Vector3d.NaN, tracked[h], true, double.NaN, 1 / 90.0);
                 if (!hold.IsHeld) { last = Vector3d.NaN; continue; }
                 Vector3d p = hold.HandPoint;
-                // When no hand still on the object was tracked, the point follows the hands' motion during their loss,
-                // as one hand alone does; otherwise it must move no more than the hands did.
-                bool followedBefore = (on[0] && trackedBefore[0]) || (on[1] && trackedBefore[1]);
+                // When no hand was followed (every hand lost, or waiting for steady tracking after a loss), the point follows
+                // the hands' motion during their loss, as one hand alone does; otherwise it moves no more than the hands did,
+                // also when a hand lets go and another takes its place.
+                bool followedBefore = followedLast;
                 if (last.IsFinite && followedBefore) Assert.That((p - last).Length, Is.LessThanOrEqualTo(maxMove + 1e-12), "frame " + frame);
                 last = p;
             }

@@ -80,11 +80,11 @@ namespace Kosmos.PseudoHaptic.Tests
             public Vector3d Position;
             public Vector3d HalfSize = new Vector3d(0.05, 0.05, 0.05);
             public HeldObject Hold;
-            public Box(Vector3d position, double massKg)
+            public Box(Vector3d position, double massKg, WeightProfile profile = null)
             {
                 Position = position;
                 Hold = new HeldObject(this);
-                Hold.Configure(WeightModel.FromMass(massKg), NamedProfiles.Paper, 0.5);
+                Hold.Configure(WeightModel.FromMass(massKg), profile ?? NamedProfiles.Paper, 0.5);
             }
             public double HeightOf(Vector3d world) => world.Y;
             public Vector3d ClosestPoint(Vector3d p) => new Vector3d(
@@ -94,7 +94,7 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         public readonly System.Collections.Generic.List<Box> Boxes = new System.Collections.Generic.List<Box>();
-        public Box Add(Vector3d position, double massKg = 1) { var b = new Box(position, massKg); Boxes.Add(b); return b; }
+        public Box Add(Vector3d position, double massKg = 1, WeightProfile profile = null) { var b = new Box(position, massKg, profile); Boxes.Add(b); return b; }
         public int Count => Boxes.Count;
         public Vector3d ClosestPoint(int index, Vector3d hand) => Boxes[index].ClosestPoint(hand);
         public int HandsOn(int index) => Boxes[index].Hold.HandCount;
@@ -140,14 +140,15 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         public bool IsStillHeld => Held != null && Held.Hold.Holds(Id);
-        public bool BrokeAway => BreakAway;
+        public bool BrokeAway => BreakAway || (Held != null && Held.Hold.BrokeAway);
 
         public void Follow(bool tracked)
         {
             Follows++;
             if (!tracked) LostFollows++;
-            Held.Position = GrabFollow.Horizontal(Held.Position, _frame.Position, _grabOffset, tracked, true);
+            Held.Position = GrabFollow.Horizontal(Held.Position, _frame.Position, _grabOffset, tracked, GrabFollow.GrabMovesHorizontal(true, Held.Hold));
             double y = Held.Hold.Step(Id, _frame.Position, tracked, _frame.HighConfidence, double.NaN, _frame.Dt);
+            Held.Position = Held.Hold.Horizontal(Held.Position);
             if (!double.IsNaN(y)) Held.Position = new Vector3d(Held.Position.X, y, Held.Position.Z);
             Held.Hold.TrackObject(Held.Position);
         }

@@ -111,5 +111,38 @@ namespace Kosmos.PseudoHaptic.Tests
             two.Add(new Vector3d(0, 1, 0), false, false);
             Assert.That(two.IsTracked, Is.False, "one lost hand makes the grab untracked");
         }
-    }
+    
+        [Test]
+        public void ConfiguringFromSettingsReportsTheFieldKeepsTheLastValidOneAndWritesTheRigidbodyMassOnlyWhenItCameFromElsewhere()
+        {
+            var hold = new HeldObject(new BoxScene.Box(Vector3d.Zero, 1));
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.DensityTimesVolume, 3, 500, 0, Volume, "box", NamedProfiles.Paper, null, 0.5, out double write, out string error), Is.True, error);
+            Assert.That(write, Is.EqualTo(4).Within(1e-12), "500 kg/m³ × 8 L, written back to the Rigidbody");
+            Assert.That(hold.MassKg, Is.EqualTo(4).Within(1e-12));
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.Explicit, double.NaN, 0, 2, Volume, "box", NamedProfiles.Paper, null, 0.5, out write, out error), Is.True);
+            Assert.That(double.IsNaN(write), Is.True, "no Rigidbody: nothing to write");
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.Rigidbody, 3, 0, 0, Volume, "box", NamedProfiles.Paper, null, 0.5, out write, out error), Is.True);
+            Assert.That(double.IsNaN(write), Is.True, "the mass came from the Rigidbody");
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.Explicit, 3, 0, -1, Volume, "box", NamedProfiles.Paper, null, 0.5, out write, out error), Is.False);
+            Assert.That(error, Does.Contain("mass"), "the core names the field");
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.Explicit, 3, 0, 1, Volume, "box", null, "profile 'p': bad", 0.5, out write, out error), Is.False);
+            Assert.That(error, Is.EqualTo("profile 'p': bad"));
+            Assert.That(hold.MassKg, Is.EqualTo(3).Within(1e-12), "the last valid configuration is kept");
+        }
+
+        [Test]
+        public void TheWatchAsksForAConfigurationAfterASettingTheAssetOrItsVersionChanged()
+        {
+            var watch = new ConfigurationWatch();
+            object asset = new object();
+            Assert.That(watch.IsStale(asset, 1), Is.True, "never configured");
+            watch.Configured(asset, 1);
+            Assert.That(watch.IsStale(asset, 1), Is.False);
+            Assert.That(watch.IsStale(asset, 2), Is.True, "the asset changed");
+            Assert.That(watch.IsStale(new object(), 1), Is.True, "another asset");
+            Assert.That(watch.IsStale(null, 0), Is.True, "the asset was removed");
+            watch.MarkDirty();
+            Assert.That(watch.IsStale(asset, 1), Is.True, "a setting changed");
+        }
+}
 }
