@@ -34,9 +34,17 @@ namespace Kosmos.PseudoHaptic
         public double MinScale { get; }
         public double MaxScale { get; }
 
+        /// <summary>Largest lowering of the threshold for a fast lift of an object heavier than the standard, m.</summary>
+        public double PaceShift { get; }
+
+        /// <summary>Pace, relative to v_std, at which the threshold is lowered by half of <see cref="PaceShift"/>.</summary>
+        public double HalfShiftPace { get; }
+
         public OffsetCorrection(double threshold = 0.2, double band = 0.02, double pullSpeed = 0.5,
-            double perDoubling = 0.05, double minScale = 0.75, double maxScale = 1.14)
+            double perDoubling = 0.05, double minScale = 0.75, double maxScale = 1.14, double paceShift = 0.08, double halfShiftPace = 2)
         {
+            PaceShift = ConfigurationGuard.InRange(paceShift, 0, 0.1, nameof(paceShift));
+            HalfShiftPace = ConfigurationGuard.InRange(halfShiftPace, 0.01, 100, nameof(halfShiftPace));
             Threshold = ConfigurationGuard.InRange(threshold, 0.001, 10, nameof(threshold));
             Band = ConfigurationGuard.InRange(band, 0.001, 10, nameof(band));
             PullSpeed = ConfigurationGuard.InRange(pullSpeed, 0, 10, nameof(pullSpeed));
@@ -61,7 +69,10 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double threshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            double massThreshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            // Growth stops earlier after a faster lift (faster moves further); the pull back (3.) keeps the mass's own
+            // threshold, so a change of pace never draws the object toward the hand by itself.
+            double threshold = massThreshold - (constants.Gain < 1 ? PaceShiftAt(state.HeldPace, constants.StandardSpeed) : 0);
             double start = frame.TotalDelta;
             // 1. Inside the band, against the deadbanded hand, by the implicit midpoint rule
             //    d = d0 + (1 − s((d0 + d)/2))·Δ: it is reversible, so jitter back and forth leaves the object where it
@@ -88,7 +99,7 @@ namespace Kosmos.PseudoHaptic
 
             // 3. Offsets the hand's motion did not make (re-anchoring) are drawn back, against the deadbanded hand.
             double afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
-            double beyond = Math.Abs(afterSigned) - (threshold + Band);
+            double beyond = Math.Abs(afterSigned) - (massThreshold + Band);
             if (beyond > 0 && PullSpeed > 0)
             {
                 double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
@@ -98,6 +109,19 @@ namespace Kosmos.PseudoHaptic
                 frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             }
             SpeedCap.Settle(ref state, frame.TotalDelta - start);
+        }
+
+        /// <summary>
+        /// How much a lift at <paramref name="pace"/> (m/s, the held pace of the latest motion) lowers the threshold of an
+        /// object heavier than the standard, for a user of standard speed <paramref name="standardSpeed"/>:
+        /// PaceShift · x / (x + HalfShiftPace), x = pace / v_std. 0 at rest, rising continuously and strictly with x,
+        /// below PaceShift: a faster lift (or a slower user) settles closer to the hand, and every object at the same
+        /// pace is shifted alike, so the mass order and its gaps are kept.
+        /// </summary>
+        public double PaceShiftAt(double pace, double standardSpeed)
+        {
+            double x = Math.Abs(pace) / standardSpeed;
+            return x > 0 && !double.IsInfinity(x) ? PaceShift * x / (x + HalfShiftPace) : (x > 0 ? PaceShift : 0);
         }
 
         /// <summary>
