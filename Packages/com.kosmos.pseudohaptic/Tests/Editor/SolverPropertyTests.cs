@@ -306,5 +306,23 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             Assert.That(Rise(1.0, 0.3), Is.GreaterThan(Rise(1.0, 1.0) + 0.002), massKg + " kg: the same lift by a user with a lower v_std rises further");
         }
+
+        // P11c: ... and where the speed cap binds too (a slow user, v_std 0.3 m/s): the correction slows an object catching
+        // up with a resting hand, but what it holds back stays owed, so a faster lift still ends higher, 1 s after the
+        // hand stops. (Paying the cap's debt with it lost 1.7 cm for 1 kg: a 0.3 s lift ended below a 0.4 s one.)
+        [Test]
+        public void P11c_TheSpeedCapNeverReversesItUnderTheCorrection([Values(0.1, 1.0, 2.0)] double massKg)
+        {
+            double previous = double.NegativeInfinity;
+            foreach (var seconds in new[] { 0.6, 0.4, 0.3, 0.2 })
+            {
+                var frames = Run.Headset(frameRate: 90, jitterSd: 0.001, seed: 3).Render(HandPath.StartAt(0.8).Hold(0.3).MoveTo(1.1, seconds).Hold(1.5));
+                var y = Run.Replay(Run.Solver(massKg, NamedProfiles.Paper, 0.3), frames);
+                int rested = Array.FindIndex(frames, f => f.Time >= 0.3 + seconds + 1);
+                double rise = y[rested] - y[0];
+                Assert.That(rise, Is.GreaterThan(previous), massKg + " kg: a 0.3 m lift in " + seconds + " s rises further than a slower one");
+                previous = rise;
+            }
+        }
     }
 }

@@ -108,7 +108,12 @@ namespace Kosmos.PseudoHaptic
                 double pull = Math.Min(beyond, speed * dt);
                 frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             }
-            SpeedCap.Settle(ref state, frame.TotalDelta - start);
+            // Motion toward the hand pays what the speed cap owes. Motion the correction held back from the cap's
+            // catch-up (in the band an object catching up with the hand is slowed) is owed again: delayed, not lost, so
+            // the catch-up after a fast lift completes and the cap never reverses faster-moves-further.
+            double extra = frame.TotalDelta - start;
+            if (extra * state.CapDeferred > 0) SpeedCap.Settle(ref state, extra);
+            else if (extra * state.CapDeferred < 0) state.CapDeferred -= extra;
         }
 
         /// <summary>
