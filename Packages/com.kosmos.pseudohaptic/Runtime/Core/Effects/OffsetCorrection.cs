@@ -16,6 +16,9 @@ namespace Kosmos.PseudoHaptic
     /// object at the same offset: T(m) = <see cref="Threshold"/> × clamp(1 + <see cref="PerDoubling"/> · log2(m / 1 kg),
     /// <see cref="MinScale"/>, <see cref="MaxScale"/>): with the defaults 0.2 m at 1 kg and 1 cm more per doubling
     /// of the mass (<see cref="ThresholdFor"/>), so that after the same lift heavier still settles lower.
+    /// For objects heavier than the standard it is also lowered by <see cref="PaceShiftAt"/> of the held pace of the
+    /// latest motion (<see cref="HoldState.HeldPace"/>), so that under the correction a faster lift, or a user with a
+    /// lower v_std, still leaves the object higher (faster moves further); the pull keeps the mass's threshold.
     /// </summary>
     public sealed class OffsetCorrection : WeightEffect
     {
