@@ -70,8 +70,10 @@ public class ReplayCliTests
         Assert.That(rows.Count, Is.EqualTo(LiftTrace().Split('\n', StringSplitOptions.RemoveEmptyEntries).Length - 1));
         Assert.That(rows.All(r => double.IsFinite(D(r["object_y"]))), Is.True);
         // 2 kg under the paper profile: gain 0.324 at the user's standard speed; this lift (mean 0.3 m/s, slower than
-        // the default 0.5 m/s) moves it less, but never less than at the slowest (faster moves further, P11).
-        Assert.That(D(rows[^1]["object_y"]) - 0.8, Is.InRange(0.3 * Math.Pow(0.324, 1.5), 0.3 * 0.324), "2 kg under the paper profile");
+        // the default 0.5 m/s) moves it never less than at the slowest gain (faster moves further, P11), and the offset
+        // correction (whose threshold this lift's pace lowers) may take it a little further, but not
+        // past the fastest gain G^0.5.
+        Assert.That(D(rows[^1]["object_y"]) - 0.8, Is.InRange(0.3 * Math.Pow(0.324, 1.5), 0.3 * Math.Pow(0.324, 0.5)), "2 kg under the paper profile");
     }
 
     [Test]
