@@ -113,7 +113,7 @@ namespace Kosmos.PseudoHaptic
             }
             // Motion toward the hand pays what the speed cap owes. Motion the correction held back from the cap's
             // catch-up (in the band an object catching up with the hand is slowed) is owed again: delayed, not lost, so
-            // the catch-up after a fast lift completes and the cap never reverses faster-moves-further.
+            // the catch-up after a fast lift completes (stability.md, known limits, for what is left).
             double extra = frame.TotalDelta - start;
             if (extra * state.CapDeferred > 0) SpeedCap.Settle(ref state, extra);
             else if (extra * state.CapDeferred < 0) state.CapDeferred -= extra;
