@@ -60,6 +60,10 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="FasterMovesFurther"/>: the hand's smoothed speed, m/s.</summary>
         public double Pace;
 
+        /// <summary><see cref="FasterMovesFurther"/>: the pace of the latest motion, m/s, held (not decayed) while the hand
+        /// rests; <see cref="OffsetCorrection"/> scales its threshold by it.</summary>
+        public double HeldPace;
+
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => HandY - ObjectY;
 

@@ -106,6 +106,25 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void OffsetCorrectionPaceShiftIsBoundedContinuousAndMonotone()
+        {
+            var c = new OffsetCorrection();
+            Assert.That(c.PaceShiftAt(0, 0.5), Is.EqualTo(0), "nothing at rest");
+            double previous = 0;
+            for (double pace = 0.01; pace < 20; pace *= 1.1)
+            {
+                double shift = c.PaceShiftAt(pace, 0.5);
+                Assert.That(shift, Is.GreaterThan(previous), "strictly more for a faster pace");
+                Assert.That(shift - previous, Is.LessThan(0.01), "no jump");
+                Assert.That(shift, Is.LessThan(0.1), "bounded");
+                previous = shift;
+            }
+            Assert.That(c.PaceShiftAt(1, 0.3), Is.GreaterThan(c.PaceShiftAt(1, 1.0)), "a lower v_std reads the same pace as faster");
+            Assert.That(c.ThresholdFor(0.045) - c.PaceShiftAt(1e9, 0.01), Is.GreaterThan(0), "the threshold stays positive");
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new OffsetCorrection(paceShift: -0.01)).ParamName, Is.EqualTo("paceShift"));
+        }
+
+        [Test]
         public void OffsetCorrectionThresholdGrowsWithTheMass()
         {
             var c = new OffsetCorrection();

@@ -277,5 +277,52 @@ namespace Kosmos.PseudoHaptic.Tests
             foreach (var seconds in new[] { 2.0, 0.3 })
                 Assert.That(Rise(seconds, 0.5, PhysicalConstants.StandardMassKg), Is.EqualTo(lift).Within(0.003), "the golf ball rises with the hand");
         }
+
+        // P11b: ... also where the offset correction binds (paper profile, lifts whose offset would pass 0.2 m): the
+        // correction's threshold follows the same rule, so a faster lift, or a user with a lower v_std, still leaves a
+        // heavier object higher at the same hand height, after the hand has come to rest and 10 s later (nothing moves at
+        // rest). Before, 2 kg rose 17.0 cm on a 0.4 m lift whether it took 2 s or 0.3 s: the ceiling erased the rule.
+        [Test]
+        public void P11b_FasterMovesFurtherUnderTheOffsetCorrection([Values(2.0, 5.0)] double massKg, [Values(0.4, 0.5)] double lift)
+        {
+            double Rise(double seconds, double standardSpeed)
+            {
+                var frames = Run.Headset(frameRate: 90, jitterSd: 0.001, seed: 11).Render(HandPath.StartAt(0.8).Hold(0.3).MoveTo(0.8 + lift, seconds).Hold(11));
+                var y = Run.Replay(Run.Solver(massKg, NamedProfiles.Paper, standardSpeed), frames);
+                double atRest = double.NaN;
+                for (int i = 0; i < frames.Length; i++)
+                    if (frames[i].Time >= 0.3 + seconds + 1) { atRest = y[i]; break; }
+                // P4's bound for a hand at rest with jitter: under 1 cm in 10 s (the object may follow the jitter, not creep).
+                Assert.That(Math.Abs(Run.Last(y) - atRest), Is.LessThan(0.01), massKg + " kg, " + seconds + " s lift: still after 10 s at rest");
+                Assert.That(Run.MaxOffset(frames, y), Is.LessThanOrEqualTo(0.25), massKg + " kg: offset at most 0.25 m");
+                return atRest - y[0];
+            }
+            double previous = double.NegativeInfinity;
+            foreach (var seconds in new[] { 2.0, 1.0, 0.6, 0.3 })
+            {
+                double rise = Rise(seconds, 0.5);
+                Assert.That(rise, Is.GreaterThan(previous + 0.002), massKg + " kg: a " + lift + " m lift in " + seconds + " s rises further than a slower one");
+                previous = rise;
+            }
+            Assert.That(Rise(1.0, 0.3), Is.GreaterThan(Rise(1.0, 1.0) + 0.002), massKg + " kg: the same lift by a user with a lower v_std rises further");
+        }
+
+        // P11c: ... and where the speed cap binds too (a slow user, v_std 0.3 m/s): the correction slows an object catching
+        // up with a resting hand, but what it holds back stays owed, so a faster lift still ends higher, 1 s after the
+        // hand stops. (Paying the cap's debt with it lost 1.7 cm for 1 kg: a 0.3 s lift ended below a 0.4 s one.)
+        [Test]
+        public void P11c_TheSpeedCapNeverReversesItUnderTheCorrection([Values(0.1, 1.0, 2.0)] double massKg)
+        {
+            double previous = double.NegativeInfinity;
+            foreach (var seconds in new[] { 0.6, 0.4, 0.3, 0.2 })
+            {
+                var frames = Run.Headset(frameRate: 90, jitterSd: 0.001, seed: 3).Render(HandPath.StartAt(0.8).Hold(0.3).MoveTo(1.1, seconds).Hold(1.5));
+                var y = Run.Replay(Run.Solver(massKg, NamedProfiles.Paper, 0.3), frames);
+                int rested = Array.FindIndex(frames, f => f.Time >= 0.3 + seconds + 1);
+                double rise = y[rested] - y[0];
+                Assert.That(rise, Is.GreaterThan(previous), massKg + " kg: a 0.3 m lift in " + seconds + " s rises further than a slower one");
+                previous = rise;
+            }
+        }
     }
 }

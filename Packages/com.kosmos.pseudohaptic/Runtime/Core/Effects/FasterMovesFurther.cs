@@ -33,8 +33,17 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Time constant over which the hand's pace is smoothed, s.</summary>
         public double SmoothingTime { get; }
 
-        public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005, double smoothingTime = 0.1)
+        /// <summary>
+        /// Hand travel over which <see cref="HoldState.HeldPace"/> forgets a faster pace, m. The held pace rises at once to
+        /// the smoothed pace and falls toward it in proportion to the distance the (band-followed) hand travels, never with
+        /// time: a resting hand keeps the pace of its latest motion.
+        /// </summary>
+        public double ReleaseDistance { get; }
+
+        public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005, double smoothingTime = 0.1,
+            double releaseDistance = 0.2)
         {
+            ReleaseDistance = ConfigurationGuard.InRange(releaseDistance, 0.001, 10, nameof(releaseDistance));
             SmoothingTime = ConfigurationGuard.InRange(smoothingTime, 0, 1, nameof(smoothingTime));
             FastExponent = ConfigurationGuard.InRange(fastExponent, 0.01, 1, nameof(fastExponent));
             SlowExponent = ConfigurationGuard.InRange(slowExponent, 1, 10, nameof(slowExponent));
@@ -69,6 +78,13 @@ namespace Kosmos.PseudoHaptic
             {
                 double a = interval / (SmoothingTime + interval);
                 state.Pace += a * ((next - r) / interval - state.Pace);
+                double pace = Math.Abs(state.Pace);
+                if (pace >= state.HeldPace) state.HeldPace = pace;
+                else
+                {
+                    double share = Math.Abs(next - r) / ReleaseDistance;
+                    state.HeldPace += (share < 1 ? share : 1) * (pace - state.HeldPace);
+                }
             }
             if (frame.HandDelta == 0) return;
             double exponent = ExponentAt(state.Pace, constants.StandardSpeed);
@@ -80,6 +96,7 @@ namespace Kosmos.PseudoHaptic
         {
             state.PaceReference = handY;
             state.Pace = 0;
+            state.HeldPace = 0;
         }
     }
 }

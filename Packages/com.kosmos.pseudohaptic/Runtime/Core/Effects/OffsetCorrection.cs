@@ -16,6 +16,9 @@ namespace Kosmos.PseudoHaptic
     /// object at the same offset: T(m) = <see cref="Threshold"/> × clamp(1 + <see cref="PerDoubling"/> · log2(m / 1 kg),
     /// <see cref="MinScale"/>, <see cref="MaxScale"/>): with the defaults 0.2 m at 1 kg and 1 cm more per doubling
     /// of the mass (<see cref="ThresholdFor"/>), so that after the same lift heavier still settles lower.
+    /// For objects heavier than the standard it is also lowered by <see cref="PaceShiftAt"/> of the held pace of the
+    /// latest motion (<see cref="HoldState.HeldPace"/>), so that under the correction a faster lift, or a user with a
+    /// lower v_std, still leaves the object higher (faster moves further); the pull keeps the mass's threshold.
     /// </summary>
     public sealed class OffsetCorrection : WeightEffect
     {
@@ -34,9 +37,17 @@ namespace Kosmos.PseudoHaptic
         public double MinScale { get; }
         public double MaxScale { get; }
 
+        /// <summary>Largest lowering of the threshold for a fast lift of an object heavier than the standard, m.</summary>
+        public double PaceShift { get; }
+
+        /// <summary>Pace, relative to v_std, at which the threshold is lowered by half of <see cref="PaceShift"/>.</summary>
+        public double HalfShiftPace { get; }
+
         public OffsetCorrection(double threshold = 0.2, double band = 0.02, double pullSpeed = 0.5,
-            double perDoubling = 0.05, double minScale = 0.75, double maxScale = 1.14)
+            double perDoubling = 0.05, double minScale = 0.75, double maxScale = 1.14, double paceShift = 0.08, double halfShiftPace = 2)
         {
+            PaceShift = ConfigurationGuard.InRange(paceShift, 0, 0.1, nameof(paceShift));
+            HalfShiftPace = ConfigurationGuard.InRange(halfShiftPace, 0.01, 100, nameof(halfShiftPace));
             Threshold = ConfigurationGuard.InRange(threshold, 0.001, 10, nameof(threshold));
             Band = ConfigurationGuard.InRange(band, 0.001, 10, nameof(band));
             PullSpeed = ConfigurationGuard.InRange(pullSpeed, 0, 10, nameof(pullSpeed));
@@ -61,7 +72,10 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double threshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            double massThreshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            // Growth stops earlier after a faster lift (faster moves further); the pull back (3.) keeps the mass's own
+            // threshold, so a change of pace never draws the object toward the hand by itself.
+            double threshold = massThreshold - (constants.Gain < 1 ? PaceShiftAt(state.HeldPace, constants.StandardSpeed) : 0);
             double start = frame.TotalDelta;
             // 1. Inside the band, against the deadbanded hand, by the implicit midpoint rule
             //    d = d0 + (1 − s((d0 + d)/2))·Δ: it is reversible, so jitter back and forth leaves the object where it
@@ -88,7 +102,7 @@ namespace Kosmos.PseudoHaptic
 
             // 3. Offsets the hand's motion did not make (re-anchoring) are drawn back, against the deadbanded hand.
             double afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
-            double beyond = Math.Abs(afterSigned) - (threshold + Band);
+            double beyond = Math.Abs(afterSigned) - (massThreshold + Band);
             if (beyond > 0 && PullSpeed > 0)
             {
                 double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
@@ -97,7 +111,25 @@ namespace Kosmos.PseudoHaptic
                 double pull = Math.Min(beyond, speed * dt);
                 frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             }
-            SpeedCap.Settle(ref state, frame.TotalDelta - start);
+            // Motion toward the hand pays what the speed cap owes. Motion the correction held back from the cap's
+            // catch-up (in the band an object catching up with the hand is slowed) is owed again: delayed, not lost, so
+            // the catch-up after a fast lift completes (stability.md, known limits, for what is left).
+            double extra = frame.TotalDelta - start;
+            if (extra * state.CapDeferred > 0) SpeedCap.Settle(ref state, extra);
+            else if (extra * state.CapDeferred < 0) state.CapDeferred -= extra;
+        }
+
+        /// <summary>
+        /// How much a lift at <paramref name="pace"/> (m/s, the held pace of the latest motion) lowers the threshold of an
+        /// object heavier than the standard, for a user of standard speed <paramref name="standardSpeed"/>:
+        /// PaceShift · x / (x + HalfShiftPace), x = pace / v_std. 0 at rest, rising continuously and strictly with x,
+        /// below PaceShift: a faster lift (or a slower user) settles closer to the hand, and every object at the same
+        /// pace is shifted alike, so the mass order and its gaps are kept.
+        /// </summary>
+        public double PaceShiftAt(double pace, double standardSpeed)
+        {
+            double x = Math.Abs(pace) / standardSpeed;
+            return x > 0 && !double.IsInfinity(x) ? PaceShift * x / (x + HalfShiftPace) : (x > 0 ? PaceShift : 0);
         }
 
         /// <summary>
