@@ -21,9 +21,18 @@ namespace Kosmos.PseudoHaptic.Tests
 #if UNITY_5_3_OR_NEWER
             Assert.That(() => work(10000), UnityEngine.TestTools.Constraints.Is.Not.AllocatingGCMemory(), units);
 #else
-            long before = GC.GetAllocatedBytesForCurrentThread();
-            work(100000);
-            Assert.That(GC.GetAllocatedBytesForCurrentThread() - before, Is.EqualTo(0), "bytes allocated over 100 000 " + units);
+            // Up to three runs, one of which must allocate nothing: an allocation per unit shows in every run
+            // (2.4 MB at least), while the runtime's one-off work that lands on this thread now and then (tiered
+            // re-compilation of the hot loop, seen as ~8 KB once on a loaded two-core machine) does not repeat.
+            long allocated = 0;
+            for (int attempt = 0; attempt < 3; attempt++)
+            {
+                long before = GC.GetAllocatedBytesForCurrentThread();
+                work(100000);
+                allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+                if (allocated == 0) break;
+            }
+            Assert.That(allocated, Is.EqualTo(0), "bytes allocated over 100 000 " + units + ", in each of three runs");
 #endif
         }
     }
