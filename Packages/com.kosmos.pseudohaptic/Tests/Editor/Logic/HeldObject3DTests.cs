@@ -59,7 +59,9 @@ namespace Kosmos.PseudoHaptic.Tests
             double oneHand1kg = Lift(Object(1, shared), false, 0.3, seed) - Table.Y;
             double oneHand2kg = Lift(Object(2, shared), false, 0.3, seed) - Table.Y;
             Assert.That(twoHands2kg, Is.EqualTo(oneHand1kg).Within(0.01), "2 kg in two hands lifts as 1 kg in one");
-            Assert.That(twoHands2kg, Is.GreaterThan(oneHand2kg + 0.02), "two hands lift 2 kg higher than one hand");
+            // Under the paper profile this lift reaches the offset correction, which keeps weights apart by the
+            // issue's 5 mm at least (1 kg settles ~1 cm above 2 kg), not by the gain's whole difference.
+            Assert.That(twoHands2kg, Is.GreaterThan(oneHand2kg + 0.005), "two hands lift 2 kg higher than one hand");
         }
 
         [Test]
