@@ -6,36 +6,18 @@ using NUnit.Framework;
 namespace Kosmos.PseudoHaptic.Tools.Tests;
 
 /// <summary>The replay command's file contract (issue 2), run in-process.</summary>
-public class ReplayCliTests
+public class ReplayCliTests : CliTestFolder
 {
-    string _dir = "";
+    public ReplayCliTests() : base("ph-replay-") { }
 
-    [SetUp]
-    public void SetUp()
-    {
-        _dir = Path.Combine(Path.GetTempPath(), "ph-replay-" + Guid.NewGuid().ToString("N"));
-        Directory.CreateDirectory(_dir);
-    }
-
-    [TearDown]
-    public void TearDown() => Directory.Delete(_dir, recursive: true);
-
-    string In(string text)
-    {
-        string path = Path.Combine(_dir, "in.csv");
-        File.WriteAllText(path, text);
-        return path;
-    }
+    string In(string text) => Write("in.csv", text);
 
     string Out => Path.Combine(_dir, "out.csv");
 
-    (int code, string stderr) Replay(params string[] args)
+    static (int code, string stderr) Replay(params string[] args)
     {
-        var err = new StringWriter();
-        var oldErr = Console.Error;
-        Console.SetError(err);
-        try { return (Cli.Cli.Run(args.Prepend("replay").ToArray()), err.ToString()); }
-        finally { Console.SetError(oldErr); }
+        var (code, stderr, _) = Capture(() => Cli.Cli.Run(args.Prepend("replay").ToArray()));
+        return (code, stderr);
     }
 
     static List<Dictionary<string, string>> ReadCsv(string path)

@@ -6,36 +6,18 @@ namespace Kosmos.PseudoHaptic.Tools.Tests;
 
 /// <summary>The replay contract's issue 10 extension: hand_x/hand_z, a second hand, hands, held, --profile xyz,
 /// --break-away; and today's columns unchanged by the new ones.</summary>
-public class ReplayThreeDimensionCliTests
+public class ReplayThreeDimensionCliTests : CliTestFolder
 {
-    string _dir = "";
+    public ReplayThreeDimensionCliTests() : base("ph-replay3d-") { }
 
-    [SetUp]
-    public void SetUp()
-    {
-        _dir = Path.Combine(Path.GetTempPath(), "ph-replay3d-" + Guid.NewGuid().ToString("N"));
-        Directory.CreateDirectory(_dir);
-    }
-
-    [TearDown]
-    public void TearDown() => Directory.Delete(_dir, recursive: true);
-
-    string In(string text, string name = "in.csv")
-    {
-        string path = Path.Combine(_dir, name);
-        File.WriteAllText(path, text);
-        return path;
-    }
+    string In(string text, string name = "in.csv") => Write(name, text);
 
     string Out => Path.Combine(_dir, "out.csv");
 
-    (int code, string stderr) Replay(params string[] args)
+    static (int code, string stderr) Replay(params string[] args)
     {
-        var err = new StringWriter();
-        var oldErr = Console.Error;
-        Console.SetError(err);
-        try { return (Cli.Cli.Run(args.Prepend("replay").ToArray()), err.ToString()); }
-        finally { Console.SetError(oldErr); }
+        var (code, stderr, _) = Capture(() => Cli.Cli.Run(args.Prepend("replay").ToArray()));
+        return (code, stderr);
     }
 
     string[] Run(string trace, params string[] options)
