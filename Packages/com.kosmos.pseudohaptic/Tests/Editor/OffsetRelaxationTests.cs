@@ -86,6 +86,76 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AHandAtExactlyTheStillThresholdCountsAsMoving()
+        {
+            // "Still" is below StillFraction × v_std: 0.5 × 0.5 = 0.25 m/s. Poses every 1/16 s, 1/64 m apart, move the
+            // hand at exactly 0.25 m/s (every number here is exact in binary), so the boundary itself is tested.
+            var profile = new WeightProfile("test", new WeightEffect[] { new WeightGain(), new OffsetRelaxation(1.0, 0.5) });
+            var withRelaxation = new WeightSolver(WeightModel.FromMass(2), profile, 0.5);
+            var without = new WeightSolver(WeightModel.FromMass(2), Profile(false), 0.5);
+            foreach (var s in new[] { withRelaxation, without }) s.BeginHold(1.0, 1.0, 0);
+            for (int k = 1; k <= 32; k++)
+            {
+                var pose = new HandSample(1.0 + k / 64.0, true, true, k / 16.0);
+                Assert.That(withRelaxation.Step(pose, 1 / 16.0), Is.EqualTo(without.Step(pose, 1 / 16.0)), "pose " + k);
+            }
+            Assert.That(withRelaxation.HandY - withRelaxation.ObjectY, Is.GreaterThan(0.05), "the gain left an offset it did not relax");
+        }
+
+        [Test]
+        public void WhileTheSpeedLimitStillCarriesMotionItRelaxesWhereTheObjectIsHeaded()
+        {
+            // An object limited to 0.3 m/s lifted at 2 m/s: the speed limit carries much of the lift over to the next
+            // frames. Once the hand is still, what shrinks by τ/(τ + dt) each frame is the offset from where the object
+            // is headed (its height plus what is still carried), not from where it happens to be.
+            const double tau = 0.3;
+            var effects = new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new OffsetRelaxation(tau) };
+            var solver = new WeightSolver(WeightModel.FromMass(0.5), new WeightProfile("test", effects, new SolverLimits(maxObjectSpeed: 0.3)), 0.5);
+            double hand = 1.0, t = 0;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 18; i++) { t += Dt; hand += 2.0 * Dt; solver.Step(new HandSample(hand, true, true, t), Dt); }
+            for (int i = 0; i < 3; i++) { t += Dt; solver.Step(new HandSample(hand, true, true, t), Dt); } // the estimator sees the stop
+            double before = hand - solver.ObjectY - solver.State.Carry;
+            Assert.That(solver.State.Carry, Is.GreaterThan(0.1), "the limit still carries motion");
+            Assert.That(Math.Abs(before), Is.GreaterThan(0.02), "an offset is left to relax");
+            for (int i = 0; i < 30; i++)
+            {
+                t += Dt;
+                solver.Step(new HandSample(hand, true, true, t), Dt);
+                double after = hand - solver.ObjectY - solver.State.Carry;
+                Assert.That(after / before, Is.EqualTo(tau / (tau + Dt)).Within(1e-9), "frame " + i);
+                before = after;
+            }
+        }
+
+        [Test]
+        public void WhatRelaxationMovesIsPaidFromTheSpeedCapsDebt()
+        {
+            // 5 kg lifted 0.45 m at 3 m/s by a user of v_std 0.3 m/s: the speed cap defers part of it and pays it at
+            // v_cap once the hand stops. Relaxation drawing the object up meanwhile pays that debt too: every metre the
+            // object rises while the hand is still comes off what is owed, so nothing is owed twice.
+            var effects = new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new SpeedCap(), new OffsetRelaxation(1.0) };
+            var solver = new WeightSolver(WeightModel.FromMass(5), new WeightProfile("test", effects), 0.3);
+            double hand = 1.0, t = 0;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 15; i++) { t += Dt; hand += 3.0 * Dt; solver.Step(new HandSample(hand, true, true, t), Dt); }
+            Assert.That(solver.State.CapDeferred, Is.GreaterThan(0.03), "the cap owes motion when the hand stops");
+            int paid = 0;
+            while (solver.State.CapDeferred > 0 && paid < 200)
+            {
+                double owed = solver.State.CapDeferred, y = solver.ObjectY;
+                t += Dt;
+                double moved = solver.Step(new HandSample(hand, true, true, t), Dt) - y;
+                Assert.That(moved, Is.GreaterThan(0), "frame " + paid);
+                Assert.That(owed - solver.State.CapDeferred, Is.EqualTo(Math.Min(owed, moved)).Within(1e-12), "frame " + paid);
+                paid++;
+            }
+            Assert.That(paid, Is.InRange(2, 199), "the debt was paid over a few frames");
+            for (int i = 0; i < 1200; i++) { t += Dt; solver.Step(new HandSample(hand, true, true, t), Dt); }
+            Assert.That(hand - solver.ObjectY, Is.InRange(0.0, 0.002), "relaxed up to the still hand, never past it");
+        }
+
+        [Test]
         public void ItIsNamedForProfiles()
         {
             Assert.That(new OffsetRelaxation().Name, Is.EqualTo("offset-relaxation"));

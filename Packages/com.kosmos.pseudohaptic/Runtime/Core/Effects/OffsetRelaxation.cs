@@ -1,3 +1,5 @@
+using System;
+
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
@@ -21,9 +23,8 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double speed = state.Estimator.Speed;
-            if (speed < 0) speed = -speed;
-            if (speed >= StillFraction * constants.StandardSpeed) return;
+            if (Math.Abs(state.Estimator.Speed) >= StillFraction * constants.StandardSpeed) return;
+            // Stryker disable once Equality : at dt == MaxFrameTime both branches give the same dt (equivalent mutant).
             double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
             double after = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
             // dt/(τ+dt) ≈ 1 − e^(−dt/τ) without an exponential per frame; never overshoots.
