@@ -154,6 +154,34 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(solver.Offset, Is.EqualTo(0.22).Within(0.001), "drawn back to the band's end (1 kg: 0.2 + 0.02 m)");
         }
 
+        [TestCase(+0.5)]
+        [TestCase(-0.5)]
+        public void OffsetCorrectionPullsAtFullSpeedFarOutThenSlowsOverFiveBandsInEitherDirection(double jump)
+        {
+            // The hand comes back `jump` m away after a second's loss: an offset no motion made. Beyond the band's end
+            // (1 kg: 0.2 + 0.02 m) the object is drawn toward the hand at 0.5 m/s while more than five band widths
+            // (0.1 m) out, then at 0.5 m/s × beyond / 0.1 m, each frame's time counting at most the longest frame.
+            var c = new OffsetCorrection();
+            var solver = new WeightSolver(WeightModel.FromMass(1), Only(c));
+            solver.BeginHold(1.0, 1.0, 0);
+            double t = 0;
+            for (int i = 0; i < 90; i++) { t += 1 / 90.0; solver.Step(HandSample.Lost, 1 / 90.0); }
+            double hand = 1.0 + jump, y = solver.ObjectY, fullSpeedFrames = 0;
+            for (int i = 0; i < 400; i++)
+            {
+                double dt = i % 50 == 7 ? 0.05 : 1 / 90.0; // now and then a 20 Hz hitch: it counts as 25 ms
+                t += dt;
+                double offset = hand - y, beyond = Math.Abs(offset) - 0.22;
+                double speed = beyond >= 0.1 ? 0.5 : 0.5 * beyond / 0.1;
+                double expected = y + Math.Sign(offset) * Math.Max(0, Math.Min(beyond, speed * Math.Min(dt, 0.025)));
+                if (beyond >= 0.1) fullSpeedFrames++;
+                y = solver.Step(new HandSample(hand, true, true, t), dt);
+                Assert.That(y, Is.EqualTo(expected).Within(1e-12), "frame " + i);
+            }
+            Assert.That(fullSpeedFrames, Is.GreaterThan(20), "the pull ran at full speed first");
+            Assert.That(Math.Abs(hand - y) - 0.22, Is.InRange(0.0, 1e-3), "and ended near the band's end");
+        }
+
         [Test]
         public void OffsetRelaxationReturnsAHeldOffsetToZeroOnlyWhenOn()
         {

@@ -100,17 +100,13 @@ namespace Kosmos.PseudoHaptic
                 frame.TotalDelta += share * (frame.PoseHandAfter - frame.PoseHandBefore - frame.TotalDelta);
             }
 
-            // 3. Offsets the hand's motion did not make (re-anchoring) are drawn back, against the deadbanded hand.
+            // 3. Offsets the hand's motion did not make (re-anchoring) are drawn back, against the deadbanded hand, at up
+            //    to PullSpeed, ramping up over five band widths past the band's end (nothing, +0, inside it).
             double afterSigned = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
-            double beyond = Math.Abs(afterSigned) - (massThreshold + Band);
-            if (beyond > 0 && PullSpeed > 0)
-            {
-                double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
-                double ramp = 5 * Band;
-                double speed = PullSpeed * (beyond >= ramp ? 1 : beyond / ramp);
-                double pull = Math.Min(beyond, speed * dt);
-                frame.TotalDelta += afterSigned > 0 ? pull : -pull;
-            }
+            double beyond = Math.Max(0, Math.Abs(afterSigned) - (massThreshold + Band));
+            double speed = PullSpeed * Math.Min(1, beyond / (5 * Band));
+            double pull = Math.Min(beyond, speed * Math.Min(frame.Dt, constants.Limits.MaxFrameTime));
+            frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             // Motion toward the hand pays what the speed cap owes. Motion the correction held back from the cap's
             // catch-up (in the band an object catching up with the hand is slowed) is owed again: delayed, not lost, so
             // the catch-up after a fast lift completes (stability.md, known limits, for what is left).

@@ -24,8 +24,7 @@ namespace Kosmos.PseudoHaptic
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
             if (Math.Abs(state.Estimator.Speed) >= StillFraction * constants.StandardSpeed) return;
-            // Stryker disable once Equality : at dt == MaxFrameTime both branches give the same dt (equivalent mutant).
-            double dt = frame.Dt < constants.Limits.MaxFrameTime ? frame.Dt : constants.Limits.MaxFrameTime;
+            double dt = Math.Min(frame.Dt, constants.Limits.MaxFrameTime);
             double after = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
             // dt/(τ+dt) ≈ 1 − e^(−dt/τ) without an exponential per frame; never overshoots.
             double relax = after * dt / (TimeConstant + dt);
