@@ -203,6 +203,28 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Array.Exists(free, v => v < -0.1), Is.True, "without it the object goes through");
         }
 
+        [TestCase(0.02, 0)]  // gain 3: the speed limit carries what the floor stops
+        [TestCase(5.0, 1)]   // heavy: the speed cap owes it
+        public void MotionTheFloorStoppedIsNotOwedAfterwards(double massKg, int capped)
+        {
+            // The hand drives the object fast into the floor, waits there and lifts again. What the speed limit or the
+            // speed cap still owed downward when the floor stopped the object is dropped: the first lifting pose lifts
+            // it, instead of the object sitting on the floor paying a debt into it.
+            var effects = capped == 1
+                ? new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new SpeedCap(), new FloorClamp() }
+                : new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new FloorClamp() };
+            var solver = new WeightSolver(WeightModel.FromMass(massKg), Only(effects), 0.3);
+            const double dt = 1 / 90.0;
+            double hand = 0.05, t = 0, y = 0.05;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 30; i++) { t += dt; hand -= 4.0 * dt; y = solver.Step(new HandSample(hand, true, true, t), dt); }
+            Assert.That(y, Is.EqualTo(0.0), "on the floor");
+            Assert.That(capped == 1 ? solver.State.CapDeferred : solver.State.Carry, Is.EqualTo(0.0), "nothing owed into it");
+            t += dt; hand += 0.01;
+            double lifted = solver.Step(new HandSample(hand, true, true, t), dt);
+            Assert.That(lifted, Is.GreaterThan(0.0), "the first lifting pose lifts it");
+        }
+
         [Test]
         public void TheFloorKeepsTheObjectsBottomAboveTheSupport()
         {
