@@ -154,6 +154,55 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(solver.Offset, Is.EqualTo(0.22).Within(0.001), "drawn back to the band's end (1 kg: 0.2 + 0.02 m)");
         }
 
+        // (offset at the start d0, change the hand alone would make Δ), m; 1 kg: threshold T = 0.2, band B = 0.02.
+        [TestCase(0.210, +0.005)]  // growth inside the band
+        [TestCase(0.190, +0.020)]  // growth into the band from below it
+        [TestCase(0.210, +0.020)]  // growth toward the band's end
+        [TestCase(0.225, +0.010)]  // growth past the band: none (then the pull, pinned above, draws it back a little)
+        [TestCase(0.219, -0.010)]  // shrinks inside the band
+        [TestCase(0.215, -0.025)]
+        [TestCase(0.219, -0.034)]  // very large shrinks (|Δ| ≥ 1.5 B): judged at the start…
+        [TestCase(0.210, -0.035)]  // …unless the free step's midpoint is at or below T: then the hand's whole motion
+        public void OffsetCorrectionSharesOneStepByTheImplicitMidpointRule(double d0, double delta)
+        {
+            // One pose changes the offset: the object's share s of the hand's motion is judged at the step's midpoint,
+            // d = d0 + (1 − s((d0 + d)/2))·Δ, s(m) = clamp((m − T)/B, 0, 1), solved here by bisection, independently
+            // of the solver's closed form. A single step shrinking the offset by 1.5 band widths or more from inside the
+            // band has no unique such d; it is judged at the start, d = d0 + (1 − s(d0))·Δ, unless d = d0 + Δ is itself
+            // consistent (midpoint ≤ T).
+            const double T = 0.2, B = 0.02;
+            var solver = new WeightSolver(WeightModel.FromMass(1), Only(new WeightGain(), new OffsetCorrection()));
+            double G = solver.Gain, t = 0;
+            Assert.That(G, Is.LessThan(0.5), "a heavy object: the hand's step changes the offset");
+            solver.BeginHold(1.0, 1.0, 0);
+            for (int i = 0; i < 45; i++) { t += 1 / 90.0; solver.Step(HandSample.Lost, 1 / 90.0); }
+            double hand = 1.0 + d0; // the hand comes back d0 higher: an offset no motion made
+            for (int i = 0; i < 3; i++) { t += 1 / 90.0; solver.Step(new HandSample(hand, true, true, t), 1 / 90.0); }
+            Assert.That(hand - solver.ObjectY, Is.EqualTo(d0).Within(1e-3), "re-anchored at about the offset d0");
+            d0 = hand - solver.ObjectY; // exactly, after what the pull did past the band
+
+            hand += delta / (1 - G); // the object follows G of it, so the offset alone would change by Δ
+            t += 1 / 90.0;
+            double d = hand - solver.Step(new HandSample(hand, true, true, t), 1 / 90.0);
+
+            Func<double, double> s = m => Math.Max(0, Math.Min(1, (m - T) / B));
+            double expected;
+            if (delta < -1.5 * B && d0 + delta / 2 > T) expected = d0 + (1 - s(d0)) * delta;
+            else
+            {
+                double lo = Math.Min(d0, d0 + delta), hi = Math.Max(d0, d0 + delta);
+                for (int i = 0; i < 200; i++)
+                {
+                    double mid = (lo + hi) / 2, g = d0 + (1 - s((d0 + mid) / 2)) * delta - mid; // decreasing in mid
+                    if (g > 0) lo = mid; else hi = mid;
+                }
+                expected = (lo + hi) / 2;
+            }
+            double beyond = expected - (T + B); // the pull past the band's end (pinned by the test below)
+            if (beyond > 0) expected -= Math.Min(beyond, 0.5 * Math.Min(1, beyond / (5 * B)) / 90.0);
+            Assert.That(d, Is.EqualTo(expected).Within(1e-9));
+        }
+
         [TestCase(+0.5)]
         [TestCase(-0.5)]
         public void OffsetCorrectionPullsAtFullSpeedFarOutThenSlowsOverFiveBandsInEitherDirection(double jump)

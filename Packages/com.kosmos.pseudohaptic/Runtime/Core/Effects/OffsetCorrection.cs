@@ -135,19 +135,15 @@ namespace Kosmos.PseudoHaptic
         double MidpointOffset(double d0, double delta, double threshold)
         {
             double free = d0 + delta;
-            if ((d0 + free) / 2 <= threshold) return free;          // s = 0 over the whole step
-            if (d0 >= threshold + Band && free >= d0) return d0;     // s = 1: past the band nothing grows
+            if ((d0 + free) / 2 <= threshold) return free; // s = 0 over the whole step
+            // Solved with s linear. Past the band (s = 1) that solution falls short of d0, where the clamped rule stays:
+            // nothing grows there.
             double denominator = 1 + delta / (2 * Band);
+            // A very large shrink (|Δ| ≥ 1.5 band widths, only ever from inside the band, so 0 < s(d0) < 1): judged at the start.
             double d = denominator > 0.25
                 ? (d0 + delta * (1 - (d0 / 2 - threshold) / Band)) / denominator
-                : d0 + (1 - Clamp01((d0 - threshold) / Band)) * delta; // a very large shrink: judge at the start
-            double m = (d0 + d) / 2;
-            if (m > threshold + Band) d = d0;                        // the step ends past the band: s = 1
-            // Between no correction and full correction, whatever rounding says.
-            double lo = delta > 0 ? d0 : free, hi = delta > 0 ? free : d0;
-            return d < lo ? lo : (d > hi ? hi : d);
+                : d0 + (1 - (d0 - threshold) / Band) * delta;
+            return Math.Max(Math.Min(d0, free), d);
         }
-
-        static double Clamp01(double x) => x < 0 ? 0 : (x > 1 ? 1 : x);
     }
 }
