@@ -1,0 +1,167 @@
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// The pose-delta estimator on its own, frame by frame: what a new pose is, the interval its speed is measured
+    /// over (the poses' clock, else the frames' time since the last pose, at least a 60 Hz period), when it reads the
+    /// hand as still, and when it re-anchors instead of following (a jump no hand makes, a clock that steps back, a
+    /// frame or a loss longer than the catch-up gap).
+    /// </summary>
+    public class PoseDeltaEstimatorTests
+    {
+        static readonly SolverLimits Limits = SolverLimits.Default; // hand ≤ 6 m/s, catch-up gap 0.25 s
+
+        static PoseDeltaEstimator Started(double y = 1.0, double poseTime = 0)
+        {
+            var e = new PoseDeltaEstimator();
+            e.Reset(y, poseTime);
+            return e;
+        }
+
+        static MotionFrame Frame(ref PoseDeltaEstimator e, double y, double poseTime, double dt, bool usable = true)
+        {
+            var f = new MotionFrame { Dt = dt, PoseY = y, PoseTime = poseTime, Usable = usable, IsHighConfidence = true };
+            e.Update(ref f, Limits);
+            return f;
+        }
+
+        [Test]
+        public void ANewPoseIsMeasuredOverThePosesOwnClock()
+        {
+            var e = Started(1.0, 10.0);
+            var f = Frame(ref e, 1.02, 10.04, 1 / 90.0); // the frame is 11 ms, the poses 40 ms apart
+            Assert.That(f.Reanchored, Is.False);
+            Assert.That(f.HandBefore, Is.EqualTo(1.0));
+            Assert.That(f.HandAfter, Is.EqualTo(1.02));
+            Assert.That(f.HandDelta, Is.EqualTo(1.02 - 1.0));
+            Assert.That(f.MotionInterval, Is.EqualTo(10.04 - 10.0));
+            Assert.That(f.HandSpeed, Is.EqualTo((1.02 - 1.0) / (10.04 - 10.0)));
+            Assert.That(e.Speed, Is.EqualTo(f.HandSpeed));
+            Assert.That(e.HandY, Is.EqualTo(1.02));
+        }
+
+        [Test]
+        public void WithoutTimestampsItIsMeasuredOverTheFramesSinceTheLastPoseAtLeastASixtiethOfASecond()
+        {
+            var e = Started(1.0, double.NaN);
+            var same = Frame(ref e, 1.0, double.NaN, 0.01);
+            Assert.That(same.HandDelta, Is.EqualTo(0));
+            Assert.That(same.MotionInterval, Is.EqualTo(0), "the same pose again is no motion");
+            Assert.That(same.HandAfter, Is.EqualTo(1.0));
+            var next = Frame(ref e, 1.03, double.NaN, 0.02);
+            Assert.That(next.MotionInterval, Is.EqualTo(0.03).Within(1e-15), "both frames since the last new pose");
+            Assert.That(next.HandSpeed, Is.EqualTo(next.HandDelta / next.MotionInterval));
+            var quick = Frame(ref e, 1.04, double.NaN, 0.004);
+            Assert.That(quick.MotionInterval, Is.EqualTo(1 / 60.0), "two poses in one short frame: a 60 Hz period");
+        }
+
+        [Test]
+        public void AStuckTimestampWithANewValueIsStillANewPose()
+        {
+            var e = Started(1.0, 5.0);
+            Frame(ref e, 1.0, 5.0, 0.02);
+            var f = Frame(ref e, 1.01, 5.0, 0.02);
+            Assert.That(f.HandDelta, Is.EqualTo(1.01 - 1.0), "followed");
+            Assert.That(f.MotionInterval, Is.EqualTo(0.04).Within(1e-15), "over the frames since the last pose");
+            var repeated = Frame(ref e, 1.01, 5.0, 0.02);
+            Assert.That(repeated.MotionInterval, Is.EqualTo(0), "the same value and timestamp: not a new pose");
+            var newTime = Frame(ref e, 1.01, 5.1, 0.02);
+            Assert.That(newTime.MotionInterval, Is.EqualTo(5.1 - 5.0).Within(1e-12), "a new timestamp is a new pose, even at the same height");
+            Assert.That(newTime.HandDelta, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void TheSpeedReadsZeroWhenNoPoseCameForATenthOfASecondOrTrackingIsLost()
+        {
+            var e = Started(1.0, 0);
+            Frame(ref e, 1.01, 1 / 30.0, 1 / 30.0);
+            Assert.That(e.Speed, Is.EqualTo(0.01 * 30).Within(1e-12));
+            Frame(ref e, 1.01, 1 / 30.0, 0.09);
+            Assert.That(e.Speed, Is.EqualTo(0.01 * 30).Within(1e-12), "90 ms without a pose: still the last speed");
+            Frame(ref e, 1.01, 1 / 30.0, 0.02);
+            Assert.That(e.Speed, Is.EqualTo(0), "110 ms: the hand is still");
+
+            var lost = Started(1.0, 0);
+            Frame(ref lost, 1.01, 1 / 30.0, 1 / 30.0);
+            Frame(ref lost, double.NaN, double.NaN, 0.001, usable: false);
+            Assert.That(lost.Speed, Is.EqualTo(0), "lost");
+            var f = Frame(ref lost, 1.0, double.NaN, 0.001, usable: false);
+            Assert.That(f.HandAfter, Is.EqualTo(1.01), "a lost frame keeps the last pose");
+            Assert.That(f.HandDelta, Is.EqualTo(0));
+        }
+
+        [TestCase(0.19, false)]  // a 90 Hz pose step is judged over a 30 Hz period: 6 m/s × 1/30 s = 0.2 m
+        [TestCase(0.21, true)]
+        public void AStepFasterThanAnyHandReanchorsJudgedOverAtLeastAThirtiethOfASecond(double step, bool reanchors)
+        {
+            var e = Started(1.0, 0);
+            var f = Frame(ref e, 1.0 + step, 1 / 90.0, 1 / 90.0);
+            Assert.That(f.Reanchored, Is.EqualTo(reanchors));
+            Assert.That(f.HandDelta, Is.EqualTo(reanchors ? 0 : step).Within(1e-15));
+            Assert.That(f.HandAfter, Is.EqualTo(1.0 + step), "either way the estimator is now at the new pose");
+            Assert.That(e.Speed, Is.EqualTo(reanchors ? 0 : step * 90).Within(1e-9));
+        }
+
+        [TestCase(0.0, 0.29, false)] // after a still spell, at most 50 ms count: 6 m/s × 0.05 s = 0.3 m
+        [TestCase(0.0, 0.31, true)]
+        [TestCase(0.1, 0.85, false)] // after a 0.1 s loss, 0.15 s count: 0.9 m
+        [TestCase(0.1, 0.95, true)]
+        public void AfterAStillSpellOnlyFiftyMillisecondsCountPlusTheTimeTrackingWasLost(double lostFor, double step, bool reanchors)
+        {
+            var e = Started(1.0, 0);
+            Frame(ref e, 1.0, 0, 0.1); // 100 ms without a new pose
+            if (lostFor > 0) Frame(ref e, double.NaN, double.NaN, lostFor, usable: false);
+            var f = Frame(ref e, 1.0 + step, 0.2, 0.01);
+            Assert.That(f.Reanchored, Is.EqualTo(reanchors));
+            if (!reanchors) Assert.That(f.HandDelta, Is.EqualTo(step).Within(1e-12), "caught up over the loss");
+        }
+
+        [Test]
+        public void ALongFrameALongLossOrAClockThatStepsBackReanchors()
+        {
+            var longFrame = Started(1.0, 0);
+            Assert.That(Frame(ref longFrame, 1.001, 0.3, 0.3).Reanchored, Is.True, "a 0.3 s frame: past the catch-up gap");
+            var shortFrame = Started(1.0, 0);
+            Assert.That(Frame(ref shortFrame, 1.001, 0.2, 0.2).Reanchored, Is.False, "a 0.2 s frame is bridged");
+
+            var longLoss = Started(1.0, 0);
+            for (int i = 0; i < 3; i++) Frame(ref longLoss, double.NaN, double.NaN, 0.1, usable: false);
+            Assert.That(Frame(ref longLoss, 1.001, 0.31, 0.01).Reanchored, Is.True, "lost for 0.3 s");
+            var shortLoss = Started(1.0, 0);
+            for (int i = 0; i < 2; i++) Frame(ref shortLoss, double.NaN, double.NaN, 0.1, usable: false);
+            var bridged = Frame(ref shortLoss, 1.001, 0.21, 0.01);
+            Assert.That(bridged.Reanchored, Is.False, "lost for 0.2 s: bridged");
+            Assert.That(bridged.MotionInterval, Is.EqualTo(0.21).Within(1e-12));
+
+            var back = Started(1.0, 2.0);
+            var f = Frame(ref back, 1.001, 1.9, 0.01);
+            Assert.That(f.Reanchored, Is.True, "the pose clock stepped back");
+            Assert.That(f.HandDelta, Is.EqualTo(0));
+            Assert.That(back.Speed, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void WithoutAStartingPoseTheFirstUsableOneAnchors()
+        {
+            var e = Started(double.NaN, double.NaN);
+            Assert.That(e.HasPose, Is.False);
+            var f = Frame(ref e, 1.2, 0.5, 0.01);
+            Assert.That(f.Reanchored, Is.True);
+            Assert.That(e.HasPose, Is.True);
+            Assert.That(e.HandY, Is.EqualTo(1.2));
+            var next = Frame(ref e, 1.21, 0.52, 0.02);
+            Assert.That(next.Reanchored, Is.False, "then it follows");
+            Assert.That(next.MotionInterval, Is.EqualTo(0.52 - 0.5).Within(1e-15));
+        }
+
+        [Test]
+        public void PosesMicrosecondsApartAreMeasuredOverATenthOfAMillisecond()
+        {
+            var e = Started(1.0, 0);
+            var f = Frame(ref e, 1.0001, 1e-6, 0.01);
+            Assert.That(f.MotionInterval, Is.EqualTo(1e-4));
+            Assert.That(f.HandSpeed, Is.EqualTo((1.0001 - 1.0) / 1e-4).Within(1e-9));
+        }
+    }
+}
