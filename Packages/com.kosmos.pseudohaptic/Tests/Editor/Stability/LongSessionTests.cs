@@ -51,6 +51,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             return (top, rest, frames);
         }
 
+        [Category("Soak")] // ten hours at 120 Hz: Stryker skips these (Documentation~/quality.md)
         [TestCase("paper", 2.0), TestCase("paper-experiment", 0.3), TestCase("gain", 0.045)]
         public void TenHoursOfLiftsDoNotDrift(string profile, double massKg)
         {
@@ -73,6 +74,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             Assert.That(rest[rest.Length - 1], Is.EqualTo(rest[rest.Length - 2]).Within(1e-8), "height at rest, the last two hours");
         }
 
+        [Category("Soak")] // ten hours at 120 Hz: Stryker skips these (Documentation~/quality.md)
         [Test]
         public void TenHoursWithTrackingJitterStayBounded()
         {

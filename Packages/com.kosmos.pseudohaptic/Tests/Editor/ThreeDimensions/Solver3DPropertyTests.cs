@@ -89,6 +89,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             }
         }
 
+        [Category("Soak")] // ten hours at 120 Hz: Stryker skips these (Documentation~/quality.md)
         [Test]
         public void TenHoursInThreeDimensionsWithTwoHandsDoNotDrift()
         {
