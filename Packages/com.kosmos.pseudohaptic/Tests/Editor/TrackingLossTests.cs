@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using NUnit.Framework;
 using Kosmos.PseudoHaptic.Simulation;
 
@@ -58,6 +59,85 @@ namespace Kosmos.PseudoHaptic.Tests
             var clean = Run.Replay(Run.Solver(massKg, NamedProfiles.Paper), frames);
             var lost = ReplayWithLoss(Run.Solver(massKg, NamedProfiles.Paper), frames, 0.6, seconds, true);
             Assert.That(Run.Last(lost), Is.EqualTo(Run.Last(clean)).Within(0.01), massKg + " kg");
+        }
+    
+
+        // Frame by frame, with frames of 1/32 s so that every sum below is exact: the hold bridges a loss of up to the
+        // catch-up gap (0.25 s = 8 frames) and, after a longer one, withholds the hand for SettleTime (0.125 s = 4 frames
+        // of steady tracking) and then re-anchors on it, so the object moves with the hand from the next pose on.
+        const double Frame32 = 1 / 32.0;
+
+        static WeightSolver GolfBallWithHold(double settleTime = 0.125, bool requireHighConfidence = true)
+        {
+            var profile = new WeightProfile("test", new WeightEffect[] { new TrackingLossHold(settleTime, requireHighConfidence) });
+            var solver = new WeightSolver(WeightModel.FromMass(PhysicalConstants.StandardMassKg), profile);
+            Assert.That(solver.Gain, Is.EqualTo(1.0), "the standard weight follows the hand 1:1");
+            return solver;
+        }
+
+        [TestCase(8, false)] // 0.25 s: bridged, what the hand did meanwhile is caught up at once
+        [TestCase(9, true)]  // 0.28125 s: settles first
+        public void ALossLongerThanTheCatchUpGapSettlesForSettleTimeThenReanchors(int lostFrames, bool settles)
+        {
+            var solver = GolfBallWithHold();
+            double t = 0, hand = 1.0;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 4; i++) { t += Frame32; solver.Step(new HandSample(hand, true, true, t), Frame32); }
+            for (int i = 0; i < lostFrames; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); }
+            hand = 1.05; // it came back 5 cm higher, then rises 1 mm a frame
+            var y = new double[6];
+            for (int i = 0; i < 6; i++) { t += Frame32; hand += 0.001; y[i] = solver.Step(new HandSample(hand, true, true, t), Frame32); }
+            if (!settles)
+            {
+                Assert.That(y[0], Is.EqualTo(1.051).Within(1e-12), "caught up on the first pose back");
+                Assert.That(y[5], Is.EqualTo(hand).Within(1e-12));
+                return;
+            }
+            for (int i = 0; i < 4; i++) Assert.That(y[i], Is.EqualTo(1.0), "frame " + i + ": settling, then re-anchored where the hand is");
+            Assert.That(y[4] - y[3], Is.EqualTo(0.001).Within(1e-12), "then it follows the hand's next step");
+            Assert.That(y[5] - y[4], Is.EqualTo(0.001).Within(1e-12));
+        }
+
+        [Test]
+        public void AShortBlinkWhileSettlingNeitherRestartsNorCompletesTheSettling()
+        {
+            var solver = GolfBallWithHold();
+            double t = 0, hand = 1.0;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 10; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); } // a long loss
+            var y = new List<double>();
+            for (int i = 0; i < 2; i++) { t += Frame32; hand += 0.001; y.Add(solver.Step(new HandSample(hand, true, true, t), Frame32)); }
+            for (int i = 0; i < 2; i++) { t += Frame32; y.Add(solver.Step(HandSample.Lost, Frame32)); }      // a blink
+            for (int i = 0; i < 3; i++) { t += Frame32; hand += 0.001; y.Add(solver.Step(new HandSample(hand, true, true, t), Frame32)); }
+            // Settling counts only tracked frames: 2 before the blink and 2 after make its 4; the third after follows.
+            for (int i = 0; i < 6; i++) Assert.That(y[i], Is.EqualTo(1.0), "frame " + i);
+            Assert.That(y[6] - y[5], Is.EqualTo(0.001).Within(1e-12), "following");
+        }
+
+        [TestCase(true)]
+        [TestCase(false)]
+        public void LowConfidencePosesCountAsLostOnlyWhenHighConfidenceIsRequired(bool require)
+        {
+            var solver = GolfBallWithHold(requireHighConfidence: require);
+            double t = 0, hand = 1.0;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 12; i++) { t += Frame32; hand += 0.002; solver.Step(new HandSample(hand, true, false, t), Frame32); }
+            if (require) Assert.That(solver.ObjectY, Is.EqualTo(1.0), "a long low-confidence spell is a long loss: the object waits");
+            else Assert.That(solver.ObjectY, Is.EqualTo(hand).Within(1e-12), "followed like any pose");
+        }
+
+        [Test]
+        public void WithNoSettleTimeTheFirstPoseBackReanchors()
+        {
+            var solver = GolfBallWithHold(settleTime: 0);
+            double t = 0;
+            solver.BeginHold(1.0, 1.0, t);
+            for (int i = 0; i < 10; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); }
+            t += Frame32;
+            Assert.That(solver.Step(new HandSample(1.2, true, true, t), Frame32), Is.EqualTo(1.0), "re-anchored: no jump");
+            t += Frame32;
+            Assert.That(solver.Step(new HandSample(1.201, true, true, t), Frame32), Is.EqualTo(1.001).Within(1e-12), "then follows");
+            Assert.That(new TrackingLossHold().Name, Is.EqualTo("tracking-loss-hold"));
         }
     }
 }

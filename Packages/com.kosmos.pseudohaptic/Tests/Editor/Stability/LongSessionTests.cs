@@ -51,10 +51,11 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             return (top, rest, frames);
         }
 
-        [Category("Soak")] // ten hours at 120 Hz: Stryker skips these (Documentation~/quality.md)
+        [Category("Soak")] // ten hours at 120 Hz (Support/Soak.cs)
         [TestCase("paper", 2.0), TestCase("paper-experiment", 0.3), TestCase("gain", 0.045)]
         public void TenHoursOfLiftsDoNotDrift(string profile, double massKg)
         {
+            Soak.SkipIfAsked();
             var (top, rest, steps) = TenHours(profile, massKg, 0);
             Assert.That(steps, Is.EqualTo(4320000));
             // A hold settles into its cycle (the deadband, the lowering guard and the offset correction leave a trace
@@ -74,10 +75,11 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             Assert.That(rest[rest.Length - 1], Is.EqualTo(rest[rest.Length - 2]).Within(1e-8), "height at rest, the last two hours");
         }
 
-        [Category("Soak")] // ten hours at 120 Hz: Stryker skips these (Documentation~/quality.md)
+        [Category("Soak")] // ten hours at 120 Hz (Support/Soak.cs)
         [Test]
         public void TenHoursWithTrackingJitterStayBounded()
         {
+            Soak.SkipIfAsked();
             var (top, rest, _) = TenHours("paper", 2.0, 0.003);
             for (int h = 0; h < top.Length; h++)
             {
