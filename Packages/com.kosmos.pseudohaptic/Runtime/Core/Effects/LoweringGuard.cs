@@ -35,7 +35,6 @@ namespace Kosmos.PseudoHaptic
             {
                 // The hand turned back up: return what the guard added, moving the object at most as the hand moves.
                 double debt = state.GuardDebt;
-                if (debt == 0) return;
                 double room = frame.HandDelta - frame.ObjectDelta; // > 0 for a heavy object, < 0 for a light one
                 double back = -debt;
                 if (room >= 0) back = back < 0 ? 0 : (back > room ? room : back);
