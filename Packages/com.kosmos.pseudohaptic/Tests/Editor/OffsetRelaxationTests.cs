@@ -128,31 +128,32 @@ namespace Kosmos.PseudoHaptic.Tests
             }
         }
 
-        [Test]
-        public void WhatRelaxationMovesIsPaidFromTheSpeedCapsDebt()
+        [TestCase(+1)]
+        [TestCase(-1)]
+        public void WhatRelaxationMovesIsPaidFromTheSpeedCapsDebt(int direction)
         {
-            // 5 kg lifted 0.45 m at 3 m/s by a user of v_std 0.3 m/s: the speed cap defers part of it and pays it at
+            // 5 kg lifted (or lowered) 0.45 m at 3 m/s by a user of v_std 0.3 m/s: the speed cap defers part of it and pays it at
             // v_cap once the hand stops. Relaxation drawing the object up meanwhile pays that debt too: every metre the
             // object rises while the hand is still comes off what is owed, so nothing is owed twice.
             var effects = new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new SpeedCap(), new OffsetRelaxation(1.0) };
             var solver = new WeightSolver(WeightModel.FromMass(5), new WeightProfile("test", effects), 0.3);
             double hand = 1.0, t = 0;
             solver.BeginHold(hand, hand, t);
-            for (int i = 0; i < 15; i++) { t += Dt; hand += 3.0 * Dt; solver.Step(new HandSample(hand, true, true, t), Dt); }
-            Assert.That(solver.State.CapDeferred, Is.GreaterThan(0.03), "the cap owes motion when the hand stops");
+            for (int i = 0; i < 15; i++) { t += Dt; hand += direction * 3.0 * Dt; solver.Step(new HandSample(hand, true, true, t), Dt); }
+            Assert.That(direction * solver.State.CapDeferred, Is.GreaterThan(0.03), "the cap owes motion when the hand stops");
             int paid = 0;
-            while (solver.State.CapDeferred > 0 && paid < 200)
+            while (direction * solver.State.CapDeferred > 0 && paid < 200)
             {
                 double owed = solver.State.CapDeferred, y = solver.ObjectY;
                 t += Dt;
                 double moved = solver.Step(new HandSample(hand, true, true, t), Dt) - y;
-                Assert.That(moved, Is.GreaterThan(0), "frame " + paid);
-                Assert.That(owed - solver.State.CapDeferred, Is.EqualTo(Math.Min(owed, moved)).Within(1e-12), "frame " + paid);
+                Assert.That(direction * moved, Is.GreaterThan(0), "frame " + paid);
+                Assert.That(direction * (owed - solver.State.CapDeferred), Is.EqualTo(Math.Min(direction * owed, direction * moved)).Within(1e-12), "frame " + paid);
                 paid++;
             }
             Assert.That(paid, Is.InRange(2, 199), "the debt was paid over a few frames");
             for (int i = 0; i < 1200; i++) { t += Dt; solver.Step(new HandSample(hand, true, true, t), Dt); }
-            Assert.That(hand - solver.ObjectY, Is.InRange(0.0, 0.002), "relaxed up to the still hand, never past it");
+            Assert.That(direction * (hand - solver.ObjectY), Is.InRange(0.0, 0.002), "relaxed to the still hand, never past it");
         }
 
         [Test]

@@ -55,7 +55,6 @@ namespace Kosmos.PseudoHaptic
         internal static void Settle(ref HoldState state, double extra)
         {
             double owed = state.CapDeferred;
-            if (owed == 0 || extra == 0) return;
             double left = Math.Abs(owed) - Math.Abs(extra);
             state.CapDeferred = left <= 0 ? 0 : (owed > 0 ? left : -left);
         }
