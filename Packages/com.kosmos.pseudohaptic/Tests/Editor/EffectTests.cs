@@ -82,6 +82,28 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheDeadbandFollowsTheHandOnlyPastItsWidthInEitherDirection()
+        {
+            // Gain 3 (10 g) for a user of 0.5 m/s: width 12 mm × (1 − 1/3) = 8 mm. The band's reference stays put while
+            // the hand moves within 8 mm of it and is dragged along at 8 mm beyond; the object moves 3 × the reference.
+            var solver = new WeightSolver(WeightModel.FromMass(0.01), Only(new MotionDeadband(), new WeightGain()), 0.5);
+            Assert.That(solver.Gain, Is.EqualTo(3.0));
+            Assert.That(solver.Constants.DeadbandWidth, Is.EqualTo(0.008).Within(1e-15));
+            double t = 0;
+            solver.BeginHold(1.0, 1.0, t);
+            double[] hand = { 1.005, 1.010, 1.005, 1.002, 0.990, 0.995, 1.003 };
+            double[] reference = { 1.000, 1.002, 1.002, 1.002, 0.998, 0.998, 0.995 }; // dragged up, held, dragged down, held, up
+            for (int i = 0; i < hand.Length; i++)
+            {
+                t += 1 / 30.0;
+                double y = solver.Step(new HandSample(hand[i], true, true, t), 1 / 30.0);
+                Assert.That(y, Is.EqualTo(1.0 + 3 * (reference[i] - 1.0)).Within(1e-12), "pose " + i);
+                Assert.That(solver.State.DeadbandReference, Is.EqualTo(reference[i]).Within(1e-12), "pose " + i);
+            }
+            Assert.That(new MotionDeadband().Name, Is.EqualTo("motion-deadband"));
+        }
+
+        [Test]
         public void LoweringGuardKeepsTheOffsetFromGrowingWhileLowering()
         {
             var path = HandPath.StartAt(1).Hold(0.2).MoveTo(0.7, 0.6).Hold(0.3);
