@@ -91,8 +91,8 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(solver.Constants.DeadbandWidth, Is.EqualTo(0.008).Within(1e-15));
             double t = 0;
             solver.BeginHold(1.0, 1.0, t);
-            double[] hand = { 1.005, 1.010, 1.005, 1.002, 0.990, 0.995, 1.003 };
-            double[] reference = { 1.000, 1.002, 1.002, 1.002, 0.998, 0.998, 0.995 }; // dragged up, held, dragged down, held, up
+            double[] hand = { 1.005, 1.010, 1.005, 1.002, 0.990, 0.995, 1.003, 1.010 };
+            double[] reference = { 1.000, 1.002, 1.002, 1.002, 0.998, 0.998, 0.998, 1.002 }; // held, dragged up, held, dragged down, held, dragged up
             for (int i = 0; i < hand.Length; i++)
             {
                 t += 1 / 30.0;
