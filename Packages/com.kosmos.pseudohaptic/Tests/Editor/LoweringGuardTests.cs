@@ -77,6 +77,25 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void WhatTheGuardAddsPaysTheSpeedCapsDebtSoTheObjectNeverEndsBelowTheHand()
+        {
+            // 5 kg lowered 0.3 m at 2.4 m/s by a user of 0.3 m/s: the cap defers the gain's downward motion, the guard
+            // brings the object down with the hand anyway; that pays what the cap owed, or the cap would later lower
+            // it past the still hand.
+            var s = new WeightSolver(WeightModel.FromMass(5),
+                new WeightProfile("test", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new SpeedCap(), new LoweringGuard() }), 0.3);
+            var hand = new Hand();
+            s.BeginHold(hand.Y, hand.Y, 0);
+            for (int i = 0; i < 4; i++) hand.Move(s, -0.075);
+            Assert.That(s.ObjectY - hand.Y, Is.InRange(0.0, 0.005 + 1e-12), "brought down with the hand, within the slack");
+            for (int i = 0; i < 64; i++)
+            {
+                double y = hand.Move(s, 0);
+                Assert.That(y - hand.Y, Is.InRange(0.0, 0.005 + 1e-12), "still hand, pose " + i + ": nothing owed pushes it lower");
+            }
+        }
+
+        [Test]
         public void LoweringWithinTheOffsetOrAStillHandLeavesTheGainAlone()
         {
             var s = Solver(5);

@@ -60,5 +60,20 @@ namespace Kosmos.PseudoHaptic.Tests
             s.Step(new HandSample(1.2, true, true, 0.13), 0.03);
             Assert.That(s.ObjectY - y, Is.EqualTo(0.1).Within(1e-9));
         }
+
+        [Test]
+        public void EveryEffectHasItsDocumentedName()
+        {
+            // The names profiles print and the docs and the Playground sample's switches use (ALGORITHM.md, Samples~/Playground).
+            var names = new (WeightEffect effect, string name)[]
+            {
+                (new TrackingLossHold(), "tracking-loss-hold"), (new MotionDeadband(), "motion-deadband"), (new WeightGain(), "weight-gain"),
+                (new ExperimentalBlend(), "experimental-blend"), (new FasterMovesFurther(), "faster-moves-further"), (new SpeedCap(), "speed-cap"),
+                (new LoweringGuard(), "lowering-guard"), (new OffsetCorrection(), "offset-correction"), (new OffsetRelaxation(), "offset-relaxation"),
+                (new FloorClamp(), "floor-clamp"), (new HeightDeceleration(), "height-deceleration"), (new LateralInertia(), "lateral-inertia"),
+                (new TwoHands(), "two-hands"), (new BreakAway(0.3), "break-away"),
+            };
+            foreach (var (effect, name) in names) Assert.That(effect.Name, Is.EqualTo(name), effect.GetType().Name);
+        }
     }
 }

@@ -62,7 +62,7 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>The gain G_v for an object of gain <paramref name="gain"/> at hand speed <paramref name="speed"/>.</summary>
         public double GainAt(double gain, double speed, double standardSpeed)
-            => gain < 1 ? (gain > 0 ? Math.Exp(ExponentAt(speed, standardSpeed) * Math.Log(gain)) : 0) : gain;
+            => gain < 1 ? Math.Exp(ExponentAt(speed, standardSpeed) * Math.Log(gain)) : gain; // gain 0: e^(−∞) = 0
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {

@@ -1,3 +1,5 @@
+using System;
+
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
@@ -24,8 +26,8 @@ namespace Kosmos.PseudoHaptic
             double lowest = Floor + constants.BottomBelowPivot + state.GrabOffset;
             if (frame.NewObjectY >= lowest) return;
             frame.NewObjectY = lowest;
-            if (state.Carry < 0) state.Carry = 0; // do not keep pushing into the floor
-            if (state.CapDeferred < 0) state.CapDeferred = 0;
+            state.Carry = Math.Max(0, state.Carry); // do not keep pushing into the floor
+            state.CapDeferred = Math.Max(0, state.CapDeferred);
         }
     }
 }

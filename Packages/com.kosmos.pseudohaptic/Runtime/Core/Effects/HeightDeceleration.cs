@@ -1,3 +1,5 @@
+using System;
+
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
@@ -33,8 +35,7 @@ namespace Kosmos.PseudoHaptic
         /// start for an object of gain <paramref name="gain"/>.</summary>
         public double Factor(double height, double gain)
         {
-            double w = gain < 1 ? 1 - gain : 0;
-            double h = height > 0 ? height : 0;
+            double w = Math.Max(0, 1 - gain), h = Math.Max(0, height);
             return MinFraction + (1 - MinFraction) / (1 + w * h / Height);
         }
 

@@ -1,3 +1,5 @@
+using System;
+
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
@@ -31,7 +33,7 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>τ for an object of gain <paramref name="gain"/>, s: 0 at G ≥ 1.</summary>
-        public double TimeConstantFor(double gain) => gain < 1 ? TimeConstant * (1 - gain) : 0;
+        public double TimeConstantFor(double gain) => TimeConstant * Math.Max(0, 1 - gain);
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
     }

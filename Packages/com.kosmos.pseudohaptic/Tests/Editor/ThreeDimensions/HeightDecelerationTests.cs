@@ -112,6 +112,60 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void FactorIsTheDocumentedCurve()
+        {
+            // φ + (1 − φ)/(1 + w·h/H), w = 1 − G: H = 0.5 m, φ = 0.5 by default.
+            var e = new HeightDeceleration();
+            Assert.That(e.Factor(0.5, 0.5), Is.EqualTo(0.5 + 0.5 / 1.5).Within(1e-15), "w·h/H = 0.5 · 0.5 / 0.5");
+            Assert.That(e.Factor(1.0, 0.2), Is.EqualTo(0.5 + 0.5 / 2.6).Within(1e-15), "0.8 · 1 / 0.5");
+            var custom = new HeightDeceleration(height: 2, minFraction: 0.25);
+            Assert.That(custom.Factor(1.0, 0.5), Is.EqualTo(0.25 + 0.75 / 1.25).Within(1e-15));
+            Assert.That(new HeightDeceleration().Name, Is.EqualTo("height-deceleration"));
+        }
+
+        [Test]
+        public void EachPoseOfALiftIsSlowedByTheFactorAtTheHeightAboveWhereTheHoldBegan()
+        {
+            // Poses every 1/32 s, 2 cm each, from a hold begun 1.2 m up: each step is G × Factor(object − start) × 2 cm.
+            var e = new HeightDeceleration();
+            var solver = new WeightSolver(WeightModel.FromMass(2), Bare(e));
+            double g = solver.Gain, t = 0, hand = 1.2, y = 1.2;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 20; i++)
+            {
+                t += 1 / 32.0; hand += 0.02;
+                double next = solver.Step(new HandSample(hand, true, true, t), 1 / 32.0);
+                Assert.That(next - y, Is.EqualTo(g * e.Factor(y - 1.2, g) * 0.02).Within(1e-12), "pose " + i);
+                y = next;
+            }
+            Assert.That(y - 1.2, Is.LessThan(0.4 * g), "slowed");
+            for (int i = 0; i < 5; i++)
+            {
+                t += 1 / 32.0; hand -= 0.02;
+                double next = solver.Step(new HandSample(hand, true, true, t), 1 / 32.0);
+                Assert.That(next - y, Is.EqualTo(-g * 0.02).Within(1e-12), "lowering is not slowed, pose " + i);
+                y = next;
+            }
+        }
+
+        [Test]
+        public void WhileTheHandIsStillTheSpeedCapsCatchUpIsNotSlowed()
+        {
+            // 5 kg lifted fast by a user of 0.3 m/s: the cap owes part of the lift and pays it at v_cap per pose once
+            // the hand stops, high above the start or not.
+            var cap = new SpeedCap();
+            var solver = new WeightSolver(WeightModel.FromMass(5),
+                new WeightProfile("capped", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new HeightDeceleration(), cap }), 0.3);
+            double t = 0, hand = 1.0;
+            solver.BeginHold(hand, hand, t);
+            for (int i = 0; i < 10; i++) { t += 1 / 32.0; hand += 0.1; solver.Step(new HandSample(hand, true, true, t), 1 / 32.0); }
+            Assert.That(solver.State.CapDeferred, Is.GreaterThan(0.05), "owed");
+            double perPose = solver.Constants.CapSpeed / 32.0, y = solver.ObjectY;
+            t += 1 / 32.0;
+            Assert.That(solver.Step(new HandSample(hand, true, true, t), 1 / 32.0) - y, Is.EqualTo(perPose).Within(1e-12));
+        }
+
+        [Test]
         public void InvalidSettingsNameTheField()
         {
             Assert.That(() => new HeightDeceleration(height: 0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("height"));

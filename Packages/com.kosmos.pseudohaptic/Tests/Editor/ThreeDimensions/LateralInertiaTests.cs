@@ -115,6 +115,17 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void TheTimeConstantIsTauTimesOneMinusGAndNoneForTheStandardOrLighter()
+        {
+            var e = new LateralInertia();
+            Assert.That(e.TimeConstantFor(0.5), Is.EqualTo(0.15).Within(1e-15), "0.3 s × (1 − 0.5)");
+            Assert.That(e.TimeConstantFor(0.0), Is.EqualTo(0.3));
+            Assert.That(e.TimeConstantFor(1.0), Is.EqualTo(0.0), "the standard weight follows exactly");
+            Assert.That(e.TimeConstantFor(3.0), Is.EqualTo(0.0), "lighter too, never a negative lag");
+            Assert.That(new LateralInertia(timeConstant: 1).TimeConstantFor(0.25), Is.EqualTo(0.75));
+        }
+
+        [Test]
         public void InvalidSettingsNameTheField()
         {
             Assert.That(() => new LateralInertia(timeConstant: -1), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("timeConstant"));
