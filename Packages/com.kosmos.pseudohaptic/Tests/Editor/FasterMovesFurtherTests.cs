@@ -43,6 +43,8 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase(5.0, 1.5)]
         [TestCase(5.0, 0.1)]
         [TestCase(0.5, 0.8)]
+        [TestCase(2.0, -0.4)] // lowering: the same pace, the same gain
+        [TestCase(5.0, -1.5)]
         public void ASteadyLiftMovesTheObjectByGainAtItsPace(double massKg, double handSpeed)
         {
             // One pose per 90 Hz frame at a constant speed: after a second the smoothed pace is the hand's speed, so
@@ -55,7 +57,7 @@ namespace Kosmos.PseudoHaptic.Tests
             solver.BeginHold(hand, hand, t);
             for (int i = 0; i < 90; i++) { t += dt; hand += handSpeed * dt; y = solver.Step(new HandSample(hand, true, true, t), dt); }
             Assert.That(solver.Gain, Is.LessThan(1), "an object heavier than the standard");
-            double expected = effect.GainAt(solver.Gain, handSpeed, 0.5);
+            double expected = effect.GainAt(solver.Gain, Math.Abs(handSpeed), 0.5);
             for (int i = 0; i < 10; i++)
             {
                 t += dt; hand += handSpeed * dt;
