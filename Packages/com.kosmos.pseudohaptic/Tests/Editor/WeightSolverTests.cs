@@ -1,0 +1,155 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// The solver's own duties, apart from the effects: where a hold begins (with a grab offset, below the floor,
+    /// before the hand is tracked), its speed limit's carry limit, and its hand filter restarting wherever the hand
+    /// is re-anchored or the profile changes, so nothing creeps when tracking returns.
+    /// </summary>
+    public class WeightSolverTests
+    {
+        const double Pose = 1 / 32.0;
+
+        static readonly WeightProfile NoEffects = new WeightProfile("none", new WeightEffect[0]);
+
+        static WeightSolver GolfBall(WeightProfile profile = null)
+            => new WeightSolver(WeightModel.FromMass(PhysicalConstants.StandardMassKg), profile ?? NoEffects);
+
+        [Test]
+        public void AHoldBegunWithAGrabOffsetFollowsThePathOfAHoldBegunAtTheHandLessTheOffset()
+        {
+            var atHand = new WeightSolver(WeightModel.FromMass(2), NamedProfiles.Paper);
+            var offset = new WeightSolver(WeightModel.FromMass(2), NamedProfiles.Paper);
+            atHand.BeginHold(1.0, 1.0, 0);
+            offset.BeginHoldWithGrabOffset(1.0, 0.08, 0);
+            Assert.That(offset.ObjectY, Is.EqualTo(0.92).Within(1e-15));
+            Assert.That(offset.GrabOffset, Is.EqualTo(0.08), "kept exactly as given");
+            double t = 0;
+            for (int i = 1; i <= 60; i++)
+            {
+                t += Pose;
+                var pose = new HandSample(1.0 + 0.4 * Math.Min(1, i / 16.0), true, true, t);
+                Assert.That(offset.Step(pose, Pose), Is.EqualTo(atHand.Step(pose, Pose) - 0.08).Within(1e-12), "pose " + i);
+            }
+        }
+
+        [Test]
+        public void AGrabOffsetNeedsAUsableHandAndAPlausibleOffset()
+        {
+            var s = GolfBall();
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(double.NaN, 0.1)).ParamName, Is.EqualTo("handY"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(2e5, 0.1)).ParamName, Is.EqualTo("handY"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(1, 2e5)).ParamName, Is.EqualTo("grabOffset"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(1, -2e5)).ParamName, Is.EqualTo("grabOffset"));
+            Assert.That(s.IsHolding, Is.False, "nothing began");
+            s.BeginHoldWithGrabOffset(1, -0.05);
+            Assert.That(s.ObjectY, Is.EqualTo(1.05), "a negative offset: above the hand");
+        }
+
+        [Test]
+        public void AnObjectBelowTheFloorStartsOnItAndItsGrabOffsetIsWhatIsLeft()
+        {
+            var s = GolfBall(new WeightProfile("floor", new WeightEffect[] { new FloorClamp() }));
+            s.BeginHoldWithGrabOffset(0.1, 0.15);
+            Assert.That(s.ObjectY, Is.EqualTo(0.0), "raised to the floor");
+            Assert.That(s.GrabOffset, Is.EqualTo(0.1).Within(1e-15), "the hand is now 0.1 m above it");
+            s.BeginHoldWithGrabOffset(0.3, 0.15);
+            Assert.That(s.GrabOffset, Is.EqualTo(0.15), "above the floor the offset is kept exactly");
+            s.BeginHold(0.3, 0.0);
+            Assert.That(s.ObjectY, Is.EqualTo(0.0), "exactly on the floor is not below it");
+            Assert.That(s.GrabOffset, Is.EqualTo(0.3));
+        }
+
+        [Test]
+        public void AHoldBegunBeforeTheHandIsTrackedKeepsTheObjectAndFollowsFromThere()
+        {
+            var s = GolfBall();
+            s.BeginHold(double.NaN, 0.7);
+            Assert.That(s.ObjectY, Is.EqualTo(0.7));
+            Assert.That(s.HandY, Is.EqualTo(0.7), "no hand yet: the object's height stands in for it");
+            Assert.That(s.GrabOffset, Is.EqualTo(0.0));
+            double t = Pose;
+            Assert.That(s.Step(HandSample.Lost, Pose), Is.EqualTo(0.7), "still no hand");
+            t += Pose;
+            Assert.That(s.Step(new HandSample(1.2, true, true, t), Pose), Is.EqualTo(0.7), "the hand appears: anchored, no jump");
+            t += Pose;
+            Assert.That(s.Step(new HandSample(1.25, true, true, t), Pose), Is.EqualTo(0.75).Within(1e-12), "then followed from where the object is");
+        }
+
+        [Test]
+        public void ConfigurationWithoutAModelOrAProfileFailsNamingIt()
+        {
+            var s = GolfBall();
+            Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(null, NoEffects, 0.5)).ParamName, Is.EqualTo("model"));
+            Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(WeightModel.FromMass(1), null, 0.5)).ParamName, Is.EqualTo("profile"));
+        }
+
+        [TestCase(+1)]
+        [TestCase(-1)]
+        public void TheSpeedLimitCarriesAtMostItsCarryLimitInEitherDirection(int direction)
+        {
+            // 0.3 m/s, at most 5 cm carried: a 15 cm pose moves 0.3 × 25 ms now, 5 cm later, and the rest is dropped.
+            var s = GolfBall(new WeightProfile("limited", new WeightEffect[0], new SolverLimits(maxObjectSpeed: 0.3, maxCarry: 0.05)));
+            s.BeginHold(1.0, 1.0, 0);
+            double first = s.Step(new HandSample(1.0 + direction * 0.15, true, true, Pose), Pose);
+            Assert.That(first - 1.0, Is.EqualTo(direction * 0.0075).Within(1e-15));
+            Assert.That(s.State.Carry, Is.EqualTo(direction * 0.05));
+            for (int i = 0; i < 20; i++) s.Step(new HandSample(1.0 + direction * 0.15, true, true, Pose), Pose);
+            Assert.That(s.ObjectY - 1.0, Is.EqualTo(direction * 0.0575).Within(1e-12));
+        }
+
+        [Test]
+        public void TheHandFilterRestartsWhereTheHandIsReanchoredSoNothingCreeps()
+        {
+            var s = GolfBall(new WeightProfile("filtered", new WeightEffect[0], null, new ExponentialSmoothing(0.1)));
+            double t = 0;
+            s.BeginHold(1.0, 1.0, t);
+            for (int i = 0; i < 10; i++) { t += Pose; s.Step(HandSample.Lost, Pose); }   // lost for 0.31 s
+            double y = s.ObjectY;
+            for (int i = 0; i < 30; i++)
+            {
+                t += Pose;
+                Assert.That(s.Step(new HandSample(1.3, true, true, t), Pose), Is.EqualTo(y), "back 30 cm higher, still: pose " + i);
+            }
+        }
+
+        [Test]
+        public void AFilterSwitchedOnMidHoldStartsAtTheHand()
+        {
+            var s = GolfBall();
+            double t = 0;
+            s.BeginHold(1.0, 1.0, t);
+            for (int i = 0; i < 5; i++) { t += Pose; s.Step(new HandSample(1.2, true, true, t), Pose); }
+            double y = s.ObjectY;
+            s.Configure(s.Model, new WeightProfile("filtered", new WeightEffect[0], null, new ExponentialSmoothing(0.1)), 0.5);
+            for (int i = 0; i < 30; i++)
+            {
+                t += Pose;
+                Assert.That(s.Step(new HandSample(1.2, true, true, t), Pose), Is.EqualTo(y).Within(1e-12), "a still hand, pose " + i);
+            }
+        }
+
+        sealed class BrokenFilter : IHandFilter
+        {
+            public int Resets;
+            public string Name => "broken";
+            public IHandFilter Create() => this;
+            public void Reset(double handY) => Resets++;
+            public double Filter(double poseY, bool isNewPose, double poseInterval, double dt) => double.NaN;
+        }
+
+        [Test]
+        public void AFilterThatReturnsNonFiniteIsIgnoredForThatFrameAndReset()
+        {
+            var broken = new BrokenFilter();
+            var s = GolfBall(new WeightProfile("broken", new WeightEffect[0], null, broken));
+            s.BeginHold(1.0, 1.0, 0);
+            int resets = broken.Resets;
+            double y = s.Step(new HandSample(1.02, true, true, Pose), Pose);
+            Assert.That(y, Is.EqualTo(1.02).Within(1e-12), "the raw hand is followed");
+            Assert.That(broken.Resets, Is.EqualTo(resets + 1), "and the filter reset");
+        }
+    }
+}
