@@ -1,0 +1,105 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
+{
+    /// <summary>
+    /// The 3D solver's x/z, pose by pose (1/32 s poses, so every sum is exact): after a long loss the tracking-loss hold
+    /// waits SettleTime before x/z follow again; a sideways step no hand can make re-anchors (the object stays); with
+    /// the offset correction, what re-anchoring left sideways is pulled back at its pull speed, ramping over five band
+    /// widths, each frame counting at most the longest frame. As y does in the 1D solver.
+    /// </summary>
+    public class HorizontalTrackingTests
+    {
+        const double Pose = 1 / 32.0;
+
+        static HandPose At(double x, double y, double z, double t) => new HandPose(x, y, z, true, true, t);
+
+        // Paper without the correction: x/z follow the hand 1:1 (no lateral inertia), the hold settles after losses.
+        static WeightSolver3D Solver(WeightProfile profile = null, double massKg = 1)
+            => new WeightSolver3D(WeightModel.FromMass(massKg), profile ?? NamedProfiles.PaperExperiment);
+
+        [Test]
+        public void AfterALongLossXAndZWaitForSteadyTrackingThenFollowFromWhereTheObjectIs()
+        {
+            var s = Solver();
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            for (int i = 0; i < 4; i++) { t += Pose; s.Step(At(0.01 * (i + 1), 1, 0, t), Pose); }
+            Assert.That(s.ObjectX, Is.EqualTo(0.04).Within(1e-12), "followed 1:1 while tracked");
+            for (int i = 0; i < 10; i++) { t += Pose; s.Step(HandPose.Lost, Pose); }            // 0.31 s lost
+            double x = 0.34;
+            for (int i = 0; i < 4; i++)
+            {
+                t += Pose; x += 0.01;
+                s.Step(At(x, 1, -0.2, t), Pose);
+                Assert.That(s.ObjectX, Is.EqualTo(0.04).Within(1e-12), "settling (0.1 s = 4 poses of 1/32 s), pose " + i);
+                Assert.That(s.ObjectZ, Is.EqualTo(0.0).Within(1e-12));
+            }
+            t += Pose; x += 0.01;
+            s.Step(At(x, 1, -0.21, t), Pose);
+            Assert.That(s.ObjectX, Is.EqualTo(0.05).Within(1e-12), "then the hand's next step, from where the object was");
+            Assert.That(s.ObjectZ, Is.EqualTo(-0.01).Within(1e-12));
+        }
+
+        [Test]
+        public void AfterAShortLossXAndZDoNotJumpTheySettleAndFollowFromWhereTheObjectIs()
+        {
+            // Unlike y (caught up through the speed limit), x/z have no speed limit to spread a catch-up over frames, so
+            // with the tracking-loss hold they settle after any loss; what the hand moved sideways during the blink is
+            // left as an offset (stability.md, known limits).
+            var s = Solver();
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            t += Pose; s.Step(At(0.01, 1, 0, t), Pose);
+            for (int i = 0; i < 6; i++) { t += Pose; s.Step(HandPose.Lost, Pose); }              // 0.19 s lost
+            for (int i = 0; i < 4; i++)
+            {
+                t += Pose; s.Step(At(0.41, 1, 0.05, t), Pose);
+                Assert.That(s.ObjectX, Is.EqualTo(0.01).Within(1e-12), "no jump: settling, pose " + i);
+            }
+            t += Pose; s.Step(At(0.42, 1, 0.05, t), Pose);
+            Assert.That(s.ObjectX, Is.EqualTo(0.02).Within(1e-12), "then the hand's next step");
+            Assert.That(s.ObjectZ, Is.EqualTo(0.0).Within(1e-12));
+        }
+
+        [TestCase(0.15, 0.10, false)] // 0.18 m in a 1/32 s pose: under 6 m/s × 1/30 s = 0.2 m, followed
+        [TestCase(0.15, 0.15, true)]  // 0.21 m: no hand moves so fast, re-anchored
+        public void ASidewaysStepNoHandCanMakeReanchors(double dx, double dz, bool reanchors)
+        {
+            var s = Solver();
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            t += Pose; s.Step(At(0.01, 1, 0, t), Pose);
+            t += Pose; s.Step(At(0.01 + dx, 1, dz, t), Pose);
+            Assert.That(s.ObjectX, Is.EqualTo(reanchors ? 0.01 : 0.01 + dx).Within(1e-12));
+            Assert.That(s.ObjectZ, Is.EqualTo(reanchors ? 0 : dz).Within(1e-12));
+            t += Pose; s.Step(At(0.02 + dx, 1, dz, t), Pose);
+            Assert.That(s.ObjectX, Is.EqualTo((reanchors ? 0.02 : 0.02 + dx)).Within(1e-12), "then followed");
+        }
+
+        [Test]
+        public void WithTheCorrectionWhatReanchoringLeftSidewaysIsPulledBack()
+        {
+            var s = Solver(NamedProfiles.Paper);
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            t += Pose; s.Step(At(0, 1, 0, t), Pose);
+            for (int i = 0; i < 10; i++) { t += Pose; s.Step(HandPose.Lost, Pose); }
+            for (int i = 0; i < 4; i++) { t += Pose; s.Step(At(0.3, 1, 0.4, t), Pose); }         // back 0.5 m away: settles
+            double x = s.ObjectX, z = s.ObjectZ;
+            Assert.That(Math.Sqrt(x * x + z * z), Is.LessThan(0.02), "re-anchored: the object stayed (the pull began)");
+            for (int i = 0; i < 80; i++)
+            {
+                t += Pose;
+                s.Step(At(0.3, 1, 0.4, t), Pose);
+                double r = Math.Sqrt((0.3 - x) * (0.3 - x) + (0.4 - z) * (0.4 - z));
+                double pull = Math.Min(r, 0.5 * Math.Min(1, r / 0.1) * 0.025); // 1/32 s counts as 25 ms
+                Assert.That(s.ObjectX, Is.EqualTo(x + (0.3 - x) / r * pull).Within(1e-12), "pose " + i);
+                Assert.That(s.ObjectZ, Is.EqualTo(z + (0.4 - z) / r * pull).Within(1e-12), "pose " + i);
+                x = s.ObjectX; z = s.ObjectZ;
+            }
+            Assert.That(Math.Sqrt((0.3 - x) * (0.3 - x) + (0.4 - z) * (0.4 - z)), Is.LessThan(0.01), "drawn back to the hand");
+        }
+    }
+}
