@@ -1,0 +1,102 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
+{
+    /// <summary>
+    /// The 3D solver's hold bookkeeping: how many hands are usable, followed and holding; letting go and gripping
+    /// again (each hand carries its share only while both hold); ending a hold; a hold begun with a grab offset; and
+    /// configuration that fails loudly.
+    /// </summary>
+    public class Solver3DHoldTests
+    {
+        const double Pose = 1 / 32.0;
+
+        static HandPose At(double x, double y, double z, double t) => new HandPose(x, y, z, true, true, t);
+
+        static WeightSolver3D TwoHanded(double massKg = 2) => new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz);
+
+        [Test]
+        public void HandsAreCountedAsUsableFollowedAndHoldingAndEachCarriesItsShareOnlyWhileBothHold()
+        {
+            var s = TwoHanded();
+            double t = 0;
+            s.BeginHold(At(-0.1, 1, 0, t), At(0.1, 1, 0, t), 0, 1, 0);
+            Assert.That(s.UsableHands, Is.EqualTo(2));
+            Assert.That(s.FollowedHands, Is.EqualTo(2));
+            Assert.That(s.HoldingHands, Is.EqualTo(2));
+            Assert.That(s.PerHandMassKg, Is.EqualTo(1.0), "each hand carries half of 2 kg");
+
+            s.SetGrip(2, false);
+            Assert.That(s.HoldingHands, Is.EqualTo(1), "the second hand let go");
+            Assert.That(s.PerHandMassKg, Is.EqualTo(2.0), "the first carries it all");
+            t += Pose; s.Step(At(-0.1, 1, 0, t), At(0.1, 1, 0, t), Pose);
+            Assert.That(s.UsableHands, Is.EqualTo(2), "still tracked");
+            Assert.That(s.FollowedHands, Is.EqualTo(1), "but not followed");
+
+            s.SetGrip(2, true);
+            for (int i = 0; i < 8; i++) { t += Pose; s.Step(At(-0.1, 1, 0, t), At(0.1, 1, 0, t), Pose); }
+            Assert.That(s.HoldingHands, Is.EqualTo(2), "gripping again, it rejoins once steady");
+            Assert.That(s.PerHandMassKg, Is.EqualTo(1.0));
+
+            s.SetGrip(1, false);
+            Assert.That(s.HoldingHands, Is.EqualTo(1), "the first hand let go");
+            Assert.That(s.PerHandMassKg, Is.EqualTo(2.0));
+            t += Pose; s.Step(At(-0.1, 1, 0, t), HandPose.Lost, Pose);
+            Assert.That(s.UsableHands, Is.EqualTo(1));
+            Assert.That(s.FollowedHands, Is.EqualTo(0), "the one tracked hand has let go");
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.SetGrip(3, true)).ParamName, Is.EqualTo("hand"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.SetGrip(0, false)).ParamName, Is.EqualTo("hand"));
+        }
+
+        [Test]
+        public void AnEndedHoldKeepsTheObjectWhereItIs()
+        {
+            var s = TwoHanded();
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            for (int i = 0; i < 5; i++) { t += Pose; s.Step(At(0.02 * (i + 1), 1 + 0.02 * (i + 1), 0, t), Pose); }
+            double x = s.ObjectX, y = s.ObjectY, z = s.ObjectZ;
+            s.EndHold();
+            Assert.That(s.IsHolding, Is.False);
+            Assert.That(s.Vertical.IsHolding, Is.False);
+            t += Pose; s.Step(At(0.5, 1.5, 0.5, t), Pose);
+            Assert.That(new[] { s.ObjectX, s.ObjectY, s.ObjectZ }, Is.EqualTo(new[] { x, y, z }));
+        }
+
+        [Test]
+        public void AGrabOffsetPlacesTheObjectBelowTheFollowedPointAndNeedsAFollowableHand()
+        {
+            var s = TwoHanded();
+            s.BeginHoldWithGrabOffset(At(-0.1, 1, 0, 0), At(0.1, 1.02, 0, 0), 0.05, 0.06, -0.02);
+            Assert.That(s.ObjectY, Is.EqualTo(1.01 - 0.06).Within(1e-12), "below the midpoint of the hands");
+            Assert.That(s.ObjectX, Is.EqualTo(0.05));
+            Assert.That(s.ObjectZ, Is.EqualTo(-0.02));
+            s.BeginHoldWithGrabOffset(HandPose.Lost, At(0.1, 1.0, 0, 0), 0, 0.1, 0);
+            Assert.That(s.ObjectY, Is.EqualTo(0.9).Within(1e-12), "the second hand alone will do");
+            var ex = Assert.Throws<ArgumentException>(() => s.BeginHoldWithGrabOffset(HandPose.Lost, HandPose.Lost, 0, 0.1, 0));
+            Assert.That(ex.ParamName, Is.EqualTo("first"));
+            var lowConfidence = new HandPose(0, 1, 0, true, false, 0);
+            Assert.That(() => s.BeginHoldWithGrabOffset(lowConfidence, HandPose.Lost, 0, 0.1, 0), Throws.ArgumentException,
+                "a low-confidence hand is not followed under the tracking-loss hold");
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(At(0, 1, 0, 0), HandPose.Lost, 0, 2e5, 0)).ParamName,
+                Is.EqualTo("grabOffsetY"));
+            var oneHanded = new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Paper);
+            Assert.That(() => oneHanded.BeginHoldWithGrabOffset(HandPose.Lost, At(0.1, 1.0, 0, 0), 0, 0.1, 0), Throws.ArgumentException,
+                "without two hands the second is not followed");
+        }
+
+        [Test]
+        public void ConfigurationFailsNamingWhatIsMissingAndAMassChangeTakesEffectMidHold()
+        {
+            var s = new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Paper);
+            Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(null, NamedProfiles.Paper, 0.5)).ParamName, Is.EqualTo("model"));
+            Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(WeightModel.FromMass(1), null, 0.5)).ParamName, Is.EqualTo("profile"));
+            Assert.That(new WeightSolver3D(WeightModel.FromMass(1)).Profile, Is.SameAs(NamedProfiles.Paper), "paper by default");
+            s.BeginHold(At(0, 1, 0, 0), 0, 1, 0);
+            s.Configure(WeightModel.FromMass(3), NamedProfiles.Paper, 0.5);
+            Assert.That(s.PerHandMassKg, Is.EqualTo(3.0));
+            Assert.That(s.Vertical.Model.MassKg, Is.EqualTo(3.0), "the y solver carries the new mass now");
+        }
+    }
+}
