@@ -85,5 +85,29 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Run3D.Of(kept, new Headset3D().Render(swing, null, 2));
             Assert.That(kept.BrokeAway, Is.False, "the lateral lag never exceeds 0.10 m");
         }
+
+        [TestCase(0)] // x
+        [TestCase(2)] // z
+        public void TheDistanceIsMeasuredSidewaysTooFromWhereTheHandGrabbed(int axis)
+        {
+            // 10 kg on xyz (lateral inertia), grabbed 8 cm beside and 6 cm behind the hand: at rest that grab offset is
+            // no distance. Carried 0.6 m sideways in 0.3 s, the object trails the hand by up to 0.1 m: past 5 cm for
+            // more than the 0.1 s dwell, the hold ends; with 0.12 m to go it does not.
+            foreach (double distance in new[] { 0.05, 0.12 })
+            {
+                var solver = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Xyz.With(new BreakAway(distance)));
+                double t = 0;
+                solver.BeginHold(new HandPose(0, 1, 0, true, true, t), 0.08, 1, -0.06);
+                for (int i = 0; i < 40; i++)
+                {
+                    t += 1 / 32.0;
+                    double side = 0.6 * Math.Min(1, i / 10.0);
+                    solver.Step(new HandPose(axis == 0 ? side : 0, 1, axis == 2 ? side : 0, true, true, t), 1 / 32.0);
+                    if (i < 2) Assert.That(solver.IsHolding, Is.True, "the grab offset itself is no distance, pose " + i);
+                }
+                Assert.That(solver.BrokeAway, Is.EqualTo(distance < 0.1), "break-away at " + distance + " m");
+                Assert.That(solver.IsHolding, Is.EqualTo(distance > 0.1));
+            }
+        }
     }
 }
