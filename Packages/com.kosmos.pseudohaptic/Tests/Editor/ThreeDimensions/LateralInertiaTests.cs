@@ -115,6 +115,36 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void TheLagIsAFirstOrderFilterPerFrameBoundedAndDecayingOverAtMostATenthOfASecondPerFrame()
+        {
+            // Each frame the lateral lag e (hand − object, sideways) becomes (e + the hand's step)·τ/(τ + dt), its length
+            // at most MaxOffset (0.1 m), dt counting at most 0.1 s (a hitch does not erase it at once).
+            var s = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz);
+            double tau = new LateralInertia().TimeConstantFor(s.Vertical.Gain), t = 0, hx = 0, hz = 0, ex = 0, ez = 0;
+            Assert.That(tau, Is.GreaterThan(0.05), "2 kg trails");
+            s.BeginHold(new HandPose(0, 1, 0, true, true, t), 0, 1, 0);
+            double[] stepX = { 0.02, 0.02, 0.02, 0.15, 0.15, 0.15, 0, 0, 0, 0 }, stepZ = { 0.01, 0.01, 0.01, -0.05, 0, 0, 0, 0, 0, 0 };
+            for (int i = 0; i < stepX.Length; i++)
+            {
+                t += 1 / 32.0; hx += stepX[i]; hz += stepZ[i];
+                s.Step(new HandPose(hx, 1, hz, true, true, t), 1 / 32.0);
+                double k = tau / (tau + 1 / 32.0);
+                ex = (ex + stepX[i]) * k; ez = (ez + stepZ[i]) * k;
+                double n = Math.Sqrt(ex * ex + ez * ez);
+                if (n > 0.1) { ex *= 0.1 / n; ez *= 0.1 / n; }
+                Assert.That(s.LagX, Is.EqualTo(ex).Within(1e-12), "pose " + i);
+                Assert.That(s.LagZ, Is.EqualTo(ez).Within(1e-12), "pose " + i);
+                Assert.That(s.ObjectX, Is.EqualTo(hx - ex).Within(1e-12), "pose " + i);
+                Assert.That(s.ObjectZ, Is.EqualTo(hz - ez).Within(1e-12), "pose " + i);
+            }
+            double x = s.ObjectX, lag = s.LagX;
+            t += 0.5;
+            s.Step(new HandPose(hx, 1, hz, true, true, t), 0.5); // a half-second hitch
+            Assert.That(s.LagX, Is.EqualTo(lag * tau / (tau + 0.1)).Within(1e-12), "decayed as over 0.1 s");
+            Assert.That(s.ObjectX, Is.EqualTo(x + lag - s.LagX).Within(1e-12), "the object closes that much of the lag");
+        }
+
+        [Test]
         public void TheTimeConstantIsTauTimesOneMinusGAndNoneForTheStandardOrLighter()
         {
             var e = new LateralInertia();
