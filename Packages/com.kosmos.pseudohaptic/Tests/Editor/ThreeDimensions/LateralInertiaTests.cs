@@ -137,11 +137,14 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 Assert.That(s.ObjectX, Is.EqualTo(hx - ex).Within(1e-12), "pose " + i);
                 Assert.That(s.ObjectZ, Is.EqualTo(hz - ez).Within(1e-12), "pose " + i);
             }
-            double x = s.ObjectX, lag = s.LagX;
+            double x = s.ObjectX, z = s.ObjectZ, lag = s.LagX, lagZ = s.LagZ;
+            Assert.That(lagZ, Is.Not.EqualTo(0), "a lag in z too");
             t += 0.5;
             s.Step(new HandPose(hx, 1, hz, true, true, t), 0.5); // a half-second hitch
             Assert.That(s.LagX, Is.EqualTo(lag * tau / (tau + 0.1)).Within(1e-12), "decayed as over 0.1 s");
+            Assert.That(s.LagZ, Is.EqualTo(lagZ * tau / (tau + 0.1)).Within(1e-12));
             Assert.That(s.ObjectX, Is.EqualTo(x + lag - s.LagX).Within(1e-12), "the object closes that much of the lag");
+            Assert.That(s.ObjectZ, Is.EqualTo(z + lagZ - s.LagZ).Within(1e-12));
         }
 
         [Test]
