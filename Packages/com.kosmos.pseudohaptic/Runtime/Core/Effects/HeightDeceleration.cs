@@ -41,8 +41,8 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (!(frame.ObjectDelta > 0) || !(frame.HandDelta > 0) || !(constants.Gain < 1)) return;
-            frame.ObjectDelta *= Factor(frame.ObjectY - state.StartY, constants.Gain);
+            // Only motion up is slowed (Factor is 1 at or below the start height, and for the standard weight and lighter).
+            frame.ObjectDelta += Math.Max(0, frame.ObjectDelta) * (Factor(frame.ObjectY - state.StartY, constants.Gain) - 1);
         }
     }
 }
