@@ -96,6 +96,25 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ReanchoringForgetsWhatTheGuardAdded()
+        {
+            // Lowered (the guard adds 4.9 mm), then tracking lost for 0.31 s: the hand comes back elsewhere and the hold
+            // re-anchors; rising from there moves the object by the gain alone, nothing is given back.
+            var s = Solver(5);
+            double g = s.Gain;
+            var hand = new Hand();
+            s.BeginHold(hand.Y, hand.Y, 0);
+            hand.Move(s, -0.01);
+            Assert.That(s.State.GuardDebt, Is.LessThan(-0.004));
+            for (int i = 0; i < 10; i++) { hand.T += Pose; s.Step(HandSample.Lost, Pose); }
+            hand.Y = 1.2;
+            hand.Move(s, 0);
+            Assert.That(s.State.GuardDebt, Is.EqualTo(0), "forgotten");
+            double y = s.ObjectY;
+            Assert.That(hand.Move(s, 0.01) - y, Is.EqualTo(0.01 * g).Within(1e-12));
+        }
+
+        [Test]
         public void LoweringWithinTheOffsetOrAStillHandLeavesTheGainAlone()
         {
             var s = Solver(5);
