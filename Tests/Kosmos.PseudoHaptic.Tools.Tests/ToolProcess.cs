@@ -15,9 +15,25 @@ public static class ToolProcess
 
     static string Dll => Path.Combine(AppContext.BaseDirectory, "pseudohaptic.dll");
 
+    // A test run started in the background (`cmd &` in a script) inherits SIGINT ignored, and by POSIX convention the
+    // tool then keeps ignoring it, so the SIGINT tests would hang. Where coreutils' env can, the tool is started with
+    // SIGINT back at its default, as from a terminal.
+    static readonly bool ResetSigint = OperatingSystem.IsLinux() && CanResetSigint();
+
+    static bool CanResetSigint()
+    {
+        try
+        {
+            using var p = Process.Start(new ProcessStartInfo("env") { ArgumentList = { "--default-signal=INT", "true" }, UseShellExecute = false, RedirectStandardError = true })!;
+            p.WaitForExit(10_000);
+            return p.HasExited && p.ExitCode == 0;
+        }
+        catch (System.ComponentModel.Win32Exception) { return false; }
+    }
+
     public static Process Start(string workingDirectory, IEnumerable<string> args, string? peakFile = null, bool redirectStdin = false)
     {
-        var info = new ProcessStartInfo("dotnet")
+        var info = new ProcessStartInfo(ResetSigint ? "env" : "dotnet")
         {
             WorkingDirectory = workingDirectory,
             RedirectStandardOutput = true,
@@ -25,6 +41,7 @@ public static class ToolProcess
             RedirectStandardInput = redirectStdin,
             UseShellExecute = false,
         };
+        if (ResetSigint) { info.ArgumentList.Add("--default-signal=INT"); info.ArgumentList.Add("dotnet"); }
         info.ArgumentList.Add(Dll);
         foreach (var a in args) info.ArgumentList.Add(a);
         info.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
