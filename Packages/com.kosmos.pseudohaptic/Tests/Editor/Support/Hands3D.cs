@@ -84,6 +84,9 @@ namespace Kosmos.PseudoHaptic.Tests
     /// <summary>What a 3D hold produced, frame by frame.</summary>
     internal sealed class Run3D
     {
+        /// <summary>A tracked, high-confidence pose at (x, y, z) with pose time t.</summary>
+        public static HandPose At(double x, double y, double z, double t) => new HandPose(x, y, z, true, true, t);
+
         public double[] X, Y, Z, FollowedX, FollowedY, FollowedZ;
         public bool[] Holding;
 

@@ -1,5 +1,6 @@
 using System;
 using NUnit.Framework;
+using static Kosmos.PseudoHaptic.Tests.Run3D;
 
 namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
 {
@@ -12,8 +13,6 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
     public class HorizontalTrackingTests
     {
         const double Pose = 1 / 32.0;
-
-        static HandPose At(double x, double y, double z, double t) => new HandPose(x, y, z, true, true, t);
 
         // Paper without the correction: x/z follow the hand 1:1 (no lateral inertia), the hold settles after losses.
         static WeightSolver3D Solver(WeightProfile profile = null, double massKg = 1)

@@ -1,5 +1,6 @@
 using System;
 using NUnit.Framework;
+using static Kosmos.PseudoHaptic.Tests.Run3D;
 
 namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
 {
@@ -11,8 +12,6 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
     public class Solver3DHoldTests
     {
         const double Pose = 1 / 32.0;
-
-        static HandPose At(double x, double y, double z, double t) => new HandPose(x, y, z, true, true, t);
 
         static WeightSolver3D TwoHanded(double massKg = 2) => new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz);
 
