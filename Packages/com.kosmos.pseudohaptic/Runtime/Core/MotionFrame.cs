@@ -41,6 +41,10 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The time the displacement took, s (one pose interval, or the gap it bridges); 0 when none.</summary>
         public double MotionInterval;
 
+        /// <summary>A hand filter smooths the followed hand: it spreads a pose's motion over the frames after it, so
+        /// the hand may move on frames without a new pose, and a pose's frame carries only part of its motion.</summary>
+        public bool HandFiltered;
+
         /// <summary>The object's height before this frame, m.</summary>
         public double ObjectY;
 

@@ -189,6 +189,7 @@ namespace Kosmos.PseudoHaptic
             {
                 // Effects see the filtered hand: its position, displacement and direction.
                 f.HandBefore = _state.HandY;
+                f.HandFiltered = true;
                 if (f.Usable && _state.Estimator.HasPose)
                 {
                     double filtered = _filter.Filter(f.HandAfter, f.MotionInterval > 0, f.MotionInterval, dt);

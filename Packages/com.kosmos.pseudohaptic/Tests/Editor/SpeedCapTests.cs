@@ -84,6 +84,64 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.Step(new HandSample(hand, true, true, t), Pose) - y, Is.EqualTo(-perPose).Within(1e-12), "lowered at the cap too");
         }
 
+        [TestCase(0.02)] // 0.64 m/s: the filtered hand outruns v_cap (0.78 m/s) only at its peaks
+        [TestCase(0.06)] // 1.92 m/s: capped throughout, the rest owed
+        public void WithAHandFilterTheObjectNeverOutrunsTheCapOverAnyFrame(double perPoseRise)
+        {
+            // A filter spreads each pose's motion over the frames after it (90 Hz frames, 30 Hz poses): the object
+            // moves on frames without a new pose too, so the cap judges every frame over its own time. Judged over
+            // the pose's interval on the pose's frame and again on the frames between, it would move up to 5/3 of v_cap.
+            const double frame = 1 / 96.0;
+            var cap = new SpeedCap();
+            var s = new WeightSolver(WeightModel.FromMass(2),
+                new WeightProfile("test", new WeightEffect[] { cap }).WithHandFilter(new ExponentialSmoothing(0.03)), 0.5);
+            double v = s.Constants.CapSpeed, t = 0, hand = 1.0, y = 1.0, owed = 0, moved = 0;
+            s.BeginHold(hand, hand, t);
+            int framesBetweenPosesThatMoved = 0;
+            for (int i = 0; i < 96; i++)
+            {
+                bool pose = i % 3 == 0 && i < 24; // lift for a quarter of a second, then hold still
+                if (pose) { t += Pose; hand += perPoseRise; }
+                double before = s.State.HandY, next = s.Step(new HandSample(hand, true, true, t), frame);
+                double wanted = s.State.HandY - before + owed; // the filtered hand's motion (gain 1) plus what was owed
+                double expected = Math.Min(wanted, v * frame);
+                Assert.That(next - y, Is.EqualTo(expected).Within(1e-12), "frame " + i + ": the filtered hand's motion, at most v_cap over the frame");
+                owed = wanted - expected;
+                if (!pose && next != y) framesBetweenPosesThatMoved++;
+                moved += next - y;
+                y = next;
+            }
+            Assert.That(framesBetweenPosesThatMoved, Is.GreaterThan(40), "the filter moves the object between poses");
+            Assert.That(moved, Is.LessThanOrEqualTo(v * 96 * frame + 1e-12), "over the second, no faster than v_cap");
+            Assert.That(s.State.CapDeferred, Is.EqualTo(owed).Within(1e-12), "the rest is owed");
+        }
+
+        /// <summary>A scene's own hand-motion effect that moves the followed hand up on every frame, new pose or not.</summary>
+        sealed class Drift : WeightEffect
+        {
+            public override string Name => "drift";
+            public override EffectStage Stage => EffectStage.HandMotion;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => frame.HandDelta += 1.0 * frame.Dt;
+        }
+
+        [Test]
+        public void MotionAnEffectMakesBetweenPosesIsJudgedOverTheFrame()
+        {
+            const double frame = 1 / 90.0;
+            var s = new WeightSolver(WeightModel.FromMass(2), new WeightProfile("test", new WeightEffect[] { new Drift(), new SpeedCap() }), 0.5);
+            double v = s.Constants.CapSpeed;
+            Assert.That(v, Is.InRange(0.5, 0.9), "the drift's 1 m/s outruns the cap");
+            s.BeginHold(1.0, 1.0, 0);
+            double y = 1.0;
+            for (int i = 0; i < 9; i++)
+            {
+                double next = s.Step(new HandSample(1.0, true, true, 0), frame); // the same pose: no new one
+                Assert.That(next - y, Is.EqualTo(v * frame).Within(1e-12), "frame " + i);
+                y = next;
+            }
+            Assert.That(s.State.CapDeferred, Is.EqualTo(9 * (1.0 - v) * frame).Within(1e-12), "the rest is owed");
+        }
+
         [Test]
         public void TheStandardWeightAndLighterAreNeverCapped()
         {

@@ -14,6 +14,7 @@ namespace Kosmos.PseudoHaptic
     /// the other direction cancels what is owed; the lowering guard, the offset correction and the floor settle it
     /// when they change the motion. The cap is judged per pose, over the pose's own interval: the object's speed
     /// over each pose never exceeds v_cap, and every frame clock showing the same poses gives the same motion.
+    /// With a hand filter, which moves the hand between poses, each frame is judged over its own time.
     /// </summary>
     public sealed class SpeedCap : WeightEffect
     {
@@ -37,9 +38,12 @@ namespace Kosmos.PseudoHaptic
             double cap = constants.CapSpeed;
             if (!(cap < double.PositiveInfinity)) return;
             // Judged per pose, over the pose's own interval, so every frame clock that shows the same poses makes the
-            // same decisions; a frame without a new pose moves nothing and pays nothing (a hand filter that moves the
-            // followed hand between poses is judged over the frame).
-            double window = frame.MotionInterval > 0 ? frame.MotionInterval : (frame.ObjectDelta != 0 ? frame.Dt : 0);
+            // same decisions; a frame without a new pose moves nothing and pays nothing. A hand filter spreads each
+            // pose's motion over the frames after it: then every frame is judged over its own time (over the pose's
+            // interval on its frame and again on the frames after, the object would outrun the cap). Motion an effect
+            // makes on a frame without a new pose is judged over the frame.
+            double window = frame.HandFiltered ? frame.Dt
+                : (frame.MotionInterval > 0 ? frame.MotionInterval : (frame.ObjectDelta != 0 ? frame.Dt : 0));
             if (!(window > 0)) return;
             double allowed = cap * window;
             double wanted = frame.ObjectDelta + state.CapDeferred; // a hand that turns back cancels what it is owed
