@@ -58,6 +58,21 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheGiveBackWindowCountsFromWhenTheGuardActedNotFromTheGrab()
+        {
+            // Held still for half a second, then lowered 1 cm (the guard adds 4.9 mm) and raised 1 cm a pose later:
+            // what the guard added comes back, however long the hold had lasted.
+            var s = Solver(5);
+            var hand = new Hand();
+            s.BeginHold(hand.Y, hand.Y, 0);
+            for (int i = 0; i < 16; i++) hand.Move(s, 0);
+            hand.Move(s, -0.01);
+            double y = s.ObjectY;
+            Assert.That(hand.Move(s, 0.01) - y, Is.EqualTo(0.005).Within(1e-12), "back to where the gain alone would have put it");
+            Assert.That(s.State.GuardDebt, Is.EqualTo(0).Within(1e-15));
+        }
+
+        [Test]
         public void ALightObjectIsHeldBackWhileLoweringAndCatchesUpAsTheHandRises()
         {
             var s = Solver(0.01);

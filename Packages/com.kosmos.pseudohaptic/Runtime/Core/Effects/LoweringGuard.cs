@@ -34,27 +34,22 @@ namespace Kosmos.PseudoHaptic
             if (frame.HandDelta > 0)
             {
                 // The hand turned back up: return what the guard added, moving the object at most as the hand moves.
-                double debt = state.GuardDebt;
+                // The give-back lies between 0 and room: it moves the object toward the hand's own motion, never past it.
                 double room = frame.HandDelta - frame.ObjectDelta; // > 0 for a heavy object, < 0 for a light one
-                double back = -debt;
-                if (room >= 0) back = back < 0 ? 0 : (back > room ? room : back);
-                else back = back > 0 ? 0 : (back < room ? room : back);
+                double back = Math.Min(Math.Max(-state.GuardDebt, Math.Min(room, 0)), Math.Max(room, 0));
                 frame.ObjectDelta += back;
                 state.GuardDebt += back;
                 return;
             }
             if (frame.HandDelta == 0) return;
-            double limit = Math.Abs(frame.OffsetBefore);
-            if (limit < Slack) limit = Slack;
+            double limit = Math.Max(Math.Abs(frame.OffsetBefore), Slack);
             double centre = frame.HandAfter - frame.ObjectY; // the delta that would leave no offset
-            double lo = centre - limit, hi = centre + limit;
             double total = frame.TotalDelta;
-            if (total < lo) frame.TotalDelta = lo;
-            else if (total > hi) frame.TotalDelta = hi;
-            else return;
-            double added = frame.TotalDelta - total;
+            double bounded = Math.Min(Math.Max(total, centre - limit), centre + limit);
+            double added = bounded - total;
+            frame.TotalDelta = bounded;
             state.GuardDebt += added;
-            state.GuardAge = 0;
+            if (added != 0) state.GuardAge = 0; // the give-back window counts from when the guard last acted
             SpeedCap.Settle(ref state, added);
         }
 
