@@ -97,5 +97,31 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(s.PerHandMassKg, Is.EqualTo(3.0));
             Assert.That(s.Vertical.Model.MassKg, Is.EqualTo(3.0), "the y solver carries the new mass now");
         }
+
+        [Test]
+        public void TheYSolverMeasuresSpeedAgainstTheLaterPoseTimeOfTheFollowedHands()
+        {
+            // Both hands 2 cm up: hand 1's pose is 1/32 s newer than the last, hand 2's only 1/64 s (it arrived late).
+            // The followed point is as new as its newest pose: 0.02 m over 1/32 s is 0.64 m/s.
+            var s = TwoHanded();
+            s.BeginHold(At(-0.1, 1, 0, 0), At(0.1, 1, 0, 0), 0, 1, 0);
+            s.Step(At(-0.1, 1.02, 0, Pose), At(0.1, 1.02, 0, Pose / 2), Pose);
+            Assert.That(s.Vertical.State.Estimator.Speed, Is.EqualTo(0.64).Within(1e-12));
+            s.Step(At(-0.1, 1.04, 0, 1.5 * Pose), At(0.1, 1.04, 0, 2 * Pose), Pose);
+            Assert.That(s.Vertical.State.Estimator.Speed, Is.EqualTo(0.02 / Pose).Within(1e-12), "the newer is hand 2's now");
+
+            // A hand that is tracked but not followed (it let go) lends the followed point nothing, not even its time.
+            s.SetGrip(2, false);
+            s.Step(At(-0.1, 1.06, 0, 2.5 * Pose), At(0.1, 1.06, 0, 9 * Pose), Pose);
+            Assert.That(s.FollowedHands, Is.EqualTo(1));
+            Assert.That(s.Vertical.State.Estimator.Speed, Is.EqualTo(0.02 / (0.5 * Pose)).Within(1e-12), "hand 1's time alone");
+
+            // The same with hand 2 alone: its time, measured over a quarter pose (without it, over the frame's 1/32 s).
+            s = TwoHanded();
+            s.BeginHold(At(-0.1, 1, 0, 0), At(0.1, 1, 0, 0), 0, 1, 0);
+            s.SetGrip(1, false);
+            s.Step(At(-0.1, 1.02, 0, 9 * Pose), At(0.1, 1.02, 0, Pose / 4), Pose);
+            Assert.That(s.Vertical.State.Estimator.Speed, Is.EqualTo(0.02 / (0.25 * Pose)).Within(1e-12), "hand 2's time alone");
+        }
     }
 }
