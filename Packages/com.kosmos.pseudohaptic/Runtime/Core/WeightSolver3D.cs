@@ -304,12 +304,11 @@ namespace Kosmos.PseudoHaptic
             _in2 = n2;
         }
 
+        /// <summary>Steady for the settle time yet? The wait restarts whenever the hand cannot be followed (Select).</summary>
         bool Settled(ref double waited, double dt)
         {
             waited += dt;
-            if (waited < _settleTime) return false;
-            waited = 0;
-            return true;
+            return waited >= _settleTime;
         }
 
         void Mean(bool one, bool two, out double x, out double y, out double z)

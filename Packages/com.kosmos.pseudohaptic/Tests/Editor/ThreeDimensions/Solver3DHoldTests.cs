@@ -123,5 +123,30 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             s.Step(At(-0.1, 1.02, 0, 9 * Pose), At(0.1, 1.02, 0, Pose / 4), Pose);
             Assert.That(s.Vertical.State.Estimator.Speed, Is.EqualTo(0.02 / (0.25 * Pose)).Within(1e-12), "hand 2's time alone");
         }
+
+        [Test]
+        public void AHandJoiningAFollowedHandWaitsForTheSettleTimeOfSteadyTracking([Values(1, 2)] int joining)
+        {
+            // Settle time 4/32 s, frames of 1/32 s: the joining hand is followed on its fourth steady frame; a frame
+            // without it starts the wait again. Hands that come back together are followed at once.
+            var s = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz.With(new TrackingLossHold(4 * Pose)));
+            double t = 0;
+            HandPose One(bool shown) => joining == 1 && !shown ? HandPose.Lost : At(-0.1, 1, 0, t);
+            HandPose Two(bool shown) => joining == 2 && !shown ? HandPose.Lost : At(0.1, 1, 0, t);
+            int Step(bool shown) { t += Pose; s.Step(One(shown), Two(shown), Pose); return s.FollowedHands; }
+
+            s.BeginHold(One(false), Two(false), 0, 1, 0);
+            Assert.That(s.FollowedHands, Is.EqualTo(1));
+            Assert.That(new[] { Step(true), Step(true), Step(false), Step(true), Step(true), Step(true) }, Is.EqualTo(new[] { 1, 1, 1, 1, 1, 1 }),
+                "three steady frames, a drop, three more: not yet");
+            Assert.That(Step(true), Is.EqualTo(2), "the fourth steady frame in a row");
+            Assert.That(s.HoldingHands, Is.EqualTo(2));
+            Assert.That(Step(false), Is.EqualTo(1));
+            Assert.That(new[] { Step(true), Step(true), Step(true), Step(true) }, Is.EqualTo(new[] { 1, 1, 1, 2 }), "back: it waits again");
+
+            t += Pose; s.Step(HandPose.Lost, HandPose.Lost, Pose);
+            Assert.That(s.FollowedHands, Is.EqualTo(0));
+            Assert.That(Step(true), Is.EqualTo(2), "both back together: followed at once");
+        }
     }
 }
