@@ -294,9 +294,9 @@ namespace Kosmos.PseudoHaptic
                 _last1 = n1;
                 _last2 = n2;
                 Mean(n1, n2, out double mx, out double my, out double mz);
-                _vx = _cx == 0 ? mx : mx + _cx;
-                _vy = _cy == 0 ? my : my + _cy;
-                _vz = _cz == 0 ? mz : mz + _cz;
+                _vx = mx + _cx; // exactly mx while nothing was re-anchored (c = 0): y stays the y solver's, bit for bit
+                _vy = my + _cy;
+                _vz = mz + _cz;
                 if (n1) _holds1 = true;
                 if (n2) _holds2 = true;
             }
