@@ -75,6 +75,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var heavy = Lift(db, 0.09);
             Assert.That(Run.Last(heavy) - heavy[0], Is.EqualTo(0.15).Within(1e-12), "below gain 1 too (gain 0.5)");
             Assert.That(new MotionDeadband().WidthFor(0.5, 1.0), Is.EqualTo(0.0), "no band at gain 1");
+            Assert.That(new MotionDeadband().WidthFor(0.5, 0.5), Is.EqualTo(0.0), "none for a heavier object (not a negative width)");
             Assert.That(new MotionDeadband().WidthFor(0.5, 3.0), Is.EqualTo(0.012 * 2 / 3.0).Within(1e-12), "span × (1 − 1/G)");
             Assert.That(new MotionDeadband().WidthFor(3.0, 3.0), Is.EqualTo(0.018 * 2 / 3.0).Within(1e-12), "a fast user: v_std × 6 ms");
             var light = Lift(db, 0.01);
@@ -143,7 +144,28 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             Assert.That(c.PaceShiftAt(1, 0.3), Is.GreaterThan(c.PaceShiftAt(1, 1.0)), "a lower v_std reads the same pace as faster");
             Assert.That(c.ThresholdFor(0.045) - c.PaceShiftAt(1e9, 0.01), Is.GreaterThan(0), "the threshold stays positive");
+            Assert.That(c.PaceShiftAt(double.PositiveInfinity, 0.5), Is.EqualTo(c.PaceShift).Within(1e-15), "an infinite pace: the whole shift, not NaN");
+            Assert.That(c.PaceShiftAt(-1, 0.5), Is.EqualTo(c.PaceShiftAt(1, 0.5)), "lowering counts like lifting");
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new OffsetCorrection(paceShift: -0.01)).ParamName, Is.EqualTo("paceShift"));
+        }
+
+        [Test]
+        public void AnObjectMadeLighterThanTheStandardMidHoldKeepsItsMassThresholdWhateverThePaceBefore()
+        {
+            // A fast heavy lift leaves a held pace of about 1 m/s, which would lower a heavy object's threshold by 4 cm.
+            // Made light mid-hold (a scene changing the weight), the object leads the hand and its offset stops at its own
+            // threshold and band, 0.15 + 0.02 m: the pace shift is for objects heavier than the standard only.
+            var profile = Only(new WeightGain(), new FasterMovesFurther(), new OffsetCorrection());
+            var s = new WeightSolver(WeightModel.FromMass(5), profile, 0.5);
+            double t = 0, hand = 1.0;
+            s.BeginHold(hand, hand, t);
+            for (int i = 0; i < 9; i++) s.Step(new HandSample(hand += 1.0 / 30, true, true, t += 1 / 30.0), 1 / 30.0);
+            Assert.That(s.State.HeldPace, Is.GreaterThan(0.9));
+            s.Configure(WeightModel.FromMass(0.01), profile, 0.5);
+            Assert.That(s.Gain, Is.GreaterThan(1));
+            for (int i = 0; i < 150; i++) s.Step(new HandSample(hand += 0.1 / 30, true, true, t += 1 / 30.0), 1 / 30.0);
+            Assert.That(s.State.HeldPace, Is.GreaterThan(0.9), "still held: the light object has no pace rule");
+            Assert.That(s.Offset, Is.EqualTo(-(0.15 + 0.02)).Within(0.002), "the object leads by its own threshold and band");
         }
 
         [Test]
@@ -155,6 +177,10 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(c.ThresholdFor(0.5), Is.EqualTo(0.19).Within(1e-12));
             Assert.That(c.ThresholdFor(1e6) + c.Band, Is.LessThanOrEqualTo(0.25), "the visible offset stays within a quarter metre");
             Assert.That(c.ThresholdFor(0.001), Is.EqualTo(0.15).Within(1e-12));
+            Assert.That(c.ThresholdFor(0), Is.EqualTo(0.15).Within(1e-12), "no mass: the least");
+            var flat = new OffsetCorrection(perDoubling: 0);
+            Assert.That(flat.ThresholdFor(0), Is.EqualTo(0.15).Within(1e-12), "no mass, no growth per doubling: still the least, not NaN");
+            Assert.That(flat.ThresholdFor(5), Is.EqualTo(0.2).Within(1e-12));
         }
 
         [Test]

@@ -21,6 +21,18 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AGiveBackExactlyTwoTenthsOfASecondAfterTheGuardActedIsStillMade()
+        {
+            // Poses 0.2 s apart (0.4 − 0.2 is exactly 0.2 in binary): the window includes its end.
+            var s = Solver(5);
+            double g = s.Gain;
+            s.BeginHold(1.0, 1.0, 0);
+            Assert.That(s.Step(new HandSample(0.99, true, true, 0.2), 0.2), Is.EqualTo(0.995).Within(1e-12), "the guard acts");
+            Assert.That(s.Step(new HandSample(1.0, true, true, 0.4), 0.2) - 0.995, Is.EqualTo(0.005).Within(1e-12),
+                "given back: where the gain alone would have put it, not " + (0.01 * g));
+        }
+
+        [Test]
         public void AHeavyObjectIsBroughtDownWithTheHandThenGivenBackAsTheHandRises()
         {
             var s = Solver(5);

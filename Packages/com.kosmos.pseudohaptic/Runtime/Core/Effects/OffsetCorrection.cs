@@ -64,15 +64,17 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         public double ThresholdFor(double massKg)
         {
-            double scale = massKg > 0 ? 1 + PerDoubling * Math.Log(massKg) / Math.Log(2) : MinScale;
+            double scale = 1 + PerDoubling * Math.Log(massKg) / Math.Log(2); // m ≤ 0: −∞ or NaN, the least
+            // Stryker disable once Equality : on either bound both branches give the bound
             if (!(scale > MinScale)) scale = MinScale;
-            else if (scale > MaxScale) scale = MaxScale;
+            // Stryker disable once Equality : on either bound both branches give the bound
+            if (scale > MaxScale) scale = MaxScale;
             return Threshold * scale;
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double massThreshold = constants.OffsetThreshold > 0 ? constants.OffsetThreshold : Threshold;
+            double massThreshold = constants.OffsetThreshold; // ThresholdFor(the model's mass), set by the solver
             // Growth stops earlier after a faster lift (faster moves further); the pull back (3.) keeps the mass's own
             // threshold, so a change of pace never draws the object toward the hand by itself.
             double threshold = massThreshold - (constants.Gain < 1 ? PaceShiftAt(state.HeldPace, constants.StandardSpeed) : 0);
@@ -83,7 +85,9 @@ namespace Kosmos.PseudoHaptic
             double before = Math.Abs(frame.OffsetBefore);
             double after = Math.Abs(frame.HandAfter - frame.ObjectY - frame.TotalDelta);
             double delta = after - before;
-            if (delta != 0 && (before > threshold || after > threshold) && !(delta < 0 && before >= threshold + Band))
+            // Stryker disable once Equality,Logical : a shortcut: with neither end past the threshold the rule below gives the free offset and shares nothing
+            bool pastThreshold = before > threshold || after > threshold;
+            if (delta != 0 && pastThreshold && !(delta < 0 && before >= threshold + Band))
             {
                 double reached = MidpointOffset(before, delta, threshold);
                 double share = (after - reached) / delta; // of the change the hand's own motion would make
@@ -93,7 +97,7 @@ namespace Kosmos.PseudoHaptic
             // 2. The offset the user sees never grows past the band's end, however large one pose's step.
             double visibleBefore = Math.Abs(frame.VisibleOffsetBefore);
             double visibleAfter = Math.Abs(frame.PoseHandAfter - frame.ObjectY - frame.TotalDelta);
-            double ceiling = visibleBefore > threshold + Band ? visibleBefore : threshold + Band;
+            double ceiling = Math.Max(visibleBefore, threshold + Band);
             if (visibleAfter > ceiling)
             {
                 double share = (visibleAfter - ceiling) / (visibleAfter - visibleBefore);
@@ -106,12 +110,15 @@ namespace Kosmos.PseudoHaptic
             double beyond = Math.Max(0, Math.Abs(afterSigned) - (massThreshold + Band));
             double speed = PullSpeed * Math.Min(1, beyond / (5 * Band));
             double pull = Math.Min(beyond, speed * Math.Min(frame.Dt, constants.Limits.MaxFrameTime));
+            // Stryker disable once Equality : at an offset of 0 the pull is 0
             frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             // Motion toward the hand pays what the speed cap owes. Motion the correction held back from the cap's
             // catch-up (in the band an object catching up with the hand is slowed) is owed again: delayed, not lost, so
             // the catch-up after a fast lift completes (stability.md, known limits, for what is left).
             double extra = frame.TotalDelta - start;
-            if (extra * state.CapDeferred > 0) SpeedCap.Settle(ref state, extra);
+            // Stryker disable once Equality,Arithmetic : with nothing owed or no extra (a product of 0, or a quotient of 0 or ±∞ of the same sign) settling changes nothing
+            bool paysTheCap = extra * state.CapDeferred > 0;
+            if (paysTheCap) SpeedCap.Settle(ref state, extra);
             else if (extra * state.CapDeferred < 0) state.CapDeferred -= extra;
         }
 
@@ -124,8 +131,8 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         public double PaceShiftAt(double pace, double standardSpeed)
         {
-            double x = Math.Abs(pace) / standardSpeed;
-            return x > 0 && !double.IsInfinity(x) ? PaceShift * x / (x + HalfShiftPace) : (x > 0 ? PaceShift : 0);
+            double x = Math.Min(Math.Abs(pace) / standardSpeed, double.MaxValue); // an infinite pace: the largest
+            return PaceShift * x / (x + HalfShiftPace);
         }
 
         /// <summary>
@@ -135,6 +142,7 @@ namespace Kosmos.PseudoHaptic
         double MidpointOffset(double d0, double delta, double threshold)
         {
             double free = d0 + delta;
+            // Stryker disable once Equality : with the midpoint on the threshold the solution below is the free offset too
             if ((d0 + free) / 2 <= threshold) return free; // s = 0 over the whole step
             // Solved with s linear. Past the band (s = 1) that solution falls short of d0, where the clamped rule stays:
             // nothing grows there.

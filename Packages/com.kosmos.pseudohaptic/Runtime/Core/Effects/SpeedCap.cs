@@ -36,6 +36,7 @@ namespace Kosmos.PseudoHaptic
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
             double cap = constants.CapSpeed;
+            // Stryker disable once Equality,Statement : a shortcut: an infinite allowance changes nothing below
             if (!(cap < double.PositiveInfinity)) return;
             // Judged per pose, over the pose's own interval, so every frame clock that shows the same poses makes the
             // same decisions; a frame without a new pose moves nothing and pays nothing. A hand filter spreads each
@@ -44,13 +45,12 @@ namespace Kosmos.PseudoHaptic
             // makes on a frame without a new pose is judged over the frame.
             double window = frame.HandFiltered ? frame.Dt
                 : (frame.MotionInterval > 0 ? frame.MotionInterval : (frame.ObjectDelta != 0 ? frame.Dt : 0));
-            if (!(window > 0)) return;
-            double allowed = cap * window;
+            double allowed = cap * window; // no window, no allowance: motion in no time waits for the next frames
             double wanted = frame.ObjectDelta + state.CapDeferred; // a hand that turns back cancels what it is owed
-            double step = wanted > allowed ? allowed : (wanted < -allowed ? -allowed : wanted);
+            double step = Math.Min(Math.Max(wanted, -allowed), allowed);
             frame.ObjectDelta = step;
             double deferred = wanted - step, limit = constants.Limits.MaxCarry;
-            state.CapDeferred = deferred > limit ? limit : (deferred < -limit ? -limit : deferred);
+            state.CapDeferred = Math.Min(Math.Max(deferred, -limit), limit);
         }
 
         /// <summary>An effect after the cap changed the object's motion by <paramref name="extra"/>: in the direction of
@@ -60,6 +60,7 @@ namespace Kosmos.PseudoHaptic
         {
             double owed = state.CapDeferred;
             double left = Math.Abs(owed) - Math.Abs(extra);
+            // Stryker disable once Equality : at left = 0 both branches give 0; left > 0 implies owed ≠ 0
             state.CapDeferred = left <= 0 ? 0 : (owed > 0 ? left : -left);
         }
 

@@ -43,7 +43,9 @@ namespace Kosmos.PseudoHaptic
                 frame.Usable = false;
                 return;
             }
+            // Stryker disable once Unary : the re-anchoring forced below resets every effect, this one to −1 too
             state.SettleElapsed = -1;
+            // Stryker disable once Boolean : withheld past the catch-up gap, the estimator would re-anchor by itself too; said here, not relied on
             frame.ForceReanchor = true;
         }
 
