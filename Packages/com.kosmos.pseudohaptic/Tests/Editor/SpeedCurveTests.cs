@@ -104,8 +104,12 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void FitRefusesWhatCannotGiveACurveNamingTheArgument()
         {
-            Assert.That(Assert.Throws<ArgumentException>(() => ExperimentalSpeedCurve.Fit(new[] { 1.0, 2.0 }, new[] { 1.0 })).ParamName, Is.EqualTo("speeds"));
-            Assert.That(Assert.Throws<ArgumentException>(() => ExperimentalSpeedCurve.Fit(new[] { 1.0 }, new[] { 1.0 })).ParamName, Is.EqualTo("massesKg"));
+            var lengths = Assert.Throws<ArgumentException>(() => ExperimentalSpeedCurve.Fit(new[] { 1.0, 2.0 }, new[] { 1.0 }));
+            Assert.That(lengths.ParamName, Is.EqualTo("speeds"));
+            Assert.That(lengths.Message, Does.Contain("massesKg and speeds must have the same length."));
+            var one = Assert.Throws<ArgumentException>(() => ExperimentalSpeedCurve.Fit(new[] { 1.0 }, new[] { 1.0 }));
+            Assert.That(one.ParamName, Is.EqualTo("massesKg"));
+            Assert.That(one.Message, Does.Contain("at least two (mass, speed) pairs are needed."));
             Assert.That(Assert.Throws<ArgumentException>(() => ExperimentalSpeedCurve.Fit(new double[0], new double[0])).ParamName, Is.EqualTo("massesKg"));
             var equal = Assert.Throws<ArgumentException>(() => ExperimentalSpeedCurve.Fit(new[] { 2.0, 2.0, 2.0 }, new[] { 1.0, 0.9, 1.1 }));
             Assert.That(equal.ParamName, Is.EqualTo("massesKg"));
