@@ -48,6 +48,48 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.SetGrip(0, false)).ParamName, Is.EqualTo("hand"));
         }
 
+        // The followed point is what the object follows in x, y and z: it must not step when the set of followed hands
+        // changes, in any axis, whichever hand lets go, and a hand gripping again after both let go continues from it.
+        [Test]
+        public void LettingGoAndGrippingAgainNeverMovesTheFollowedPoint([Values(1, 2)] int letGo)
+        {
+            var s = TwoHanded();
+            double t = 0;
+            HandPose AtNow(double x, double y, double z) => At(x, y, z, t);
+            var left = At(-0.1, 1.0, 0, t);
+            var right = At(0.1, 1.2, 0.06, t);
+            s.BeginHold(left, right, 0, 1.1, 0.03);
+            AssertFollowed(s, 0, 1.1, 0.03, "the hands' midpoint");
+
+            s.SetGrip(letGo, false);
+            t += Pose; s.Step(At(-0.1, 1.0, 0, t), At(0.1, 1.2, 0.06, t), Pose);
+            AssertFollowed(s, 0, 1.1, 0.03, "hand " + letGo + " let go: the point stays");
+            // The other hand moves by (0.02, 0.03, −0.01): the point moves with it.
+            t += Pose;
+            if (letGo == 2) s.Step(At(-0.08, 1.03, -0.01, t), At(0.1, 1.2, 0.06, t), Pose);
+            else s.Step(At(-0.1, 1.0, 0, t), At(0.12, 1.23, 0.05, t), Pose);
+            AssertFollowed(s, 0.02, 1.13, 0.02, "following the hand that holds");
+
+            s.SetGrip(3 - letGo, false);
+            t += Pose; s.Step(HandPose.Lost, HandPose.Lost, Pose);
+            Assert.That(s.FollowedHands, Is.EqualTo(0));
+            // The first hand grips again far from where it was: followed from the point, not from its own position.
+            s.SetGrip(letGo, true);
+            t += Pose;
+            if (letGo == 1) s.Step(AtNow(0.3, 0.9, -0.2), HandPose.Lost, Pose); else s.Step(HandPose.Lost, AtNow(0.3, 0.9, -0.2), Pose);
+            AssertFollowed(s, 0.02, 1.13, 0.02, "hand " + letGo + " grips again: no step");
+            t += Pose;
+            if (letGo == 1) s.Step(AtNow(0.31, 0.91, -0.19), HandPose.Lost, Pose); else s.Step(HandPose.Lost, AtNow(0.31, 0.91, -0.19), Pose);
+            AssertFollowed(s, 0.03, 1.14, 0.03, "then its motion");
+        }
+
+        static void AssertFollowed(WeightSolver3D s, double x, double y, double z, string what)
+        {
+            Assert.That(s.FollowedX, Is.EqualTo(x).Within(1e-12), what + ": x");
+            Assert.That(s.FollowedY, Is.EqualTo(y).Within(1e-12), what + ": y");
+            Assert.That(s.FollowedZ, Is.EqualTo(z).Within(1e-12), what + ": z");
+        }
+
         [Test]
         public void AnEndedHoldKeepsTheObjectWhereItIs()
         {
