@@ -91,6 +91,25 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void AHoldBegunBeforeAnyHandIsTrackedStaysPutThenAnchorsOnTheFirstHand()
+        {
+            var s = TwoHanded(5);
+            s.BeginHold(HandPose.Lost, HandPose.Lost, 0.3, 1.0, 0.2);
+            double t = 0;
+            for (int i = 0; i < 32; i++)
+            {
+                t += Pose; s.Step(HandPose.Lost, HandPose.Lost, Pose);
+                Assert.That(new[] { s.ObjectX, s.ObjectY, s.ObjectZ }, Is.EqualTo(new[] { 0.3, 1.0, 0.2 }), "lost frame " + i);
+            }
+            // A hand appears 3 cm from the object in each axis: the object waits (settling), then anchors; it never jumps.
+            for (int i = 0; i < 16; i++)
+            {
+                t += Pose; s.Step(At(0.33, 1.03, 0.23, t), HandPose.Lost, Pose);
+                Assert.That(new[] { s.ObjectX, s.ObjectY, s.ObjectZ }, Is.EqualTo(new[] { 0.3, 1.0, 0.2 }).Within(1e-12), "tracked frame " + i);
+            }
+        }
+
+        [Test]
         public void AnEndedHoldKeepsTheObjectWhereItIs()
         {
             var s = TwoHanded();
