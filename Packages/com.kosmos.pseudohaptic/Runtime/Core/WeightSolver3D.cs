@@ -49,8 +49,9 @@ namespace Kosmos.PseudoHaptic
 
         public WeightSolver3D(WeightModel model, WeightProfile profile = null, double standardSpeed = WeightSolver.DefaultStandardSpeed)
         {
-            _y = new WeightSolver(model, profile ?? NamedProfiles.Paper, standardSpeed);
-            Configure(model, profile ?? NamedProfiles.Paper, standardSpeed);
+            profile = profile ?? NamedProfiles.Paper;
+            _y = new WeightSolver(model, profile, standardSpeed);
+            Configure(model, profile, standardSpeed);
         }
 
         /// <summary>The y solver: its state, profile and constants (configured with the per-hand mass while two hands hold).</summary>

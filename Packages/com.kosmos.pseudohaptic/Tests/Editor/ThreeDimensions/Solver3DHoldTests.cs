@@ -46,6 +46,15 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(s.FollowedHands, Is.EqualTo(0), "the one tracked hand has let go");
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.SetGrip(3, true)).ParamName, Is.EqualTo("hand"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.SetGrip(0, false)).ParamName, Is.EqualTo("hand"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => s.SetGrip(3, false)).Message, Does.Contain("hand must be 1 or 2, got 3."));
+            t += Pose; s.Step(HandPose.Lost, At(0.1, 1, 0, t), Pose);
+            Assert.That(s.UsableHands, Is.EqualTo(1), "only the second");
+            t += Pose; s.Step(HandPose.Lost, HandPose.Lost, Pose);
+            Assert.That(s.UsableHands, Is.EqualTo(0));
+            s.BeginHold(HandPose.Lost, At(0.1, 1, 0, t), 0, 1, 0);
+            Assert.That(s.UsableHands, Is.EqualTo(1), "a hold begun with the second hand only");
+            s.BeginHold(At(0.1, 1, 0, t), HandPose.Lost, 0, 1, 0);
+            Assert.That(s.UsableHands, Is.EqualTo(1), "a hold begun with the first hand only");
         }
 
         // The followed point is what the object follows in x, y and z: it must not step when the set of followed hands
@@ -110,6 +119,28 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void AReconfiguredSolverMovesExactlyAsOneBuiltForItsNewMass()
+        {
+            // Built for the golf ball, then configured for 5 kg: every coordinate, frame by frame, as a solver built for
+            // 5 kg, through a two-hand diagonal lift, one hand letting go, and a sideways move with the lateral lag.
+            var reconfigured = new WeightSolver3D(WeightModel.FromMass(PhysicalConstants.StandardMassKg), NamedProfiles.Xyz);
+            reconfigured.Configure(WeightModel.FromMass(5), NamedProfiles.Xyz, 0.5);
+            var built = new WeightSolver3D(WeightModel.FromMass(5), NamedProfiles.Xyz);
+            double t = 0;
+            foreach (var s in new[] { reconfigured, built }) s.BeginHold(At(-0.1, 1, 0, t), At(0.1, 1, 0, t), 0, 1, 0);
+            for (int i = 1; i <= 40; i++)
+            {
+                t += Pose;
+                if (i == 20) { reconfigured.SetGrip(2, false); built.SetGrip(2, false); }
+                double x = 0.004 * i, y = i <= 20 ? 1 + 0.01 * i : 1.2;
+                foreach (var s in new[] { reconfigured, built }) s.Step(At(x - 0.1, y, 0.002 * i, t), At(x + 0.1, y, 0.002 * i, t), Pose);
+                Assert.That(new[] { reconfigured.ObjectX, reconfigured.ObjectY, reconfigured.ObjectZ, reconfigured.LagX },
+                    Is.EqualTo(new[] { built.ObjectX, built.ObjectY, built.ObjectZ, built.LagX }), "frame " + i);
+            }
+            Assert.That(built.LagX, Is.Not.EqualTo(0), "the lateral lag was in play");
+        }
+
+        [Test]
         public void AnEndedHoldKeepsTheObjectWhereItIs()
         {
             var s = TwoHanded();
@@ -136,6 +167,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(s.ObjectY, Is.EqualTo(0.9).Within(1e-12), "the second hand alone will do");
             var ex = Assert.Throws<ArgumentException>(() => s.BeginHoldWithGrabOffset(HandPose.Lost, HandPose.Lost, 0, 0.1, 0));
             Assert.That(ex.ParamName, Is.EqualTo("first"));
+            Assert.That(ex.Message, Does.Contain("a grab offset needs a followable hand to place the object relative to."));
             var lowConfidence = new HandPose(0, 1, 0, true, false, 0);
             Assert.That(() => s.BeginHoldWithGrabOffset(lowConfidence, HandPose.Lost, 0, 0.1, 0), Throws.ArgumentException,
                 "a low-confidence hand is not followed under the tracking-loss hold");
@@ -153,6 +185,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(null, NamedProfiles.Paper, 0.5)).ParamName, Is.EqualTo("model"));
             Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(WeightModel.FromMass(1), null, 0.5)).ParamName, Is.EqualTo("profile"));
             Assert.That(new WeightSolver3D(WeightModel.FromMass(1)).Profile, Is.SameAs(NamedProfiles.Paper), "paper by default");
+            Assert.That(new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Xyz).Profile, Is.SameAs(NamedProfiles.Xyz), "else the one given");
             s.BeginHold(At(0, 1, 0, 0), 0, 1, 0);
             s.Configure(WeightModel.FromMass(3), NamedProfiles.Paper, 0.5);
             Assert.That(s.PerHandMassKg, Is.EqualTo(3.0));
