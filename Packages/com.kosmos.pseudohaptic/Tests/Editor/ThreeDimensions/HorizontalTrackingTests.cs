@@ -77,6 +77,34 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(s.ObjectX, Is.EqualTo((reanchors ? 0.02 : 0.02 + dx)).Within(1e-12), "then followed");
         }
 
+        [TestCase(0.23, false)] // a 40 ms frame right after motion: judged over it, 6 m/s × 0.04 s = 0.24 m
+        [TestCase(0.25, true)]
+        public void ASidewaysStepIsJudgedOverTheTimeSinceTheLastSidewaysMotion(double dx, bool reanchors)
+        {
+            var s = Solver();
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            t += Pose; s.Step(At(0.01, 1, 0, t), Pose);
+            t += 0.04; s.Step(At(0.01 + dx, 1, 0, t), 0.04);
+            Assert.That(s.ObjectX, Is.EqualTo(reanchors ? 0.01 : 0.01 + dx).Within(1e-12));
+        }
+
+        // Without the tracking-loss hold, x/z treat a loss as y's estimator does: a short one is caught up, a longer one
+        // than the catch-up gap (0.25 s = 8 poses) re-anchors, whatever the hand did meanwhile.
+        [TestCase(8, false)]
+        [TestCase(9, true)]
+        public void WithoutTheLossHoldAShortLossIsCaughtUpInEveryAxisAndALongOneReanchors(int lostPoses, bool reanchors)
+        {
+            var s = Solver(NamedProfiles.PaperExperiment.Without<TrackingLossHold>(), PhysicalConstants.StandardMassKg);
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            for (int i = 0; i < 3; i++) { t += Pose; s.Step(At(0, 1, 0, t), Pose); }
+            for (int i = 0; i < lostPoses; i++) { t += Pose; s.Step(HandPose.Lost, Pose); }
+            t += Pose; s.Step(At(0.05, 1.05, 0.05, t), Pose);
+            double expected = reanchors ? 0 : 0.05;
+            Assert.That(new[] { s.ObjectX, s.ObjectY - 1, s.ObjectZ }, Is.EqualTo(new[] { expected, expected, expected }).Within(1e-12));
+        }
+
         [Test]
         public void WithTheCorrectionWhatReanchoringLeftSidewaysIsPulledBack()
         {
