@@ -57,7 +57,6 @@ namespace Kosmos.PseudoHaptic
             {
                 double dx = massesKg[i] - mm;
                 sxx += dx * dx;
-                // Stryker disable once Arithmetic : the deviations dx sum to 0, so subtracting the mean log speed changes sxy only by rounding
                 sxy += dx * (Math.Log(speeds[i]) - ml);
             }
             if (sxx <= 0)

@@ -125,7 +125,6 @@ namespace Kosmos.PseudoHaptic
             _state.IsHolding = true;
             var floor = Profile.Find<FloorClamp>();
             double lowest = floor != null ? floor.Floor + _bottomBelowPivot : double.NegativeInfinity;
-            // Stryker disable once Equality : an object exactly on the floor stays there either way (its grab offset then differs by rounding at most)
             bool raised = objectY < lowest;
             if (raised) objectY = lowest;
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime, objectY);
@@ -157,7 +156,6 @@ namespace Kosmos.PseudoHaptic
 
             // Bad frame times are absorbed: NaN or negative count as no time, infinity as a very long hitch.
             if (double.IsPositiveInfinity(dt)) dt = 3600;
-            // Stryker disable once Equality : 0 becomes 0
             else if (!(dt > 0)) dt = 0;
             // Compensated (Kahan) sum: the hold's clock keeps the microsecond over millions of frames.
             double add = dt - _state.TimeCompensation, sum = _state.Time + add;
@@ -168,7 +166,6 @@ namespace Kosmos.PseudoHaptic
             {
                 Dt = dt,
                 PoseY = sample.Y,
-                // Stryker disable once Conditional : the estimator takes an infinite time as none; sanitised for custom effects
                 PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
                 IsHighConfidence = sample.IsHighConfidence,
                 Usable = sample.IsUsable,

@@ -55,15 +55,12 @@ namespace Kosmos.PseudoHaptic
         {
             double x = Math.Abs(speed) / standardSpeed;
             // r = 1/√x, clamped: x ≤ 1/SlowExponent² reads as slow, x ≥ 1/FastExponent² as fast.
-            // Stryker disable once Equality : at x·S² = 1, 1/√x is S: both sides of the boundary give the same r
             if (!(x * SlowExponent * SlowExponent > 1)) return SlowExponent;
             double r = 1 / Math.Sqrt(x);
-            // Stryker disable once Equality : at r = FastExponent both branches return it
-            return r < FastExponent ? FastExponent : r;
+            return Math.Max(r, FastExponent);
         }
 
         /// <summary>The gain G_v for an object of gain <paramref name="gain"/> at hand speed <paramref name="speed"/>.</summary>
-        // Stryker disable once Equality : at G = 1, G^r = 1 = G
         public double GainAt(double gain, double speed, double standardSpeed)
             => gain < 1 ? Math.Exp(ExponentAt(speed, standardSpeed) * Math.Log(gain)) : gain; // gain 0: e^(−∞) = 0
 
@@ -72,7 +69,6 @@ namespace Kosmos.PseudoHaptic
             double h = frame.HandAfter, r = state.PaceReference, w = RestBand;
             double next = Math.Min(Math.Max(r, h - w), h + w);
             state.PaceReference = next;
-            // Stryker disable once Equality : at G = 1 the gain G^r is 1 and adds nothing; the held pace matters only for G < 1
             if (!(constants.Gain < 1)) return;
             // The hand's pace: the band-follower's speed over each new pose, smoothed over about SmoothingTime
             // (exponentially, per pose, so every frame clock sees the same pace), so one pose's jitter barely moves
@@ -83,7 +79,6 @@ namespace Kosmos.PseudoHaptic
                 double a = interval / (SmoothingTime + interval);
                 state.Pace += a * ((next - r) / interval - state.Pace);
                 double pace = Math.Abs(state.Pace);
-                // Stryker disable once Equality : at equality the release moves the held pace by 0
                 bool faster = pace >= state.HeldPace;
                 double share = Math.Min(Math.Abs(next - r) / ReleaseDistance, 1);
                 state.HeldPace = faster ? pace : state.HeldPace + share * (pace - state.HeldPace);

@@ -34,14 +34,12 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>The band's half-width for a user and an object's gain, m: max(span, v_std × lag time) × (1 − 1/G)
         /// above a gain of 1, else 0.</summary>
-        // Stryker disable once Equality : at G = 1 the width is 0 either way
         public double WidthFor(double standardSpeed, double gain)
             => gain > 1 ? Math.Max(LagTime * standardSpeed, JitterSpan) * (1 - 1 / gain) : 0;
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
             double w = constants.DeadbandWidth;
-            // Stryker disable once Equality : a band of width 0 follows the hand exactly, as this shortcut does
             if (w <= 0) { state.DeadbandReference = frame.HandAfter; return; } // gain ≤ 1: nothing to suppress, nothing lost
             double h = frame.HandAfter, r = state.DeadbandReference;
             double next = Math.Min(Math.Max(r, h - w), h + w);

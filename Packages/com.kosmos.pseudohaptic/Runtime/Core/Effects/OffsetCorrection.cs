@@ -65,9 +65,7 @@ namespace Kosmos.PseudoHaptic
         public double ThresholdFor(double massKg)
         {
             double scale = 1 + PerDoubling * Math.Log(massKg) / Math.Log(2); // m ≤ 0: −∞ or NaN, the least
-            // Stryker disable once Equality : on either bound both branches give the bound
             if (!(scale > MinScale)) scale = MinScale;
-            // Stryker disable once Equality : on either bound both branches give the bound
             if (scale > MaxScale) scale = MaxScale;
             return Threshold * scale;
         }
@@ -85,7 +83,6 @@ namespace Kosmos.PseudoHaptic
             double before = Math.Abs(frame.OffsetBefore);
             double after = Math.Abs(frame.HandAfter - frame.ObjectY - frame.TotalDelta);
             double delta = after - before;
-            // Stryker disable once Equality,Logical : a shortcut: with neither end past the threshold the rule below gives the free offset and shares nothing
             bool pastThreshold = before > threshold || after > threshold;
             if (delta != 0 && pastThreshold && !(delta < 0 && before >= threshold + Band))
             {
@@ -110,13 +107,12 @@ namespace Kosmos.PseudoHaptic
             double beyond = Math.Max(0, Math.Abs(afterSigned) - (massThreshold + Band));
             double speed = PullSpeed * Math.Min(1, beyond / (5 * Band));
             double pull = Math.Min(beyond, speed * Math.Min(frame.Dt, constants.Limits.MaxFrameTime));
-            // Stryker disable once Equality : at an offset of 0 the pull is 0
             frame.TotalDelta += afterSigned > 0 ? pull : -pull;
             // Motion toward the hand pays what the speed cap owes. Motion the correction held back from the cap's
             // catch-up (in the band an object catching up with the hand is slowed) is owed again: delayed, not lost, so
             // the catch-up after a fast lift completes (stability.md, known limits, for what is left).
             double extra = frame.TotalDelta - start;
-            // Stryker disable once Equality,Arithmetic : with nothing owed or no extra (a product of 0, or a quotient of 0 or ±∞ of the same sign) settling changes nothing
+            // Stryker disable once Arithmetic : extra / owed has the sign of extra × owed; with nothing owed (±∞ or NaN) settling changes nothing
             bool paysTheCap = extra * state.CapDeferred > 0;
             if (paysTheCap) SpeedCap.Settle(ref state, extra);
             else if (extra * state.CapDeferred < 0) state.CapDeferred -= extra;
@@ -142,7 +138,6 @@ namespace Kosmos.PseudoHaptic
         double MidpointOffset(double d0, double delta, double threshold)
         {
             double free = d0 + delta;
-            // Stryker disable once Equality : with the midpoint on the threshold the solution below is the free offset too
             if ((d0 + free) / 2 <= threshold) return free; // s = 0 over the whole step
             // Solved with s linear. Past the band (s = 1) that solution falls short of d0, where the clamped rule stays:
             // nothing grows there.

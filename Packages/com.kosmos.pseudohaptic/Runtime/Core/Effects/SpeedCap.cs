@@ -36,7 +36,7 @@ namespace Kosmos.PseudoHaptic
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
             double cap = constants.CapSpeed;
-            // Stryker disable once Equality,Statement : a shortcut: an infinite allowance changes nothing below
+            // Stryker disable once Statement : a shortcut: an infinite allowance changes nothing below
             if (!(cap < double.PositiveInfinity)) return;
             // Judged per pose, over the pose's own interval, so every frame clock that shows the same poses makes the
             // same decisions; a frame without a new pose moves nothing and pays nothing. A hand filter spreads each
@@ -60,7 +60,6 @@ namespace Kosmos.PseudoHaptic
         {
             double owed = state.CapDeferred;
             double left = Math.Abs(owed) - Math.Abs(extra);
-            // Stryker disable once Equality : at left = 0 both branches give 0; left > 0 implies owed ≠ 0
             state.CapDeferred = left <= 0 ? 0 : (owed > 0 ? left : -left);
         }
 

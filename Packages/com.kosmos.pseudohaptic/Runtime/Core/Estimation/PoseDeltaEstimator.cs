@@ -33,7 +33,6 @@ namespace Kosmos.PseudoHaptic
         public bool HasPose => _hasPose;
 
         /// <summary>The hand's last pose-to-pose speed, m/s, kept over repeated poses; 0 once no new pose came for 0.1 s.</summary>
-        // Stryker disable once Equality : at exactly 0.1 s either reading is right; no clock lands on it and measures the difference
         public double Speed => _sincePose > StillAfter || _lost ? 0 : _speed;
 
         /// <summary>Starts over at the pose <paramref name="handY"/> taken at <paramref name="poseTime"/>. When the hand is
@@ -70,7 +69,6 @@ namespace Kosmos.PseudoHaptic
             // A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.
             bool newPose = f.PoseY != _poseY || (hasTime && !(hadTime && f.PoseTime == _poseTime));
             bool clockBack = hasTime && hadTime && f.PoseTime < _poseTime;
-            // Stryker disable once Equality : a frame of exactly the catch-up gap is bridged; either side of it is right
             bool gap = f.Dt > limits.MaxCatchUpGap || (_lost && _lostFor > limits.MaxCatchUpGap);
 
             if (!_hasPose || f.ForceReanchor || clockBack || gap)
@@ -98,7 +96,6 @@ namespace Kosmos.PseudoHaptic
             // have reached is).
             double longest = SolverLimits.JumpWindow + _lostFor; // _lostFor is 0 unless tracking was lost
             double window = Math.Max(SolverLimits.MinJumpWindow, Math.Min(interval, longest));
-            // Stryker disable once Equality : a pose exactly at the hand-speed limit is followed; either side of it is right
             if (Math.Abs(delta) > limits.MaxHandSpeed * window)
             {
                 Reanchor(ref f);
