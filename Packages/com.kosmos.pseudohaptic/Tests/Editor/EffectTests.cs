@@ -205,6 +205,7 @@ namespace Kosmos.PseudoHaptic.Tests
         // (offset at the start d0, change the hand alone would make Δ), m; 1 kg: threshold T = 0.2, band B = 0.02.
         [TestCase(0.210, +0.005)]  // growth inside the band
         [TestCase(0.190, +0.020)]  // growth into the band from below it
+        [TestCase(0.195, +0.020)]  // …with the free step's midpoint past T: resisted from where it crosses T
         [TestCase(0.210, +0.020)]  // growth toward the band's end
         [TestCase(0.225, +0.010)]  // growth past the band: none (then the pull, pinned above, draws it back a little)
         [TestCase(0.210, +0.100)]  // one huge step: the rule alone would end at 0.224 m; the visible ceiling holds it at T + B
