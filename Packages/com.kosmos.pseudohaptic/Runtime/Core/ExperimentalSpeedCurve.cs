@@ -57,7 +57,7 @@ namespace Kosmos.PseudoHaptic
             {
                 double dx = massesKg[i] - mm;
                 sxx += dx * dx;
-                sxy += dx * (Math.Log(speeds[i]) - ml);
+                sxy += dx * Math.Log(speeds[i]); // the dx sum to 0: centring the logs too would change nothing
             }
             if (sxx <= 0)
                 throw new ArgumentException("the masses must not all be equal.", nameof(massesKg));

@@ -11,6 +11,7 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>The pose's height, m; meaningful only when <see cref="Usable"/>.</summary>
         public double PoseY;
+        /// <summary>The pose's timestamp, s; NaN when the source gave none or an infinite one (never infinite).</summary>
         public double PoseTime;
         public bool IsHighConfidence;
 
