@@ -1,5 +1,6 @@
 using System;
 using NUnit.Framework;
+using static Kosmos.PseudoHaptic.Tests.Run3D;
 
 namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
 {
@@ -71,6 +72,70 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(() => new BreakAway(0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("distance"));
             Assert.That(() => new BreakAway(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("distance"));
             Assert.That(() => new BreakAway(0.1, -1), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("dwell"));
+        }
+
+        [Test]
+        public void AGrabOffsetInHeightIsNoDistance()
+        {
+            // Grabbed 12 cm below (and beside) the hand, held still for two seconds: it never was 0.1 m from where it was grabbed.
+            var solver = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz.With(new BreakAway(0.1)));
+            solver.BeginHold(At(0, 1, 0, 0), 0.08, 0.88, -0.06);
+            for (int i = 1; i <= 64; i++) solver.Step(At(0, 1, 0, i / 32.0), 1 / 32.0);
+            Assert.That(solver.IsHolding, Is.True);
+            Assert.That(solver.ObjectY, Is.EqualTo(0.88).Within(1e-9));
+        }
+
+        [Test]
+        public void AHoldBegunBeforeAnyHandIsTrackedMeasuresFromWhereTheFirstHandGrabbed()
+        {
+            // No hand at the start; the hand appears 0.3 m beside and 0.1 m above the object: that is where it grabbed,
+            // no distance. Carried 0.6 m sideways in 0.3 s, the 10 kg object trails by up to 0.1 m (as above).
+            foreach (double distance in new[] { 0.05, 0.12 })
+            {
+                var solver = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Xyz.With(new BreakAway(distance)));
+                double t = 0;
+                solver.BeginHold(HandPose.Lost, 0, 1, 0);
+                for (int i = 0; i < 4; i++) { t += 1 / 32.0; solver.Step(HandPose.Lost, 1 / 32.0); }
+                for (int i = 0; i < 16; i++) { t += 1 / 32.0; solver.Step(At(0.3, 1.1, 0, t), 1 / 32.0); }
+                Assert.That(solver.IsHolding, Is.True, "where the first hand grabbed is no distance, at " + distance + " m");
+                Assert.That(new[] { solver.ObjectX, solver.ObjectY, solver.ObjectZ }, Is.EqualTo(new[] { 0, 1.0, 0 }).Within(1e-9), "the object stayed");
+                for (int i = 0; i < 40; i++)
+                {
+                    t += 1 / 32.0;
+                    solver.Step(At(0.3 + 0.6 * Math.Min(1, i / 10.0), 1.1, 0, t), 1 / 32.0);
+                }
+                Assert.That(solver.BrokeAway, Is.EqualTo(distance < 0.1), "break-away at " + distance + " m");
+            }
+        }
+
+        [Test]
+        public void TimeWithoutAFollowedHandDoesNotCountTowardTheDwell()
+        {
+            // 10 kg lifted 0.8 m in half a second settles about 0.22 m below the hand: past a 0.15 m break-away for good.
+            // With a 1 s dwell, tracking lost 0.25 s after it went past: the two seconds of loss do not drop it; back,
+            // the hold ends once the dwell is complete, counting the time before the loss.
+            var solver = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Paper.With(new BreakAway(0.15, 1.0)));
+            double t = 0, hand = 0.9;
+            solver.BeginHold(At(0.1, hand, 0.2, t), 0.1, hand, 0.2);
+            int pose = 0, pastFrom = -1;
+            while (pastFrom < 0 || pose - pastFrom < 8)
+            {
+                pose++; t += 1 / 32.0;
+                hand = 0.9 + 0.8 * Math.Min(1, pose / 16.0);
+                solver.Step(At(0.1, hand, 0.2, t), 1 / 32.0);
+                if (pastFrom < 0 && hand - solver.ObjectY > 0.15) pastFrom = pose;
+                Assert.That(pose, Is.LessThan(64), "the lift takes the object past 0.15 m");
+            }
+            for (int i = 0; i < 64; i++)
+            {
+                t += 1 / 32.0;
+                solver.Step(HandPose.Lost, 1 / 32.0);
+                Assert.That(solver.IsHolding, Is.True, "lost for " + (i + 1) + " / 32 s");
+            }
+            int back = 0;
+            while (solver.IsHolding && back < 64) { back++; t += 1 / 32.0; solver.Step(At(0.1, hand, 0.2, t), 1 / 32.0); }
+            Assert.That(solver.BrokeAway, Is.True, "past it still, once back");
+            Assert.That(back, Is.InRange(22, 26), "after the rest of the dwell, 0.75 s = 24 poses, not a whole new second");
         }
 
         [Test]

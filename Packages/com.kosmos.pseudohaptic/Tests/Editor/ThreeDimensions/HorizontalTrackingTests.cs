@@ -77,15 +77,17 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(s.ObjectX, Is.EqualTo((reanchors ? 0.02 : 0.02 + dx)).Within(1e-12), "then followed");
         }
 
-        [TestCase(0.23, false)] // a 40 ms frame right after motion: judged over it, 6 m/s × 0.04 s = 0.24 m
-        [TestCase(0.25, true)]
-        public void ASidewaysStepIsJudgedOverTheTimeSinceTheLastSidewaysMotion(double dx, bool reanchors)
+        [TestCase(0.04, 0.23, false)] // a 40 ms frame right after motion: judged over it, 6 m/s × 0.04 s = 0.24 m
+        [TestCase(0.04, 0.25, true)]
+        [TestCase(0.01, 0.19, false)] // a 10 ms frame (two poses in one short frame): over a 30 Hz pose at least, 0.2 m
+        [TestCase(0.01, 0.21, true)]
+        public void ASidewaysStepIsJudgedOverTheTimeSinceTheLastSidewaysMotion(double frame, double dx, bool reanchors)
         {
             var s = Solver();
             double t = 0;
             s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
             t += Pose; s.Step(At(0.01, 1, 0, t), Pose);
-            t += 0.04; s.Step(At(0.01 + dx, 1, 0, t), 0.04);
+            t += frame; s.Step(At(0.01 + dx, 1, 0, t), frame);
             Assert.That(s.ObjectX, Is.EqualTo(reanchors ? 0.01 : 0.01 + dx).Within(1e-12));
         }
 
@@ -105,28 +107,46 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(new[] { s.ObjectX, s.ObjectY - 1, s.ObjectZ }, Is.EqualTo(new[] { expected, expected, expected }).Within(1e-12));
         }
 
-        [Test]
-        public void WithTheCorrectionWhatReanchoringLeftSidewaysIsPulledBack()
+        // (where the object was grabbed beside the hand, x and z), m: the pull draws it back to that grab offset, not onto the hand.
+        [TestCase(0.0, 0.0)]
+        [TestCase(0.08, -0.06)]
+        public void WithTheCorrectionWhatReanchoringLeftSidewaysIsPulledBack(double grabX, double grabZ)
         {
             var s = Solver(NamedProfiles.Paper);
             double t = 0;
-            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            s.BeginHold(At(0, 1, 0, t), grabX, 1, grabZ);
             t += Pose; s.Step(At(0, 1, 0, t), Pose);
             for (int i = 0; i < 10; i++) { t += Pose; s.Step(HandPose.Lost, Pose); }
             for (int i = 0; i < 4; i++) { t += Pose; s.Step(At(0.3, 1, 0.4, t), Pose); }         // back 0.5 m away: settles
-            double x = s.ObjectX, z = s.ObjectZ;
-            Assert.That(Math.Sqrt(x * x + z * z), Is.LessThan(0.02), "re-anchored: the object stayed (the pull began)");
+            double x = s.ObjectX, z = s.ObjectZ, goalX = 0.3 + grabX, goalZ = 0.4 + grabZ;
+            Assert.That(Math.Sqrt((x - grabX) * (x - grabX) + (z - grabZ) * (z - grabZ)), Is.LessThan(0.02), "re-anchored: the object stayed (the pull began)");
             for (int i = 0; i < 80; i++)
             {
                 t += Pose;
                 s.Step(At(0.3, 1, 0.4, t), Pose);
-                double r = Math.Sqrt((0.3 - x) * (0.3 - x) + (0.4 - z) * (0.4 - z));
+                double r = Math.Sqrt((goalX - x) * (goalX - x) + (goalZ - z) * (goalZ - z));
                 double pull = Math.Min(r, 0.5 * Math.Min(1, r / 0.1) * 0.025); // 1/32 s counts as 25 ms
-                Assert.That(s.ObjectX, Is.EqualTo(x + (0.3 - x) / r * pull).Within(1e-12), "pose " + i);
-                Assert.That(s.ObjectZ, Is.EqualTo(z + (0.4 - z) / r * pull).Within(1e-12), "pose " + i);
+                Assert.That(s.ObjectX, Is.EqualTo(x + (goalX - x) / r * pull).Within(1e-12), "pose " + i);
+                Assert.That(s.ObjectZ, Is.EqualTo(z + (goalZ - z) / r * pull).Within(1e-12), "pose " + i);
                 x = s.ObjectX; z = s.ObjectZ;
             }
-            Assert.That(Math.Sqrt((0.3 - x) * (0.3 - x) + (0.4 - z) * (0.4 - z)), Is.LessThan(0.01), "drawn back to the hand");
+            Assert.That(Math.Sqrt((goalX - x) * (goalX - x) + (goalZ - z) * (goalZ - z)), Is.LessThan(0.01), "drawn back to where it was grabbed");
+        }
+
+        [Test]
+        public void APullFastEnoughToCloseTheGapInOneFrameLandsOnTheGrabOffsetNeverPastIt()
+        {
+            // 10 m/s ramped over 0.1 m: 10 × (r / 0.1) × 25 ms = 2.5 r, more than the gap, for any gap under 0.25 m.
+            var s = Solver(NamedProfiles.Paper.With(new OffsetCorrection(pullSpeed: 10)));
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0.08, 1, -0.06);
+            t += Pose; s.Step(At(0, 1, 0, t), Pose);
+            for (int i = 0; i < 10; i++) { t += Pose; s.Step(HandPose.Lost, Pose); }
+            for (int i = 0; i < 4; i++) { t += Pose; s.Step(At(0.12, 1, 0.16, t), Pose); }      // back 0.2 m away: settles
+            Assert.That(s.ObjectX, Is.EqualTo(0.12 + 0.08).Within(1e-12), "at the grab offset beside the hand at once");
+            Assert.That(s.ObjectZ, Is.EqualTo(0.16 - 0.06).Within(1e-12));
+            t += Pose; s.Step(At(0.12, 1, 0.16, t), Pose);
+            Assert.That(new[] { s.ObjectX, s.ObjectZ }, Is.EqualTo(new[] { 0.2, 0.1 }).Within(1e-12), "and stays there");
         }
     }
 }

@@ -179,6 +179,65 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void ALowConfidenceHandIsFollowedOnlyWhereTheProfileAllowsIt()
+        {
+            // xyz's tracking-loss hold requires high confidence; without that requirement a low-confidence hand is a hand.
+            var low1 = new HandPose(-0.1, 1, 0, true, false, 0);
+            var low2 = new HandPose(0.1, 1, 0, true, false, 0);
+            var strict = TwoHanded();
+            var lenient = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz.With(new TrackingLossHold(requireHighConfidence: false)));
+
+            strict.BeginHold(At(-0.1, 1, 0, 0), low2, 0, 1, 0);
+            lenient.BeginHold(At(-0.1, 1, 0, 0), low2, 0, 1, 0);
+            for (int i = 1; i <= 8; i++)
+            {
+                strict.Step(At(-0.1, 1, 0, i * Pose), new HandPose(0.1, 1, 0, true, false, i * Pose), Pose);
+                lenient.Step(At(-0.1, 1, 0, i * Pose), new HandPose(0.1, 1, 0, true, false, i * Pose), Pose);
+            }
+            Assert.That(strict.FollowedHands, Is.EqualTo(1), "the low-confidence second hand is not followed");
+            Assert.That(strict.PerHandMassKg, Is.EqualTo(2.0), "and carries nothing");
+            Assert.That(lenient.FollowedHands, Is.EqualTo(2));
+            Assert.That(lenient.PerHandMassKg, Is.EqualTo(1.0));
+
+            Assert.That(() => strict.BeginHoldWithGrabOffset(HandPose.Lost, low2, 0, 0.1, 0), Throws.ArgumentException,
+                "a grab offset cannot be placed relative to a hand that is not followed");
+            lenient.BeginHoldWithGrabOffset(low1, HandPose.Lost, 0, 0.1, 0);
+            Assert.That(lenient.ObjectY, Is.EqualTo(0.9).Within(1e-12), "relative to the low-confidence first hand");
+            lenient.BeginHoldWithGrabOffset(HandPose.Lost, low2, 0, 0.1, 0);
+            Assert.That(lenient.ObjectY, Is.EqualTo(0.9).Within(1e-12), "or second");
+        }
+
+        [Test]
+        public void ARefusedBeginHoldChangesNothing()
+        {
+            // Bad configuration fails loudly, before anything moves: a running hold goes on as it was, a solver that
+            // was not holding still is not.
+            var fresh = TwoHanded();
+            Assert.That(() => fresh.BeginHold(At(0, 1, 0, 0), 0, double.NaN, 0), Throws.InstanceOf<ArgumentOutOfRangeException>());
+            Assert.That(fresh.IsHolding, Is.False);
+
+            var held = TwoHanded();
+            var twin = TwoHanded();
+            double t = 0;
+            held.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            twin.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            for (int i = 0; i < 20; i++)
+            {
+                t += Pose;
+                var hand = At(0.01 * i, 1 + 0.02 * i, 0, t);
+                held.Step(hand, Pose);
+                twin.Step(hand, Pose);
+                if (i == 10)
+                {
+                    Assert.That(() => held.BeginHold(At(0, 1, 0, t), 0, 2e5, 0), Throws.InstanceOf<ArgumentOutOfRangeException>());
+                    Assert.That(() => held.BeginHold(At(0, 1, 0, t), double.NaN, 1, 0), Throws.InstanceOf<ArgumentOutOfRangeException>());
+                    Assert.That(() => held.BeginHoldWithGrabOffset(At(0, 1, 0, t), HandPose.Lost, 0, double.NaN, 0), Throws.InstanceOf<ArgumentOutOfRangeException>());
+                }
+            }
+            Assert.That(new[] { held.ObjectX, held.ObjectY, held.ObjectZ }, Is.EqualTo(new[] { twin.ObjectX, twin.ObjectY, twin.ObjectZ }));
+        }
+
+        [Test]
         public void ConfigurationFailsNamingWhatIsMissingAndAMassChangeTakesEffectMidHold()
         {
             var s = new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Paper);
@@ -235,6 +294,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 "three steady frames, a drop, three more: not yet");
             Assert.That(Step(true), Is.EqualTo(2), "the fourth steady frame in a row");
             Assert.That(s.HoldingHands, Is.EqualTo(2));
+            Assert.That(s.PerHandMassKg, Is.EqualTo(1.0), "each carries its half from the frame both hold");
             Assert.That(Step(false), Is.EqualTo(1));
             Assert.That(new[] { Step(true), Step(true), Step(true), Step(true) }, Is.EqualTo(new[] { 1, 1, 1, 2 }), "back: it waits again");
 
