@@ -394,7 +394,7 @@ namespace Kosmos.PseudoHaptic
             else _ex = _ez = 0;
 
             if (!_hHas) return; // no hand seen yet: the object stays where the hold began
-            if (_pullSpeed > 0 && (_ax != _gax || _az != _gaz)) PullBack(dt);
+            if (_pullSpeed > 0) PullBack(dt);
             double x = _hPx + _ax - _ex, z = _hPz + _az - _ez;
             if (double.IsFinite(x) && double.IsFinite(z)) { _objX = x; _objZ = z; }
         }
@@ -403,12 +403,10 @@ namespace Kosmos.PseudoHaptic
         /// as the correction's pull does on y: at up to its pull speed, ramping up over five band widths.</summary>
         void PullBack(double dt)
         {
-            double rx = _ax - _gax, rz = _az - _gaz, r2 = rx * rx + rz * rz;
-            if (r2 == 0) return;
-            double r = Math.Sqrt(r2);
+            double rx = _ax - _gax, rz = _az - _gaz, r = Math.Sqrt(rx * rx + rz * rz);
             double max = _limits.MaxFrameTime, step = dt < max ? dt : max;
             double pull = _pullSpeed * (r >= _pullRamp ? 1 : r / _pullRamp) * step;
-            if (pull >= r) { _ax = _gax; _az = _gaz; }
+            if (pull >= r) { _ax = _gax; _az = _gaz; } // also at r = 0, where the ramp gives pull = 0
             else { double k = 1 - pull / r; _ax = _gax + rx * k; _az = _gaz + rz * k; }
         }
 
