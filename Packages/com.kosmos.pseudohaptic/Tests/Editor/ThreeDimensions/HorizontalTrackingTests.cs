@@ -91,6 +91,22 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(s.ObjectX, Is.EqualTo(reanchors ? 0.01 : 0.01 + dx).Within(1e-12));
         }
 
+        [TestCase(0.29, false)] // still for 0.1 s, then a 10 ms frame: judged over at most 50 ms, 6 m/s × 0.05 s = 0.3 m
+        [TestCase(0.31, true)]
+        public void AfterStillnessASidewaysStepIsJudgedOverTheLongestWindow(double dx, bool reanchors)
+        {
+            // Still frames (new poses, no sideways motion) do not restart the window; a sideways step does.
+            var s = Solver();
+            double t = 0;
+            s.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            t += Pose; s.Step(At(0, 1, 0.01, t), Pose);
+            for (int i = 0; i < 9; i++) { t += 0.01; s.Step(At(0, 1, 0.01, t), 0.01); }
+            t += 0.01; s.Step(At(dx, 1, 0.01, t), 0.01);
+            Assert.That(s.ObjectX, Is.EqualTo(reanchors ? 0 : dx).Within(1e-12));
+            t += 0.01; s.Step(At(dx, 1, 0.01 + 0.21, t), 0.01);
+            Assert.That(s.ObjectZ, Is.EqualTo(0.01).Within(1e-12), "10 ms after the step in x, a 0.21 m step in z is judged over 1/30 s: re-anchored (the object stays)");
+        }
+
         // Without the tracking-loss hold, x/z treat a loss as y's estimator does: a short one is caught up, a longer one
         // than the catch-up gap (0.25 s = 8 poses) re-anchors, whatever the hand did meanwhile.
         [TestCase(8, false)]
