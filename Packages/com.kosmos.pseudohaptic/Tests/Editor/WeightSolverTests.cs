@@ -120,15 +120,6 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.Step(new HandSample(1.25, true, true, t), Pose), Is.EqualTo(0.75).Within(1e-12), "then followed from where the object is");
         }
 
-        /// <summary>A scene's own input effect that notes the pose time each frame shows it.</summary>
-        sealed class PoseTimeProbe : WeightEffect
-        {
-            public double Seen;
-            public override string Name => "pose-time-probe";
-            public override EffectStage Stage => EffectStage.Input;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Seen = frame.PoseTime;
-        }
-
         [TestCase(1.25, 1.25)]
         [TestCase(double.NaN, double.NaN)]
         [TestCase(double.PositiveInfinity, double.NaN)]
@@ -136,11 +127,11 @@ namespace Kosmos.PseudoHaptic.Tests
         public void AnEffectSeesThePoseTimeFiniteOrNaNNeverInfinite(double given, double seen)
         {
             // MotionFrame.PoseTime's contract for a scene's own effects: a source without a usable clock reads as NaN.
-            var probe = new PoseTimeProbe();
+            var probe = new FrameProbe();
             var s = new WeightSolver(WeightModel.FromMass(2), new WeightProfile("probe", new WeightEffect[] { probe }));
             s.BeginHold(1.0, 1.0, 0);
             s.Step(new HandSample(1.01, true, true, given), Pose);
-            Assert.That(probe.Seen, Is.EqualTo(seen));
+            Assert.That(probe.Last.PoseTime, Is.EqualTo(seen));
         }
 
         [Test]

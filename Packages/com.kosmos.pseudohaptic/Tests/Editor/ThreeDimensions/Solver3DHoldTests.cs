@@ -207,15 +207,6 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(lenient.ObjectY, Is.EqualTo(0.9).Within(1e-12), "or second");
         }
 
-        /// <summary>A scene's own input effect that notes the confidence each frame shows it.</summary>
-        sealed class ConfidenceProbe : WeightEffect
-        {
-            public bool Seen;
-            public override string Name => "confidence-probe";
-            public override EffectStage Stage => EffectStage.Input;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Seen = frame.IsHighConfidence;
-        }
-
         [TestCase(true, true, true)]
         [TestCase(true, false, false)]
         [TestCase(false, true, false)]
@@ -223,12 +214,12 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         {
             // Without the tracking-loss hold's requirement both hands are followed whatever their confidence; what a
             // scene's own effect reads as the frame's confidence is that of the least confident.
-            var probe = new ConfidenceProbe();
+            var probe = new FrameProbe();
             var s = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz.Without<TrackingLossHold>().With(probe));
             s.BeginHold(At(-0.1, 1, 0, 0), At(0.1, 1, 0, 0), 0, 1, 0);
             s.Step(new HandPose(-0.1, 1, 0, true, first, Pose), new HandPose(0.1, 1, 0, true, second, Pose), Pose);
             Assert.That(s.FollowedHands, Is.EqualTo(2));
-            Assert.That(probe.Seen, Is.EqualTo(seen));
+            Assert.That(probe.Last.IsHighConfidence, Is.EqualTo(seen));
         }
 
         [Test]
