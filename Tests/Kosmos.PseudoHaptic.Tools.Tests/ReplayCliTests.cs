@@ -181,13 +181,15 @@ public class ReplayCliTests : CliTestFolder
             Assert.That(code, Is.EqualTo(0), err);
             var rows = ReadCsv(Out);
             if (profile == "paper")
-                Assert.That(rows.Select(r => Math.Abs(D(r["offset"]))), Is.All.LessThanOrEqualTo(0.25), "the correction keeps every offset at most 0.25 m");
+                Assert.That(rows.Select(r => Math.Abs(D(r["offset"]))), Is.All.LessThanOrEqualTo(0.2 * 1.3 + 0.02), "the correction keeps every offset within its stated ceiling");
             return D(rows[^1]["object_y"]) - D(rows[0]["object_y"]);
         }
-        // Both at the same hand height (0.8 + rise), the hand at rest for 1 s. Before the fix, under paper, 2 kg rose
-        // 17.0 cm on a 0.4 m lift whether it took 2 s or 0.3 s.
-        Assert.That(End(0.3, "0.5"), Is.GreaterThan(End(2, "0.5") + 0.005), mass + " kg: the 0.3 s lift rises further than the 2 s one");
-        Assert.That(End(1, "0.3"), Is.GreaterThan(End(1, "1.0") + 0.005), mass + " kg: the user with the lower v_std moves it further");
+        // Both at the same hand height (0.8 + rise), the hand at rest for 1 s. Without the correction faster moves further by
+        // centimetres; under it these lifts reach the ceiling, where the offset is the same whatever the pace (issue 22, rule 4:
+        // never lower).
+        double margin = profile == "paper" ? -0.001 : 0.005;
+        Assert.That(End(0.3, "0.5"), Is.GreaterThan(End(2, "0.5") + margin), mass + " kg: the 0.3 s lift against the 2 s one");
+        Assert.That(End(1, "0.3"), Is.GreaterThan(End(1, "1.0") + margin), mass + " kg: the user with the lower v_std against the higher");
         Assert.That(End(0.3, "0.5"), Is.LessThan(rise), mass + " kg: still heavier than the hand");
     }
 

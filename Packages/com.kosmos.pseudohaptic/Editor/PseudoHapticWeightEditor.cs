@@ -59,7 +59,8 @@ namespace Kosmos.PseudoHaptic.Editor
             EditorGUILayout.LabelField("x / z", profile.Has<LateralInertia>() ? "the solver's (lateral inertia: trails the hand)" : "the grab's (follows the hand)");
             EditorGUILayout.LabelField("Each of two hands carries", F(model.MassKg * (twoHands != null ? twoHands.Share : 1), "0.###") + " kg"
                 + (twoHands != null ? "" : "  (no Two Hands effect: the whole mass)"));
-            EditorGUILayout.LabelField("Break-away", breakAway != null ? "beyond " + F(breakAway.Distance * 100, "0.#") + " cm for " + F(breakAway.Dwell, "0.###") + " s" : "off");
+            EditorGUILayout.LabelField("Break-away", breakAway == null ? "off" : (profile.Has<OffsetCorrection>() ? "a strain of " : "a pull of ")
+                + F(breakAway.Distance * 100, "0.#") + " cm, two poses in a row");
 
             DrawCurve(profile, speed, model.MassKg, preview.Gain);
 

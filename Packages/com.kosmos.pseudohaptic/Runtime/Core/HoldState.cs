@@ -3,6 +3,9 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// Everything a hold remembers between frames, as plain values: copying it snapshots the hold.
     /// Effects keep their few numbers here, so the effect objects stay immutable and shareable.
+    /// What the weight remembers of the hand is only where the lift started (<see cref="Base"/>) and the pace of
+    /// the lift (<see cref="Pace"/>): the offset is a function of them and of where the hand is now, so a motion
+    /// that comes back leaves no trace, and neither does anything tracking does.
     /// </summary>
     public struct HoldState
     {
@@ -20,7 +23,7 @@ namespace Kosmos.PseudoHaptic
         /// hand and object together. The solver and its effects move this; <see cref="ObjectY"/> follows it.</summary>
         public double HeldY;
 
-        /// <summary><see cref="HeldY"/> when the hold began, m (<see cref="HeightDeceleration"/> measures from it).</summary>
+        /// <summary>The hand's height when the hold began (or when the first pose of a hold begun untracked came), m.</summary>
         public double StartY;
 
         /// <summary>Frame time since the hold began, s (double: it never loses the millisecond in hours).</summary>
@@ -32,11 +35,31 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The estimator's memory: the last followed pose and when.</summary>
         public PoseDeltaEstimator Estimator;
 
-        /// <summary>The hand height the object follows, m: the last pose, or its filtered value when the profile has a filter.</summary>
+        /// <summary>The hand height the object follows, m: the last accepted pose, or its filtered value.</summary>
         public double HandY;
 
-        /// <summary>Displacement the speed limit has not yet applied, m.</summary>
-        public double Carry;
+        /// <summary>Where the lift is measured from, m: the hand's height at the grab, moved down by
+        /// <see cref="LoweringGuard"/> and up by <see cref="OffsetRelaxation"/>.</summary>
+        public double Base;
+
+        /// <summary>The last accepted poses (newest first) and how many have come since the hold began or tracking
+        /// came back: <see cref="SteadyY"/> is their median.</summary>
+        public double Pose1, Pose2;
+        public int PoseCount;
+
+        /// <summary>The grab's pose has not yet been checked against the next two (a hold begun on a glitched pose).</summary>
+        public bool AnchorPending;
+
+        /// <summary>The hand as the hold remembers it (<see cref="MotionFrame.SteadyHand"/>), m.</summary>
+        public double SteadyY;
+
+        /// <summary>The offset the object shows beyond the weight's, m, gliding back to 0 at
+        /// <see cref="SolverLimits.GlideSpeed"/>: what a change of mass or profile during the hold left.</summary>
+        public double Glide;
+
+        /// <summary>The weight's offset and the hand it read, last frame, m: a change of the offset the hand's motion does not
+        /// explain glides.</summary>
+        public double LastOffset, LastHand;
 
         /// <summary><see cref="MotionDeadband"/>: the hand height the deadband follows.</summary>
         public double DeadbandReference;
@@ -47,22 +70,38 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="TrackingLossHold"/>: how long the current loss has lasted, s (0 while tracked).</summary>
         public double LostFor;
 
-        /// <summary><see cref="SpeedCap"/>: motion the cap has deferred, m.</summary>
-        public double CapDeferred;
-
-        /// <summary><see cref="LoweringGuard"/>: what it added to the object's motion and may give back, m, and how long ago it acted, s.</summary>
-        public double GuardDebt;
-        public double GuardAge;
-
-        /// <summary><see cref="FasterMovesFurther"/>: the hand height its speed judgement follows, m.</summary>
-        public double PaceReference;
-
-        /// <summary><see cref="FasterMovesFurther"/>: the hand's smoothed speed, m/s.</summary>
+        /// <summary><see cref="FasterMovesFurther"/>: the lift's pace, m/s (the fastest mean speed of its rise so far),
+        /// 0 while the hand rests at the base.</summary>
         public double Pace;
 
-        /// <summary><see cref="FasterMovesFurther"/>: the pace of the latest motion, m/s, held (not decayed) while the hand
-        /// rests; <see cref="OffsetCorrection"/> scales its threshold by it.</summary>
-        public double HeldPace;
+        /// <summary><see cref="FasterMovesFurther"/>: the gain at <see cref="Pace"/> (recomputed only when the pace changes).</summary>
+        public double PaceGain;
+
+        /// <summary><see cref="FasterMovesFurther"/>: ln G that <see cref="PaceGain"/> was computed for (NaN: not yet).</summary>
+        public double PaceGainOf;
+
+        /// <summary><see cref="FasterMovesFurther"/>: where and when the current rise left the base, its highest point so
+        /// far and when it got there, and whether the pace is settled (the rise paused).</summary>
+        public double RiseStartLift, RiseStartTime, RiseTop, RiseTopTime;
+
+        /// <summary><see cref="FasterMovesFurther"/>: the steady lift last seen and when.</summary>
+        public double PaceSeenLift, PaceSeenTime;
+
+        /// <summary><see cref="FasterMovesFurther"/>: time that gaps in tracking hid from a rise, s: the rise's clock runs that much
+        /// behind the hold's.</summary>
+        public double PaceClockSkip;
+        public bool PaceSettled;
+
+        /// <summary><see cref="SpeedCap"/>: where the object may be at its capped speed (held height, m), the motion it
+        /// may still make this pose (m), and whether it has begun.</summary>
+        public double CappedY, CapBudget;
+        public bool CapStarted;
+
+        /// <summary><see cref="SpeedCap"/>: the weight's target height of the last frame, m.</summary>
+        public double CapTarget;
+
+        /// <summary>How far the hand has pulled beyond what the weight allows, m (the speed cap's lag; 0 without it).</summary>
+        public double Strain;
 
         /// <summary>hand − object, m: positive when the object is below the hand.</summary>
         public double Offset => HandY - ObjectY;

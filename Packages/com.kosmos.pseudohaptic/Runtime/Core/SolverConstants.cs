@@ -6,7 +6,7 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public readonly struct SolverConstants
     {
-        /// <summary>G: the object's displacement per metre of hand displacement.</summary>
+        /// <summary>G: the object's displacement per metre of hand displacement (Eq. 4–6, capped).</summary>
         public readonly double Gain;
 
         /// <summary>The user's standard speed v_std, m/s.</summary>
@@ -23,16 +23,14 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Distance from the object's pivot down to its lowest point, m (<see cref="WeightSolver.BottomBelowPivot"/>).</summary>
         public readonly double BottomBelowPivot;
 
-        /// <summary>ln G, for effects that reshape the gain per frame (<see cref="FasterMovesFurther"/>); −∞ when G is 0.</summary>
+        /// <summary>ln G, for effects that reshape the gain (<see cref="FasterMovesFurther"/>); −∞ when G is 0.</summary>
         public readonly double LogGain;
-
-        public SolverConstants(double gain, double standardSpeed, double capSpeed, double deadbandWidth, SolverLimits limits)
-            : this(gain, standardSpeed, capSpeed, deadbandWidth, limits, 0) { }
 
         /// <summary><see cref="OffsetCorrection"/>'s threshold for this object, m (<see cref="OffsetCorrection.ThresholdFor"/>; 0 without it).</summary>
         public readonly double OffsetThreshold;
 
-        public SolverConstants(double gain, double standardSpeed, double capSpeed, double deadbandWidth, SolverLimits limits, double bottomBelowPivot, double offsetThreshold = 0)
+        public SolverConstants(double gain, double standardSpeed, double capSpeed, double deadbandWidth, SolverLimits limits,
+            double bottomBelowPivot = 0, double offsetThreshold = 0)
         {
             BottomBelowPivot = bottomBelowPivot;
             OffsetThreshold = offsetThreshold;
@@ -43,5 +41,9 @@ namespace Kosmos.PseudoHaptic
             DeadbandWidth = deadbandWidth;
             Limits = limits;
         }
+
+        /// <summary>The same constants for another pivot depth.</summary>
+        internal SolverConstants WithBottomBelowPivot(double bottom)
+            => new SolverConstants(Gain, StandardSpeed, CapSpeed, DeadbandWidth, Limits, bottom, OffsetThreshold);
     }
 }

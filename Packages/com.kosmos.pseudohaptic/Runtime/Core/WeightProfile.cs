@@ -20,6 +20,8 @@ namespace Kosmos.PseudoHaptic
         internal readonly WeightEffect[] _all;
         internal readonly WeightEffect[] InputEffects;
         internal readonly WeightEffect[] HandEffects;
+        internal readonly WeightEffect[] BaseEffects;
+        internal readonly WeightEffect[] LiftEffects;
         internal readonly WeightEffect[] ObjectEffects;
         internal readonly WeightEffect[] PositionEffects;
 
@@ -48,6 +50,8 @@ namespace Kosmos.PseudoHaptic
             _all = sorted.ToArray();
             InputEffects = OfStage(EffectStage.Input);
             HandEffects = OfStage(EffectStage.HandMotion);
+            BaseEffects = OfStage(EffectStage.Base);
+            LiftEffects = OfStage(EffectStage.Lift);
             ObjectEffects = OfStage(EffectStage.ObjectMotion);
             PositionEffects = OfStage(EffectStage.Position);
         }

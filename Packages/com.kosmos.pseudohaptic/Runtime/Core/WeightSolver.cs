@@ -5,9 +5,13 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The pseudo-haptic weight solver of Son et al. 2022 for one held object: given the tracked hand each
     /// frame, it returns the object's new height so that a heavier object lags behind the hand and a lighter
-    /// one leads it. Per frame: pose → input effects → estimator (→ hand filter, if the profile has one) →
-    /// hand-motion effects → gain → object-motion effects → speed limit → position effects. Configuration validates and throws; <see cref="Step"/> never
-    /// throws, never allocates, and always returns a finite height.
+    /// one leads it. The offset between hand and object has one source: the weight applied to how far the hand
+    /// has lifted the object (the lift, from the <see cref="HoldState.Base"/>), so it is a function of where the
+    /// hand is, not of the path it took: a motion that comes back, and anything tracking does, leaves no trace.
+    /// Per frame: pose → input effects → estimator (→ hand filter, if the profile has one) → hand-motion effects →
+    /// base effects → lift effects → offset = lift − gain × carried lift → object-motion effects → object height →
+    /// position effects. Configuration validates and throws; <see cref="Step"/> never throws, never allocates, and
+    /// always returns a finite height.
     /// </summary>
     public sealed class WeightSolver
     {
@@ -40,6 +44,11 @@ namespace Kosmos.PseudoHaptic
         /// <summary>hand − object, m: positive when the object hangs below the hand.</summary>
         public double Offset => _state.Offset;
 
+        /// <summary>How far the hand has pulled beyond what the weight allows, m: the lag the speed cap holds the object
+        /// behind the weight's own offset (0 without <see cref="SpeedCap"/>). <see cref="BreakAway"/> reads it under the
+        /// offset correction.</summary>
+        public double Strain => _state.Strain;
+
         /// <summary>hand − object when the hold began, m: the effects act on <see cref="Offset"/> less this.</summary>
         public double GrabOffset => _state.GrabOffset;
 
@@ -58,8 +67,7 @@ namespace Kosmos.PseudoHaptic
             {
                 ConfigurationGuard.InRange(value, 0, MaxCoordinate, nameof(BottomBelowPivot));
                 _bottomBelowPivot = value;
-                var c = _constants;
-                _constants = new SolverConstants(c.Gain, c.StandardSpeed, c.CapSpeed, c.DeadbandWidth, c.Limits, value, c.OffsetThreshold);
+                _constants = _constants.WithBottomBelowPivot(value);
             }
         }
 
@@ -128,21 +136,24 @@ namespace Kosmos.PseudoHaptic
             bool raised = objectY < lowest;
             if (raised) objectY = lowest;
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime, objectY);
-            _state.HandY = handOk ? handY : objectY;
-            if (handOk)
-            {
-                _state.GrabOffset = !raised && double.IsFinite(exactGrabOffset) ? exactGrabOffset : handY - objectY;
-                _state.HeldY = handY;
-            }
-            else
-            {
-                _state.GrabOffset = 0;
-                _state.HeldY = objectY;
-            }
+            _state.GrabOffset = handOk ? (!raised && double.IsFinite(exactGrabOffset) ? exactGrabOffset : handY - objectY) : 0;
             _state.ObjectY = objectY;
-            _state.StartY = _state.HeldY;
-            _filter?.Reset(_state.HandY);
-            ResetEffects(_state.HandY);
+            Anchor(handOk ? handY : objectY);
+        }
+
+        /// <summary>The hold starts (or, for a hold begun untracked, restarts at its first pose) with the hand at
+        /// <paramref name="handY"/>: the lift is measured from here and the object is where it is.</summary>
+        void Anchor(double handY)
+        {
+            _state.HandY = handY;
+            _state.HeldY = _state.ObjectY + _state.GrabOffset;
+            _state.StartY = _state.Base = _state.SteadyY = _state.Pose1 = _state.Pose2 = handY;
+            _state.PoseCount = 1;
+            _state.AnchorPending = true;
+            _state.Glide = _state.LastOffset = 0;
+            _state.LastHand = handY;
+            _filter?.Reset(handY);
+            ResetEffects(handY);
         }
 
         /// <summary>Ends the hold; further steps return the object's last height.</summary>
@@ -170,6 +181,7 @@ namespace Kosmos.PseudoHaptic
                 IsHighConfidence = sample.IsHighConfidence,
                 Usable = sample.IsUsable,
                 ObjectY = _state.HeldY,
+                OffsetCeiling = double.PositiveInfinity,
             };
 
             var effects = Profile.InputEffects;
@@ -178,12 +190,9 @@ namespace Kosmos.PseudoHaptic
             _state.Estimator.Update(ref f, limits);
             if (f.Reanchored)
             {
-                // The hand moved, the object did not: to the effects the hand was already there (an offset this
-                // leaves is not motion to follow; the offset correction draws it back at its own pace).
-                f.HandBefore = f.HandAfter;
-                _state.Carry = 0;
-                _filter?.Reset(f.HandAfter);
-                ResetEffects(f.HandAfter);
+                // The first pose of a hold begun untracked: the grab is here; the object has not moved.
+                _state.GrabOffset = f.HandAfter - _state.ObjectY;
+                Anchor(f.HandAfter);
             }
             else if (_filter != null)
             {
@@ -192,34 +201,41 @@ namespace Kosmos.PseudoHaptic
                 f.HandFiltered = true;
                 if (f.Usable && _state.Estimator.HasPose)
                 {
-                    double filtered = _filter.Filter(f.HandAfter, f.MotionInterval > 0, f.MotionInterval, dt);
+                    double filtered = _filter.Filter(f.HandAfter, f.NewPose, f.MotionInterval, dt);
                     if (double.IsFinite(filtered)) f.HandAfter = filtered;
-                    else { _filter.Reset(f.HandAfter); }
+                    else _filter.Reset(f.HandAfter);
                 }
                 else f.HandAfter = _state.HandY;
                 f.HandDelta = f.HandAfter - f.HandBefore;
             }
             _state.HandY = f.HandAfter;
-            f.PoseHandBefore = f.HandBefore;
-            f.PoseHandAfter = f.HandAfter;
+            if (f.NewPose && !f.Reanchored) Remember(ref f);
+            f.SteadyHand = _state.SteadyY;
+            f.WeightHand = f.HandAfter;
 
             effects = Profile.HandEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            f.ObjectDelta = _constants.Gain * f.HandDelta;
-            f.Carry = _state.Carry;
+            f.Lift = f.WeightHand - _state.Base;
+            effects = Profile.BaseEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
+            f.Gain = _constants.Gain;
+            f.CarriedLift = f.Lift;
+            effects = Profile.LiftEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            // The weight: the object rises Gain times the lift it carries; the rest of the lift is the offset.
+            f.Offset = f.Lift - f.Gain * f.CarriedLift;
             effects = Profile.ObjectEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            // Speed limit: motion beyond it is carried to the next frames, never dropped as a jump.
-            double carry = f.TotalDelta;
-            // Judged over the pose's interval when a pose arrived, so a 30 Hz pose under 120 Hz frames is not a spike.
-            double maxStep = limits.MaxObjectSpeed * Math.Min(Math.Max(f.MotionInterval, dt), limits.MaxFrameTime);
-            double step = Math.Min(Math.Max(carry, -maxStep), maxStep);
-            carry -= step;
-            _state.Carry = Math.Min(Math.Max(carry, -limits.MaxCarry), limits.MaxCarry);
-            f.NewObjectY = _state.HeldY + step;
+            double shown = f.Offset + GlideOffset(in f, dt);
+            _state.LastOffset = f.Offset;
+            _state.LastHand = f.WeightHand;
+            if (shown > f.OffsetCeiling) shown = f.OffsetCeiling;
+            else if (shown < -f.OffsetCeiling) shown = -f.OffsetCeiling;
+            f.NewObjectY = f.WeightHand - shown; // the hand the weight reads: a light object does not shimmer with jitter the deadband swallowed
 
             effects = Profile.PositionEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
@@ -229,9 +245,59 @@ namespace Kosmos.PseudoHaptic
                 _state.HeldY = f.NewObjectY;
                 _state.ObjectY = f.NewObjectY - _state.GrabOffset;
             }
-            else _state.Carry = 0; // unreachable with the built-in effects; a custom one must not poison the transform
-            if (!double.IsFinite(_state.Carry)) _state.Carry = 0;
             return _state.ObjectY;
+        }
+
+        /// <summary>The hand as the hold remembers it: the median of the last three poses since tracking came back
+        /// (a one-pose glitch never reaches it), not counting poses while tracking settles.</summary>
+        void Remember(ref MotionFrame f)
+        {
+            // After a gap, or poses not to be remembered, the window starts over: no pose from before it is its neighbour.
+            if (f.Bridged || f.Settling) { _state.PoseCount = 0; _state.AnchorPending = false; }
+            if (f.Settling) return;
+            double y = f.HandAfter, a = _state.Pose1, b = _state.Pose2;
+            _state.Pose2 = a;
+            _state.Pose1 = y;
+            if (_state.PoseCount < 3) _state.PoseCount++;
+            if (_state.PoseCount < 3) return;
+            double median = Math.Max(Math.Min(y, a), Math.Min(Math.Max(y, a), b));
+            if (_state.AnchorPending) SettleAnchor(b, median);
+            f.SteadyTaken = true;
+            _state.SteadyY = median;
+        }
+
+        /// <summary>
+        /// The first three poses of the hold: the lift is measured from their median, not from the grab's own pose, which
+        /// may be a glitch (a hold that began on a glitched pose would otherwise keep the glitch as weight for good). The
+        /// grab offset stays: the object was placed against the hand as it was seen. A hand that moved through the three
+        /// poses moves the base by a pose's worth of motion; any change of the offset this makes glides.
+        /// </summary>
+        void SettleAnchor(double p0, double median)
+        {
+            _state.AnchorPending = false;
+            _state.Base += median - p0;
+            _state.StartY += median - p0;
+        }
+
+        /// <summary>
+        /// The weight's offset changes with the hand, at most as fast as the hand moves (times a light object's lead). A change
+        /// the hand's motion does not explain (a change of mass or profile during the hold, such as a second hand joining; the
+        /// lift's pace settling after a loss; the base settling on the first poses or relaxing) would move the object while
+        /// the hand does not: the object first stays, and the difference glides away at <see cref="SolverLimits.GlideSpeed"/>.
+        /// </summary>
+        double GlideOffset(in MotionFrame f, double dt)
+        {
+            double change = f.Offset - _state.LastOffset;
+            // The most the weight's offset moves per metre of lift: 1 − G (a lead of G − 1 for a light object), or up to 1
+            // where the height deceleration shapes the lift it carries.
+            double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
+            double explained = Math.Abs(f.WeightHand - _state.LastHand) * slope; // the hand's motion, not the base's
+            double excess = change > explained ? change - explained : (change < -explained ? change + explained : 0);
+            double g = _state.Glide - excess;
+            double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);
+            g = g > step ? g - step : (g < -step ? g + step : 0);
+            _state.Glide = double.IsFinite(g) ? g : 0;
+            return _state.Glide;
         }
 
         void ResetEffects(double handY)

@@ -20,8 +20,8 @@ namespace Kosmos.PseudoHaptic
         TwoHands _twoHands;
         LateralInertia _inertia;
         BreakAway _breakAway;
-        double _settleTime, _tauOne, _tauTwo, _tau, _pullSpeed, _pullRamp;
-        bool _requireHighConfidence, _lossHold;
+        double _settleTime, _tauOne, _tauTwo, _tau;
+        bool _corrected;
         SolverLimits _limits;
 
         // The hold.
@@ -33,19 +33,24 @@ namespace Kosmos.PseudoHaptic
         bool _anchorFromPoint;               // the last followed hand let go: anchor the next set at the followed point
         double _join1, _join2;               // steady tracking while waiting to join the other hand, s
         double _k1x, _k1y, _k1z, _k2x, _k2y, _k2z; // each hand's last followable position
+        Reach _reach1, _reach2;              // whether a hand could have got to its next pose
         double _cx, _cy, _cz;                // anchor: followed point = hands' mean + c
         double _vx, _vy, _vz;                // the followed point
         int _usableHands;
 
-        // x/z: object = followed point + A − e.
+        // x/z: object = followed point + A − shown lag, the lag driven by the steady followed point.
         bool _hHas;
-        double _ax, _az, _ex, _ez, _hLostFor, _hSettle = -1, _hSince, _hPx, _hPz;
-        double _gax, _gaz;                   // A when the hand was first followed: re-anchoring moves A away from it
+        double _ax, _az;                     // object − followed point at the grab, horizontally
+        double _ex, _ez;                     // the lateral lag, as the inertia model has it
+        double _sx, _sz;                     // the shown lag: the lag bounded by a saturating curve
         double _objX, _objZ;
+        double _px, _py, _pz, _pt;           // the followed point and pose time of the last frame (a new pose changes them)
+        double _x1, _x2, _z1, _z2, _steadyX, _steadyZ; // the last followed points and their median
+        int _steadyCount;
 
         // Break-away.
-        bool _hasGrab;
-        double _gx, _gy, _gz, _beyondFor;
+        bool _hasGrab, _beyond;
+        double _gx, _gy, _gz;
 
         public WeightSolver3D(WeightModel model, WeightProfile profile = null, double standardSpeed = WeightSolver.DefaultStandardSpeed)
         {
@@ -86,9 +91,37 @@ namespace Kosmos.PseudoHaptic
         public double FollowedY => _vy;
         public double FollowedZ => _vz;
 
-        /// <summary>The horizontal lag of <see cref="LateralInertia"/>, m (0 without it).</summary>
-        public double LagX => _ex;
-        public double LagZ => _ez;
+        /// <summary>The horizontal lag of <see cref="LateralInertia"/> the user sees, m (0 without it).</summary>
+        public double LagX => _sx;
+        public double LagZ => _sz;
+
+        /// <summary>
+        /// How far the hand has pulled beyond what the weight allows, m: the y solver's <see cref="WeightSolver.Strain"/>
+        /// (the speed cap's lag) and, sideways, how far <see cref="LateralInertia"/>'s lag exceeds the lag it shows, combined
+        /// in 3D. Under the offset correction this is what <see cref="BreakAway"/> measures.
+        /// </summary>
+        public double Strain
+        {
+            get
+            {
+                double tx = _ex + _vx - _steadyX, tz = _ez + _vz - _steadyZ;
+                double lateral = _tau > 0 ? Math.Sqrt(tx * tx + tz * tz) - Math.Sqrt(_sx * _sx + _sz * _sz) : 0, y = _y.Strain;
+                return Math.Sqrt(y * y + lateral * lateral);
+            }
+        }
+
+        /// <summary>What <see cref="BreakAway"/> compares with its distance, m: <see cref="Strain"/> under the offset
+        /// correction; otherwise the distance between the followed point and the object, less the one at the grab.</summary>
+        public double BreakAwayMeasure
+        {
+            get
+            {
+                if (!_hasGrab) return 0;
+                if (_corrected) return Strain;
+                double dx = _vx - _objX - _gx, dy = _vy - _y.ObjectY - _gy, dz = _vz - _objZ - _gz;
+                return Math.Sqrt(dx * dx + dy * dy + dz * dz);
+            }
+        }
 
         /// <summary>Metres from the pivot down to the object's lowest point (the y solver's; the floor keeps the bottom above the support).</summary>
         public double BottomBelowPivot { get => _y.BottomBelowPivot; set => _y.BottomBelowPivot = value; }
@@ -98,6 +131,11 @@ namespace Kosmos.PseudoHaptic
         {
             if (model == null) throw new ArgumentNullException(nameof(model));
             if (profile == null) throw new ArgumentNullException(nameof(profile));
+            var breakAway = profile.Find<BreakAway>();
+            if (breakAway != null && profile.Has<OffsetCorrection>() && !profile.Has<SpeedCap>() && !profile.Has<LateralInertia>())
+                throw new ArgumentException("profile '" + profile.Name + "': under the offset correction break-away measures how far the hand " +
+                    "pulls beyond what the weight allows (the speed cap's lag, or the lateral inertia's beyond its bound); with neither " +
+                    "in the profile it could never fire.", nameof(profile));
             var twoHands = profile.Find<TwoHands>();
             var perHand = twoHands != null ? WeightModel.FromMass(model.MassKg * twoHands.Share, model.Curve) : model;
             _y.Configure(model, profile, standardSpeed);
@@ -115,12 +153,8 @@ namespace Kosmos.PseudoHaptic
             _tauOne = tauOne;
             _tauTwo = tauTwo;
             _settleTime = loss != null ? loss.SettleTime : 0;
-            _requireHighConfidence = loss != null && loss.RequireHighConfidence;
-            _lossHold = loss != null;
             _limits = profile.Limits;
-            var correction = profile.Find<OffsetCorrection>();
-            _pullSpeed = correction != null ? correction.PullSpeed : 0;
-            _pullRamp = correction != null ? 5 * correction.Band : 1;
+            _corrected = profile.Has<OffsetCorrection>();
             ApplyMass(force: true, standardSpeed);
         }
 
@@ -152,22 +186,22 @@ namespace Kosmos.PseudoHaptic
             ConfigurationGuard.InRange(objectX, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(objectX));
             ConfigurationGuard.InRange(objectZ, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, nameof(objectZ));
             bool withOffset = !double.IsNaN(grabOffsetY);
-            if (withOffset && !(first.IsUsable && (!_requireHighConfidence || first.IsHighConfidence))
-                && !(_twoHands != null && second.IsUsable && (!_requireHighConfidence || second.IsHighConfidence)))
+            if (withOffset && !first.IsUsable && !(_twoHands != null && second.IsUsable))
                 throw new ArgumentException("first: a grab offset needs a followable hand to place the object relative to.", nameof(first));
             _holding = true;
             _brokeAway = false;
             _grip1 = _grip2 = true;
             _holds1 = _holds2 = _in1 = _in2 = _last1 = _last2 = _anchorFromPoint = false;
             _join1 = _join2 = 0;
+            _reach1.Reset();
+            _reach2.Reset();
             _cx = _cy = _cz = 0;
             _hHas = false;
-            _ax = _az = _ex = _ez = _hLostFor = _hSince = 0;
-            _hSettle = -1;
+            _ax = _az = _ex = _ez = _sx = _sz = 0;
+            _steadyCount = 0;
             _objX = objectX;
             _objZ = objectZ;
-            _hasGrab = false;
-            _beyondFor = 0;
+            _hasGrab = _beyond = false;
 
             Select(first, second, first.IsUsable, second.IsUsable, 0, begin: true);
             ApplyMass(force: false, _y.StandardSpeed);
@@ -175,12 +209,7 @@ namespace Kosmos.PseudoHaptic
             {
                 if (withOffset) _y.BeginHoldWithGrabOffset(_vy, grabOffsetY, PoseTime(first, second));
                 else _y.BeginHold(_vy, objectY, PoseTime(first, second));
-                _hHas = true;
-                _hPx = _vx;
-                _hPz = _vz;
-                _ax = _gax = objectX - _vx;
-                _az = _gaz = objectZ - _vz;
-                Grab();
+                Anchor();
             }
             else _y.BeginHold(double.NaN, objectY);
             _usableHands = (first.IsUsable ? 1 : 0) + (second.IsUsable ? 1 : 0);
@@ -198,8 +227,8 @@ namespace Kosmos.PseudoHaptic
         public void SetGrip(int hand, bool grips)
         {
             if (hand != 1 && hand != 2) throw new ArgumentOutOfRangeException(nameof(hand), hand, "hand must be 1 or 2, got " + hand + ".");
-            if (hand == 1) { _grip1 = grips; if (!grips) _holds1 = false; }
-            else { _grip2 = grips; if (!grips) _holds2 = false; }
+            if (hand == 1) { _grip1 = grips; if (!grips) { _holds1 = false; _reach1.Reset(); } }
+            else { _grip2 = grips; if (!grips) { _holds2 = false; _reach2.Reset(); } }
             if (!grips) Forget(hand);
             ApplyMass(force: false, _y.StandardSpeed);
         }
@@ -236,34 +265,44 @@ namespace Kosmos.PseudoHaptic
             else if (!(dt > 0)) dt = 0;
 
             bool holdsBefore = _holds1 && _holds2;
+            bool was1 = _in1, was2 = _in2;
             Select(first, second, u1, u2, dt, begin: false);
             if (holdsBefore != (_holds1 && _holds2)) ApplyMass(force: false, _y.StandardSpeed);
 
-            // y: the followed point, or the first hand as it came when nothing is followed (the y solver's own
-            // loss handling then sees exactly what a one-hand hold sees).
+            // y: the followed point (confident only when every followed hand is), or nothing when no hand is followed.
             HandSample sample;
             if (_in1 || _in2)
             {
                 bool confident = (!_in1 || first.IsHighConfidence) && (!_in2 || second.IsHighConfidence);
                 sample = new HandSample(_vy, true, confident, PoseTime(first, second));
             }
-            else if (!_grip1)
-                sample = new HandSample(double.NaN, false, false, first.PoseTime); // the first hand let go
-            else if (u1 || !first.IsTracked || !HandSample.IsUsableHeight(first.Y))
-                sample = new HandSample(first.Y, first.IsTracked, first.IsHighConfidence, first.PoseTime);
-            else
-                sample = new HandSample(double.NaN, false, false, first.PoseTime); // x or z garbage: the pose is lost
+            else sample = HandSample.Lost;
             _y.Step(sample, dt);
 
-            StepHorizontal(dt);
-            if (_breakAway != null) CheckBreakAway(dt);
+            bool following = _in1 || _in2, newPose = false;
+            double leadX = _px - _steadyX, leadZ = _pz - _steadyZ; // how far the hand was ahead of the steady point
+            if (following)
+            {
+                if (!_hHas) Anchor(); // the first followed hand of a hold begun untracked: the grab is here
+                double t = sample.PoseTime;
+                newPose = _vx != _px || _vy != _py || _vz != _pz || (double.IsFinite(t) && !(t == _pt));
+                _px = _vx; _py = _vy; _pz = _vz; _pt = t;
+            }
+            // A gap, or a change of the followed hands: the motion across it is taken rigidly.
+            bool bridged = following && (was1 != _in1 || was2 != _in2);
+            // Across a gap the steady point starts over at the hand: the lead it had joins the lag, so nothing steps.
+            if (bridged && _hHas && _tau > 0) { _ex += leadX; _ez += leadZ; }
+            StepHorizontal(dt, newPose, bridged);
+            if (_breakAway != null) CheckBreakAway(newPose);
         }
 
         /// <summary>Decides which hands are followed this frame and re-anchors the followed point when that changes.</summary>
         void Select(in HandPose first, in HandPose second, bool usable1, bool usable2, double dt, bool begin)
         {
-            bool f1 = _grip1 && usable1 && (!_requireHighConfidence || first.IsHighConfidence);
-            bool f2 = _twoHands != null && _grip2 && usable2 && (!_requireHighConfidence || second.IsHighConfidence);
+            bool f1 = _grip1 && usable1;
+            f1 = Reachable(f1, first, ref _reach1, dt);
+            bool f2 = _twoHands != null && _grip2 && usable2;
+            f2 = Reachable(f2, second, ref _reach2, dt);
             if (f1) { _k1x = first.X; _k1y = first.Y; _k1z = first.Z; }
             if (f2) { _k2x = second.X; _k2y = second.Y; _k2z = second.Z; }
             // A hand joining a hand already followed waits for steady tracking (the profile's settle time).
@@ -305,6 +344,16 @@ namespace Kosmos.PseudoHaptic
             _in2 = n2;
         }
 
+        /// <summary>Whether a usable hand's pose can be followed: one a hand could have got to (<see cref="Reach"/>, judged
+        /// in 3D as the y estimator judges heights). A refused pose counts as lost time.</summary>
+        bool Reachable(bool usable, in HandPose hand, ref Reach reach, double dt)
+        {
+            reach.Tick(dt, _limits.MaxFrameTime);
+            if (usable && reach.TryAccept(hand.X, hand.Y, hand.Z, _limits.MaxHandSpeed)) return true;
+            reach.Miss();
+            return false;
+        }
+
         /// <summary>Steady for the settle time yet? The wait restarts whenever the hand cannot be followed (Select).</summary>
         bool Settled(ref double waited, double dt)
         {
@@ -337,117 +386,102 @@ namespace Kosmos.PseudoHaptic
             _tau = two ? _tauTwo : _tauOne;
         }
 
-        /// <summary>x/z: follow the followed point's displacement, or re-anchor (the object stays) after a long loss,
-        /// a hitch, a settle after a loss, or a step no hand can make; then the lateral lag.</summary>
-        void StepHorizontal(double dt)
+        /// <summary>The hold starts (or, begun untracked, restarts at its first followed hand): the object is where it
+        /// is, the followed point where it is.</summary>
+        void Anchor()
         {
-            var limits = _limits;
+            _hHas = true;
+            _ax = _objX - _vx;
+            _az = _objZ - _vz;
+            _px = _vx; _py = _vy; _pz = _vz; _pt = double.NaN;
+            _steadyCount = 0;
+            Remember(_vx, _vz, restart: true);
+            _gx = _vx - _objX;
+            _gy = _vy - _y.ObjectY;
+            _gz = _vz - _objZ;
+            _hasGrab = true;
+            _beyond = false;
+        }
+
+        /// <summary>x/z: the object is the followed point plus the grab's offset, less the lateral lag it shows. The lag
+        /// is driven by the steady followed point (the median of its last three poses), so a one-pose glitch never
+        /// enters it, and motion across a loss (or a change of the followed hands) is taken rigidly (tracking hid it; the
+        /// lag is of motion seen).</summary>
+        void StepHorizontal(double dt, bool newPose, bool bridged)
+        {
             double dx = 0, dz = 0;
-            _hSince += dt;
-            if (!(_in1 || _in2))
+            if (newPose)
             {
-                _hLostFor += dt;
-                if (_lossHold) _hSettle = 0;
-            }
-            else if (!_hHas)
-            {
-                Reanchor();
-            }
-            else if (_hSettle >= 0)
-            {
-                // After a loss, with the tracking-loss hold: wait for steady tracking, then follow from here.
-                _hSettle += dt;
-                if (_hSettle >= _settleTime) { _hSettle = -1; Reanchor(); }
-            }
-            else
-            {
-                double ddx = _vx - _hPx, ddz = _vz - _hPz;
-                double window = _hSince < SolverLimits.MinJumpWindow ? SolverLimits.MinJumpWindow : (_hSince > SolverLimits.JumpWindow ? SolverLimits.JumpWindow : _hSince);
-                double max = limits.MaxHandSpeed * window;
-                if (dt > limits.MaxCatchUpGap || _hLostFor > limits.MaxCatchUpGap || ddx * ddx + ddz * ddz > max * max) Reanchor();
-                else
-                {
-                    if (ddx != 0 || ddz != 0) _hSince = 0;
-                    dx = ddx;
-                    dz = ddz;
-                    _hPx = _vx;
-                    _hPz = _vz;
-                }
-                _hLostFor = 0;
+                double oldX = _steadyX, oldZ = _steadyZ;
+                if (Remember(_vx, _vz, restart: bridged)) { dx = _steadyX - oldX; dz = _steadyZ - oldZ; }
             }
 
             if (_tau > 0)
             {
                 double step = dt < LateralInertia.MaxDecayStep ? dt : LateralInertia.MaxDecayStep;
-                double k = _tau / (_tau + step);
-                double ex = (_ex + dx) * k, ez = (_ez + dz) * k;
-                double n = ex * ex + ez * ez, bound = _inertia.MaxOffset;
-                if (n > bound * bound)
+                double ex = _ex + dx, ez = _ez + dz, m = _inertia.MaxOffset;
+                double n = Math.Sqrt(ex * ex + ez * ez);
+                // Implicit decay, faster the further the lag is past the bound: the factor lies in [0, 1), so the lag
+                // never changes sign by itself (no overshoot, no oscillation).
+                double k = _tau / (_tau + step * (1 + n / m));
+                ex *= k;
+                ez *= k;
+                n *= k;
+                if (n < 1e-12) { ex = ez = 0; n = 0; }
+                if (double.IsFinite(ex) && double.IsFinite(ez))
                 {
-                    double s = bound / Math.Sqrt(n);
-                    ex *= s;
-                    ez *= s;
+                    _ex = ex;
+                    _ez = ez;
                 }
-                else if (n < 1e-24) ex = ez = 0;
-                if (double.IsFinite(ex) && double.IsFinite(ez)) { _ex = ex; _ez = ez; }
+                // Shown: the lag plus how far the hand is ahead of the steady point (at most a pose's motion), through a
+                // saturating curve, m·tanh(|e|/m): strictly increasing, so heavier still trails more, and never past the
+                // bound. When the steady point catches up, what it adds to the lag it takes from the hand's lead: nothing
+                // steps back; a one-pose glitch comes and goes with the hand and leaves the lag as it was.
+                double tx = _ex + _vx - _steadyX, tz = _ez + _vz - _steadyZ, tn = Math.Sqrt(tx * tx + tz * tz);
+                double shown = tn > 0 ? m * Math.Tanh(tn / m) / tn : 0;
+                if (double.IsFinite(shown)) { _sx = tx * shown; _sz = tz * shown; }
             }
-            else _ex = _ez = 0;
+            else _ex = _ez = _sx = _sz = 0;
 
             if (!_hHas) return; // no hand seen yet: the object stays where the hold began
-            if (_pullSpeed > 0) PullBack(dt);
-            double x = _hPx + _ax - _ex, z = _hPz + _az - _ez;
+            double x = _vx + _ax - _sx, z = _vz + _az - _sz;
             if (double.IsFinite(x) && double.IsFinite(z)) { _objX = x; _objZ = z; }
         }
 
-        /// <summary>With the offset correction, what re-anchoring left between hand and object horizontally is drawn back,
-        /// as the correction's pull does on y: at up to its pull speed, ramping up over five band widths.</summary>
-        void PullBack(double dt)
+        /// <summary>Keeps the last three followed points (restarting after a gap) and their median; true once it moved.</summary>
+        bool Remember(double x, double z, bool restart)
         {
-            double rx = _ax - _gax, rz = _az - _gaz, r = Math.Sqrt(rx * rx + rz * rz);
-            double max = _limits.MaxFrameTime, step = dt < max ? dt : max;
-            double pull = _pullSpeed * (r >= _pullRamp ? 1 : r / _pullRamp) * step;
-            if (pull >= r) { _ax = _gax; _az = _gaz; } // also at r = 0, where the ramp gives pull = 0
-            else { double k = 1 - pull / r; _ax = _gax + rx * k; _az = _gaz + rz * k; }
+            if (restart) _steadyCount = 0;
+            double x1 = _x1, x2 = _x2, z1 = _z1, z2 = _z2;
+            _x2 = x1; _x1 = x;
+            _z2 = z1; _z1 = z;
+            if (_steadyCount < 3) _steadyCount++;
+            if (_steadyCount == 1) { _steadyX = x; _steadyZ = z; return false; }
+            if (_steadyCount < 3) return false;
+            double mx = Median(x, x1, x2), mz = Median(z, z1, z2);
+            bool moved = mx != _steadyX || mz != _steadyZ;
+            _steadyX = mx;
+            _steadyZ = mz;
+            return moved;
         }
 
-        void Reanchor()
-        {
-            // The object stays: A absorbs the hand's jump (the lag e stays as it was).
-            double followX = _objX + _ex, followZ = _objZ + _ez;
-            _hPx = _vx;
-            _hPz = _vz;
-            _ax = followX - _vx;
-            _az = followZ - _vz;
-            if (!_hHas) { _gax = _ax; _gaz = _az; }
-            _hHas = true;
-            _hLostFor = 0;
-            _hSince = 0;
-            if (!_hasGrab) Grab();
-        }
+        static double Median(double a, double b, double c) => Math.Max(Math.Min(a, b), Math.Min(Math.Max(a, b), c));
 
-        void Grab()
+        /// <summary>The hold ends at the second pose in a row past the distance: a one-pose glitch never drops the object,
+        /// and the hold ends no later than one pose interval after the first pose past it.</summary>
+        void CheckBreakAway(bool newPose)
         {
-            _gx = _vx - _objX;
-            _gy = _vy - _y.ObjectY;
-            _gz = _vz - _objZ;
-            _hasGrab = true;
-        }
-
-        void CheckBreakAway(double dt)
-        {
-            if (!(_in1 || _in2) || !_hasGrab) return;
-            double dx = _vx - _objX - _gx, dy = _vy - _y.ObjectY - _gy, dz = _vz - _objZ - _gz;
-            double d = _breakAway.Distance;
-            if (dx * dx + dy * dy + dz * dz > d * d)
+            if (!(_in1 || _in2) || !_hasGrab || !newPose) return;
+            if (BreakAwayMeasure > _breakAway.Distance)
             {
-                _beyondFor += dt;
-                if (_beyondFor >= _breakAway.Dwell)
+                if (_beyond)
                 {
                     _brokeAway = true;
                     EndHold();
                 }
+                _beyond = true;
             }
-            else _beyondFor = 0;
+            else _beyond = false;
         }
     }
 }

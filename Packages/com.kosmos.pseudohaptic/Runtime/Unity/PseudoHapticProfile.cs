@@ -19,7 +19,7 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] string _profileName;
 
         [Header("Input: which poses may be followed")]
-        [Tooltip("Headset hygiene: low-confidence poses count as lost; after a loss the object waits for steady tracking.")]
+        [Tooltip("Headset hygiene: low-confidence poses, and the first poses after a loss, are followed but never move what the hold remembers (the lift's base and pace).")]
         [SerializeField] bool _trackingLossHold;
         [SerializeField] float _settleTime;
         [SerializeField] bool _requireHighConfidence;
@@ -36,32 +36,33 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] bool _experimentalBlend;
 
         [Header("Object motion")]
-        [Tooltip("§5's next step: on the way up, an object heavier than the standard rises more slowly the higher it is above where the hold began (never below a floor fraction).")]
+        [Tooltip("§5's next step: an object heavier than the standard rises more slowly the higher the hand has lifted it (never below a floor fraction); a lowering retraces it.")]
         [SerializeField] bool _heightDeceleration;
-        [Tooltip("Height scale, m: at this height a very heavy object rises at the midpoint between full speed and the floor fraction.")]
+        [Tooltip("Height scale, m: at this lift a very heavy object rises at the midpoint between full speed and the floor fraction.")]
         [SerializeField] float _decelerationHeight;
         [Tooltip("The floor fraction: the upward motion is never multiplied by less than this, in (0, 1].")]
         [SerializeField] float _decelerationMinFraction;
-        [Tooltip("§3.1: a fast motion moves a heavy object further than a slow one over the same distance (the gain's exponent follows the hand's speed relative to the user's).")]
+        [Tooltip("§3.1: a fast lift moves a heavy object further than a slow one over the same distance (the gain's exponent follows the lift's mean speed relative to the user's).")]
         [SerializeField] bool _fasterMovesFurther;
         [Tooltip("The gain's exponent for a hand much faster than the user's standard speed (≤ 1).")]
         [SerializeField] float _fastExponent;
         [Tooltip("The gain's exponent for a hand much slower than it, and at rest (≥ 1).")]
         [SerializeField] float _slowExponent;
-        [Tooltip("Half-width of the band that keeps jitter at rest from reading as speed, m.")]
+        [Tooltip("How far above the lift's base the hand is still at rest, m: a rise starts when it leaves this band.")]
         [SerializeField] float _restBand;
-        [Tooltip("Time constant over which the hand's pace is smoothed, s.")]
-        [SerializeField] float _speedSmoothingTime;
-        [Tooltip("Cap the object's speed at the user's rescaled experimental speed of its mass.")]
+        [Tooltip("A rise that has not gone higher for this long has paused: its pace is settled until the hand is back at the base, s.")]
+        [SerializeField] float _pauseTime;
+        [Tooltip("How strongly the gain's exponent follows the lift's pace: r = x^(−sensitivity).")]
+        [SerializeField] float _paceSensitivity;
+        [Tooltip("The user's rescaled experimental speed of the mass: how far the hand pulls beyond it is the hold's strain (break-away reads it under the offset correction).")]
         [SerializeField] bool _speedCap;
         [SerializeField] float _speedCapHeadroom;
-        [Tooltip("While the hand moves down, the hand–object offset never grows.")]
+        [Tooltip("The lift is measured from the lowest place the hand rested: lowered below it, the object moves with the hand.")]
         [SerializeField] bool _loweringGuard;
-        [Tooltip("§3.1: past the threshold, the offset is kept from growing and gradually drawn back.")]
+        [Tooltip("§3.1: past the threshold (0.2 m at 1 kg, 2 cm more per doubling of the mass), the offset stops growing, smoothly, never past the band.")]
         [SerializeField] bool _offsetCorrection;
         [SerializeField] float _offsetThreshold;
         [SerializeField] float _offsetBand;
-        [SerializeField] float _offsetPullSpeed;
         [Tooltip("While the hand is still, a held offset relaxes toward zero (off in the paper's experiments).")]
         [SerializeField] bool _offsetRelaxation;
         [SerializeField] float _relaxationTimeConstant;
@@ -83,20 +84,17 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] bool _twoHands;
         [Tooltip("The share of the mass each hand carries while both hold (0.5: half each).")]
         [SerializeField] float _twoHandsShare;
-        [Tooltip("The object tears loose and falls when the hands are pulled this far from it for this long.")]
+        [Tooltip("The object tears loose and falls when the hands pull this far: under the offset correction how far beyond what the weight allows (the strain), without it the distance from where they grabbed; at the second pose in a row past it.")]
         [SerializeField] bool _breakAway;
-        [Tooltip("m beyond the grab offset.")]
+        [Tooltip("m: the strain under the offset correction, the distance beyond the grab offset without it.")]
         [SerializeField] float _breakAwayDistance;
-        [Tooltip("s the hands must stay beyond it.")]
-        [SerializeField] float _breakAwayDwell;
 
         [Header("Safety limits (every profile)")]
         [SerializeField] float _maxGain;
-        [SerializeField] float _maxObjectSpeed;
-        [SerializeField] float _maxFrameTime;
         [SerializeField] float _maxHandSpeed;
-        [SerializeField] float _maxCatchUpGap;
-        [SerializeField] float _maxCarry;
+        [SerializeField] float _maxFrameTime;
+        [Tooltip("m/s: how fast an offset the hand's motion did not make (a hand joining, a change of profile) glides away.")]
+        [SerializeField] float _glideSpeed;
 
         [Header("Where the hand is drawn")]
         [Tooltip("Hand True (the paper): the rendered hand stays with the tracked hand and the object visibly lags. Hand On Object (Samad et al. 2019, Rietzler et al. 2018): the rendered hand is drawn at the object.")]
@@ -233,16 +231,16 @@ namespace Kosmos.PseudoHaptic
             if (_weightGain) effects.Add(new WeightGain());
             if (_experimentalBlend) effects.Add(new ExperimentalBlend());
             if (_heightDeceleration) effects.Add(new HeightDeceleration(_decelerationHeight, _decelerationMinFraction));
-            if (_fasterMovesFurther) effects.Add(new FasterMovesFurther(_fastExponent, _slowExponent, _restBand, _speedSmoothingTime));
+            if (_fasterMovesFurther) effects.Add(new FasterMovesFurther(_fastExponent, _slowExponent, _restBand, _pauseTime, _paceSensitivity));
             if (_speedCap) effects.Add(new SpeedCap(_speedCapHeadroom));
             if (_loweringGuard) effects.Add(new LoweringGuard());
-            if (_offsetCorrection) effects.Add(new OffsetCorrection(_offsetThreshold, _offsetBand, _offsetPullSpeed));
+            if (_offsetCorrection) effects.Add(new OffsetCorrection(_offsetThreshold, _offsetBand));
             if (_offsetRelaxation) effects.Add(new OffsetRelaxation(_relaxationTimeConstant, _relaxationStillFraction));
             if (_floorClamp) effects.Add(new FloorClamp(_floor));
             if (_lateralInertia) effects.Add(new LateralInertia(_lateralTimeConstant, _lateralMaxOffset));
             if (_twoHands) effects.Add(new TwoHands(_twoHandsShare));
-            if (_breakAway) effects.Add(new BreakAway(_breakAwayDistance, _breakAwayDwell));
-            var limits = new SolverLimits(_maxGain, _maxObjectSpeed, _maxFrameTime, _maxHandSpeed, _maxCatchUpGap, _maxCarry);
+            if (_breakAway) effects.Add(new BreakAway(_breakAwayDistance));
+            var limits = new SolverLimits(_maxGain, _maxHandSpeed, _maxFrameTime, _glideSpeed);
             string label = !string.IsNullOrWhiteSpace(_profileName) ? _profileName : (!string.IsNullOrWhiteSpace(name) ? name : "custom");
             _built = new WeightProfile(label, effects, limits);
             return _built;
@@ -301,7 +299,8 @@ namespace Kosmos.PseudoHaptic
             _fastExponent = (float)fm.FastExponent;
             _slowExponent = (float)fm.SlowExponent;
             _restBand = (float)fm.RestBand;
-            _speedSmoothingTime = (float)fm.SmoothingTime;
+            _pauseTime = (float)fm.PauseTime;
+            _paceSensitivity = (float)fm.Sensitivity;
 
             var cap = p.Find<SpeedCap>();
             _speedCap = cap != null;
@@ -314,7 +313,6 @@ namespace Kosmos.PseudoHaptic
             oc = oc ?? new OffsetCorrection();
             _offsetThreshold = (float)oc.Threshold;
             _offsetBand = (float)oc.Band;
-            _offsetPullSpeed = (float)oc.PullSpeed;
 
             var rl = p.Find<OffsetRelaxation>();
             _offsetRelaxation = rl != null;
@@ -340,15 +338,12 @@ namespace Kosmos.PseudoHaptic
             _breakAway = ba != null;
             ba = ba ?? new BreakAway(DefaultBreakAwayDistance);
             _breakAwayDistance = (float)ba.Distance;
-            _breakAwayDwell = (float)ba.Dwell;
 
             SolverLimits l = p.Limits;
             _maxGain = (float)l.MaxGain;
-            _maxObjectSpeed = (float)l.MaxObjectSpeed;
-            _maxFrameTime = (float)l.MaxFrameTime;
             _maxHandSpeed = (float)l.MaxHandSpeed;
-            _maxCatchUpGap = (float)l.MaxCatchUpGap;
-            _maxCarry = (float)l.MaxCarry;
+            _maxFrameTime = (float)l.MaxFrameTime;
+            _glideSpeed = (float)l.GlideSpeed;
         }
     }
 }

@@ -1,150 +1,135 @@
 using System;
+using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 
 namespace Kosmos.PseudoHaptic.Tests
 {
     /// <summary>
-    /// Faster moves further in numbers: the exponent r = 1/√(pace/v_std) clamped to [0.5, 1.5], the gain G^r it gives
-    /// an object lighter in gain than the standard, and that a steady lift moves the object by exactly that gain.
+    /// Faster moves further (§3.1, P11) as the lift's pace: the mean speed of its rise from the base, read on the steady
+    /// hand, settled once the rise pauses, started over at the base. A faster lift leaves a heavy object higher; a heft after
+    /// the lift, a loss during it or a glitch barely change the pace; the standard weight and lighter are untouched.
     /// </summary>
     public class FasterMovesFurtherTests
     {
+        static readonly WeightProfile Profile = new WeightProfile("fmf", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new FasterMovesFurther() });
+
+        static WeightSolver Solver(double massKg, double standardSpeed = 0.5, WeightProfile profile = null)
+            => new WeightSolver(WeightModel.FromMass(massKg), profile ?? Profile, standardSpeed);
+
+        static TraceFrame[] Frames(HandPath path, int seed = 1) => Run.Headset(frameRate: 90, jitterSd: 0.001, seed: seed).Render(path);
+
         [Test]
-        public void TheExponentIsOneOverTheRootOfTheRelativePaceWithinItsClamps()
+        public void ALiftAtTheUsersStandardSpeedReadsAsTheStandard([Values(0.3, 0.5, 1.0)] double standardSpeed)
+        {
+            // The calibration measures v_std as the mean speed of a lift's 10–90 % span (StandardSpeedCalibration); a lift it
+            // would measure at the user's v_std must read x = 1 here, where the gain is Eq. 4–6's own. Within 10 %.
+            double rise = 0.3, seconds = 1.58 * rise / standardSpeed; // a minimum-jerk lift's 10–90 % mean speed is 1.58 R/T
+            var path = HandPath.StartAt(0.8).Hold(0.5).MoveTo(0.8 + rise, seconds).Hold(0.5);
+            var frames = Frames(path);
+            var times = new double[frames.Length];
+            var heights = new double[frames.Length];
+            for (int i = 0; i < frames.Length; i++) { times[i] = frames[i].Time; heights[i] = path.HeightAt(frames[i].Time); }
+            var measured = StandardSpeedCalibration.MeasureLift(times, heights);
+            Assert.That(measured.IsAccepted, Is.True, measured.Reason);
+            Assert.That(measured.Speed, Is.EqualTo(standardSpeed).Within(0.02 * standardSpeed), "the lift is a standard lift for this user");
+            var solver = Solver(2, standardSpeed);
+            Run.Replay(solver, frames);
+            double x = FasterMovesFurther.StandardLiftRatio * solver.State.Pace / standardSpeed;
+            Assert.That(x, Is.EqualTo(1).Within(0.1), "pace " + solver.State.Pace);
+        }
+
+        [Test]
+        public void TheFasterLiftEndsHigherTheSlowerUserMovesItFurther([Values(0.5, 1, 2, 5)] double massKg)
+        {
+            double End(double seconds, double standardSpeed)
+                => Run.Last(Run.Replay(Solver(massKg, standardSpeed), Frames(HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.2, seconds).Hold(1))));
+            double previous = double.NegativeInfinity;
+            foreach (var seconds in new[] { 2.0, 1.0, 0.6, 0.3 })
+            {
+                double end = End(seconds, 0.5);
+                Assert.That(end, Is.GreaterThan(previous + 0.001), $"{massKg} kg: a 0.4 m lift in {seconds} s ends above a slower one");
+                previous = end;
+            }
+            Assert.That(End(1, 0.3), Is.GreaterThan(End(1, 1.0) + 0.001), $"{massKg} kg: moved further by a user with a lower v_std");
+            Assert.That(End(0.3, 0.5), Is.LessThan(1.2 - 0.05), "still far below the hand: the weight stays");
+        }
+
+        [Test]
+        public void TheStandardWeightAndLighterAreUntouched([Values(0.001, 0.02, 0.045)] double massKg)
+        {
+            var frames = Frames(HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.2, 0.3).Hold(1));
+            var with = Run.Replay(Solver(massKg), frames);
+            var without = Run.Replay(Solver(massKg, profile: Profile.Without<FasterMovesFurther>()), frames);
+            Assert.That(with, Is.EqualTo(without));
+        }
+
+        [Test]
+        public void APacedLiftSettlesOnceItPausesAndAHeftLeavesItAsItWas([Values(0.3, 2.0)] double heftSeconds)
+        {
+            // A 0.3 m lift in 1 s, a 0.5 s rest, then a heft of 10 cm up and back in 0.3 s or 2 s: the pace does not change,
+            // and the object is back exactly where it was (the map of the lift is the same).
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 1).Hold(0.5);
+            double rested = path.Duration;
+            path.MoveTo(1.2, heftSeconds / 2).MoveTo(1.1, heftSeconds / 2).Hold(0.5);
+            var solver = Solver(2);
+            var frames = Run.Headset(frameRate: 90, seed: 2).Render(path);
+            var y = new double[frames.Length];
+            solver.BeginHold(frames[0].HandY, frames[0].HandY, frames[0].PoseTime);
+            double paceAtRest = double.NaN, yAtRest = double.NaN;
+            for (int i = 1; i < frames.Length; i++)
+            {
+                y[i] = solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+                if (double.IsNaN(paceAtRest) && frames[i].Time >= rested) { paceAtRest = solver.State.Pace; yAtRest = y[i]; }
+            }
+            Assert.That(solver.State.PaceSettled, Is.True);
+            Assert.That(solver.State.Pace, Is.EqualTo(paceAtRest), "the heft did not change the pace");
+            Assert.That(Run.Last(y), Is.EqualTo(yAtRest).Within(1e-9), "and left the object where it was");
+        }
+
+        [Test]
+        public void BackAtTheBaseTheNextLiftHasItsOwnPace()
+        {
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 0.4).Hold(0.5).MoveTo(0.8, 1).Hold(0.5).MoveTo(1.1, 2).Hold(0.5);
+            var profile = Profile.With(new LoweringGuard());
+            var solver = Solver(2, 0.5, profile);
+            Run.Replay(solver, Run.Headset(frameRate: 90, seed: 3).Render(path));
+            double slowOnly = Solver(2, 0.5, profile).State.Pace;
+            var second = Solver(2, 0.5, profile);
+            Run.Replay(second, Run.Headset(frameRate: 90, seed: 3).Render(HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 2).Hold(0.5)));
+            Assert.That(solver.State.Pace, Is.EqualTo(second.State.Pace).Within(0.05 * second.State.Pace), "the second lift's own (slow) pace");
+            Assert.That(solver.State.Pace, Is.LessThan(0.3), "not the first, fast lift's");
+            Assert.That(slowOnly, Is.EqualTo(0), "a solver that has not held reads no pace");
+        }
+
+        [Test]
+        public void ALossThatHidesTheTopOfTheRiseGivesNearlyTheSamePace([Values(0.2, 0.5, 1.0)] double loss)
+        {
+            // The rise's time across a gap is taken at its pace so far: the pace comes out within 10 % of the clean one.
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.2, 0.8).Hold(1.5);
+            var clean = Solver(2);
+            Run.Replay(clean, Run.Headset(frameRate: 90, seed: 4).Render(path));
+            var lost = Solver(2);
+            Run.Replay(lost, Run.Headset(frameRate: 90, seed: 4).Drop(0.9, loss).Render(path));
+            Assert.That(lost.State.Pace, Is.EqualTo(clean.State.Pace).Within(0.1 * clean.State.Pace), "a loss of " + loss + " s");
+        }
+
+        [Test]
+        public void TheExponentFollowsThePaceWithinItsBoundsAndIsOneBeforeAnyRise()
         {
             var e = new FasterMovesFurther();
+            double standardPace = 0.5 / FasterMovesFurther.StandardLiftRatio;
+            Assert.That(e.ExponentAt(0, 0.5), Is.EqualTo(1), "no pace yet: Eq. 4–6's gain");
+            Assert.That(e.ExponentAt(standardPace, 0.5), Is.EqualTo(1).Within(1e-12), "the user's standard pace");
+            Assert.That(e.ExponentAt(4 * standardPace, 0.5), Is.EqualTo(Math.Pow(4, -e.Sensitivity)).Within(1e-12), "faster: r < 1");
+            Assert.That(e.ExponentAt(standardPace / 4, 0.5), Is.EqualTo(Math.Pow(4, e.Sensitivity)).Within(1e-12), "slower: r > 1");
+            Assert.That(e.ExponentAt(1e12, 0.5), Is.EqualTo(e.FastExponent), "bounded");
+            Assert.That(e.ExponentAt(1e-12, 0.5), Is.EqualTo(e.SlowExponent), "bounded");
+            Assert.That(e.GainAt(0.32, 4 * standardPace, 0.5), Is.GreaterThan(0.32).And.LessThan(1), "faster: closer to 1, never past it");
+            Assert.That(e.GainAt(1.5, 4 * standardPace, 0.5), Is.EqualTo(1.5), "lighter objects untouched");
+            Assert.That(() => new FasterMovesFurther(sensitivity: -1), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("sensitivity"));
+            Assert.That(() => new FasterMovesFurther(pauseTime: 0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("pauseTime"));
+            Assert.That(() => new FasterMovesFurther(fastExponent: 2), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("fastExponent"));
             Assert.That(e.Name, Is.EqualTo("faster-moves-further"));
-            Assert.That(e.ExponentAt(0.5, 0.5), Is.EqualTo(1.0), "at the user's own speed G itself");
-            Assert.That(e.ExponentAt(-0.5, 0.5), Is.EqualTo(1.0), "lowering counts like lifting");
-            Assert.That(e.ExponentAt(1.0, 0.25), Is.EqualTo(0.5), "four times the user's speed: 1/√4, at the fast clamp");
-            Assert.That(e.ExponentAt(3.0, 0.25), Is.EqualTo(0.5), "faster still: clamped");
-            Assert.That(e.ExponentAt(0.72, 0.5), Is.EqualTo(1 / Math.Sqrt(1.44)).Within(1e-15));
-            Assert.That(e.ExponentAt(0.32, 0.5), Is.EqualTo(1.25).Within(1e-15), "x = 0.64");
-            Assert.That(e.ExponentAt(0.1, 0.5), Is.EqualTo(1.5), "slow: clamped");
-            Assert.That(e.ExponentAt(0, 0.5), Is.EqualTo(1.5), "at rest: the slow clamp");
-            var custom = new FasterMovesFurther(fastExponent: 0.8, slowExponent: 1.2);
-            Assert.That(custom.ExponentAt(2.0, 0.5), Is.EqualTo(0.8));
-            Assert.That(custom.ExponentAt(0.05, 0.5), Is.EqualTo(1.2));
         }
-
-        [Test]
-        public void TheGainIsGToThePowerROnlyForObjectsHeavierThanTheStandard()
-        {
-            var e = new FasterMovesFurther();
-            Assert.That(e.GainAt(0.25, 2.0, 0.5), Is.EqualTo(0.5).Within(1e-15), "0.25^0.5: a fast lift moves it further");
-            Assert.That(e.GainAt(0.25, 0.1, 0.5), Is.EqualTo(0.125).Within(1e-15), "0.25^1.5: a slow one less");
-            Assert.That(e.GainAt(0.25, 0.5, 0.5), Is.EqualTo(0.25).Within(1e-15));
-            Assert.That(e.GainAt(1.0, 2.0, 0.5), Is.EqualTo(1.0), "the standard weight is untouched");
-            Assert.That(e.GainAt(2.5, 2.0, 0.5), Is.EqualTo(2.5), "lighter objects too");
-            Assert.That(e.GainAt(0.0, 2.0, 0.5), Is.EqualTo(0.0), "no gain stays none");
-        }
-
-        [TestCase(2.0, 0.4)]
-        [TestCase(5.0, 1.5)]
-        [TestCase(5.0, 0.1)]
-        [TestCase(0.5, 0.8)]
-        [TestCase(2.0, -0.4)] // lowering: the same pace, the same gain
-        [TestCase(5.0, -1.5)]
-        public void ASteadyLiftMovesTheObjectByGainAtItsPace(double massKg, double handSpeed)
-        {
-            // One pose per 90 Hz frame at a constant speed: after a second the smoothed pace is the hand's speed, so
-            // each frame the object moves GainAt(G, v, v_std) × the hand's step.
-            var effect = new FasterMovesFurther();
-            var solver = new WeightSolver(WeightModel.FromMass(massKg),
-                new WeightProfile("test", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), effect }), 0.5);
-            const double dt = 1 / 90.0;
-            double hand = 0.2, t = 0, y = 0.2;
-            solver.BeginHold(hand, hand, t);
-            for (int i = 0; i < 90; i++) { t += dt; hand += handSpeed * dt; y = solver.Step(new HandSample(hand, true, true, t), dt); }
-            Assert.That(solver.Gain, Is.LessThan(1), "an object heavier than the standard");
-            double expected = effect.GainAt(solver.Gain, Math.Abs(handSpeed), 0.5);
-            for (int i = 0; i < 10; i++)
-            {
-                t += dt; hand += handSpeed * dt;
-                double next = solver.Step(new HandSample(hand, true, true, t), dt);
-                Assert.That((next - y) / (handSpeed * dt), Is.EqualTo(expected).Within(1e-3 * expected), "frame " + i);
-                y = next;
-            }
-        }
-    
-        // One pose a frame at 30 Hz, stamped; 5 kg (G < 1), v_std 0.5 m/s, unsmoothed pace so each pose's pace is exact.
-        static WeightSolver PaceSolver(double smoothingTime = 0, double releaseDistance = 0.2, double standardSpeed = 0.5)
-            => new WeightSolver(WeightModel.FromMass(5), new WeightProfile("test", new WeightEffect[]
-                { new WeightGain(), new FasterMovesFurther(smoothingTime: smoothingTime, releaseDistance: releaseDistance) }), standardSpeed);
-
-        [Test]
-        public void ThePaceFollowsTheHandOnlyOnceItLeavesTheRestBandAndTheHeldPaceFallsWithTheDistanceTravelled()
-        {
-            var s = PaceSolver();
-            double t = 0;
-            s.BeginHold(0.2, 0.2, t);
-            Assert.That(s.State.PaceReference, Is.EqualTo(0.2), "the grab anchors the band at the hand");
-            // +3 cm: the band's lower edge (hand − 5 mm) drags the reference to 0.225; 25 mm in 1/30 s is 0.75 m/s.
-            s.Step(new HandSample(0.23, true, true, t += 1 / 30.0), 1 / 30.0);
-            Assert.That(s.State.PaceReference, Is.EqualTo(0.225).Within(1e-12));
-            Assert.That(s.State.Pace, Is.EqualTo(0.75).Within(1e-9));
-            Assert.That(s.State.HeldPace, Is.EqualTo(0.75).Within(1e-9), "a faster pace is held at once");
-            // 3 mm back: within ±5 mm of the reference, which stays; the pace reads 0, the held pace is kept (no travel).
-            s.Step(new HandSample(0.228, true, true, t += 1 / 30.0), 1 / 30.0);
-            Assert.That(s.State.PaceReference, Is.EqualTo(0.225).Within(1e-12));
-            Assert.That(s.State.Pace, Is.EqualTo(0).Within(1e-9));
-            Assert.That(s.State.HeldPace, Is.EqualTo(0.75).Within(1e-9), "a resting hand keeps the pace of its latest motion");
-            // Down to 0.214: the upper edge drags the reference to 0.219, 6 mm at 0.18 m/s; the held pace moves 6 mm / 0.2 m
-            // = 3 % of the way toward it.
-            s.Step(new HandSample(0.214, true, true, t += 1 / 30.0), 1 / 30.0);
-            Assert.That(s.State.PaceReference, Is.EqualTo(0.219).Within(1e-12));
-            Assert.That(s.State.Pace, Is.EqualTo(-0.18).Within(1e-9));
-            Assert.That(s.State.HeldPace, Is.EqualTo(0.75 + 0.03 * (0.18 - 0.75)).Within(1e-9));
-        }
-
-        [Test]
-        public void TheHeldPaceFallsNoFurtherThanTheSlowerPaceHoweverFarTheHandTravels()
-        {
-            // Release over 1 cm: a 2 cm step at 0.6 m/s travels twice the release distance, and the held pace becomes
-            // that pace, not less.
-            var s = PaceSolver(releaseDistance: 0.01);
-            double t = 0;
-            s.BeginHold(0.2, 0.2, t);
-            s.Step(new HandSample(0.23, true, true, t += 1 / 30.0), 1 / 30.0); // 0.75 m/s, held
-            s.Step(new HandSample(0.25, true, true, t += 1 / 30.0), 1 / 30.0);
-            Assert.That(s.State.Pace, Is.EqualTo(0.6).Within(1e-9));
-            Assert.That(s.State.HeldPace, Is.EqualTo(0.6).Within(1e-9));
-        }
-
-        [Test]
-        public void ReanchoringForgetsThePace()
-        {
-            var s = PaceSolver(smoothingTime: 0.1);
-            double t = 0, hand = 0.2;
-            s.BeginHold(hand, hand, t);
-            for (int i = 0; i < 15; i++) s.Step(new HandSample(hand += 0.03, true, true, t += 1 / 30.0), 1 / 30.0);
-            Assert.That(s.State.HeldPace, Is.GreaterThan(0.5), "a fast lift");
-            for (int i = 0; i < 15; i++) s.Step(HandSample.Lost, 1 / 30.0); // half a second lost: the hand comes back re-anchored
-            s.Step(new HandSample(hand + 0.2, true, true, t += 0.5), 1 / 30.0);
-            Assert.That(s.State.PaceReference, Is.EqualTo(hand + 0.2), "the band restarts at the hand");
-            Assert.That(s.State.Pace, Is.EqualTo(0));
-            Assert.That(s.State.HeldPace, Is.EqualTo(0));
-        }
-
-        [Test]
-        public void JitterWithinTheRestBandMovesTheObjectBackAndForthByOneGainAndLeavesItWhereItWas()
-        {
-            // v_std 0.1 m/s: read as speed, a 4 mm step in one pose (0.12 m/s) and its return in two (0.06 m/s) would get
-            // different gains and walk the object; within the ±5 mm band the pace is 0 and the gain G^1.5 every time.
-            var s = PaceSolver(standardSpeed: 0.1);
-            double t = 0;
-            s.BeginHold(0.2, 0.2, t);
-            double g = Math.Pow(s.Gain, 1.5);
-            for (int cycle = 0; cycle < 50; cycle++)
-            {
-                double y0 = s.ObjectY;
-                double up = s.Step(new HandSample(0.204, true, true, t += 1 / 30.0), 1 / 30.0);
-                Assert.That(up - y0, Is.EqualTo(g * 0.004).Within(1e-12), "cycle " + cycle);
-                s.Step(new HandSample(0.202, true, true, t += 1 / 30.0), 1 / 30.0);
-                double back = s.Step(new HandSample(0.2, true, true, t += 1 / 30.0), 1 / 30.0);
-                Assert.That(back, Is.EqualTo(y0).Within(1e-12), "cycle " + cycle);
-            }
-            Assert.That(s.ObjectY, Is.EqualTo(0.2).Within(1e-12), "nothing creeps at rest");
-        }
-}
+    }
 }

@@ -1,160 +1,71 @@
+using System;
+using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 
 namespace Kosmos.PseudoHaptic.Tests
 {
     /// <summary>
-    /// The lowering guard pose by pose (1/32 s poses, so the pose clock's sums are exact): while the hand lowers, the
-    /// object ends no further from the hand than it was (at least the slack, 5 mm, is allowed); what the guard added is
-    /// given back when the hand turns up within 0.2 s of pose time, the object moving at most as the hand does.
+    /// The lowering guard moves the base the lift is measured from down with the steady hand (a slack above it): below the
+    /// base the object moves with the hand, the next lift is weighed from where it starts, and neither jitter, a one-pose
+    /// glitch nor a motion that comes back moves the base.
     /// </summary>
     public class LoweringGuardTests
     {
-        const double Pose = 1 / 32.0;
-
-        static WeightSolver Solver(double massKg)
-            => new WeightSolver(WeightModel.FromMass(massKg), new WeightProfile("test", new WeightEffect[] { new WeightGain(), new LoweringGuard() }));
-
-        sealed class Hand
+        static WeightSolver Heavy(params WeightEffect[] more)
         {
-            public double Y = 1.0, T;
-            public double Move(WeightSolver s, double dy) { T += Pose; Y += dy; return s.Step(new HandSample(Y, true, true, T), Pose); }
+            var effects = new System.Collections.Generic.List<WeightEffect> { new WeightGain(), new LoweringGuard() };
+            effects.AddRange(more);
+            return new WeightSolver(WeightModel.FromMass(2), new WeightProfile("guarded", effects));
         }
 
         [Test]
-        public void AGiveBackExactlyTwoTenthsOfASecondAfterTheGuardActedIsStillMade()
+        public void LoweredBelowTheBaseTheObjectMovesWithTheHandAndTheNextLiftIsWeighedFromThere()
         {
-            // Poses 0.2 s apart (0.4 − 0.2 is exactly 0.2 in binary): the window includes its end.
-            var s = Solver(5);
-            double g = s.Gain;
-            s.BeginHold(1.0, 1.0, 0);
-            Assert.That(s.Step(new HandSample(0.99, true, true, 0.2), 0.2), Is.EqualTo(0.995).Within(1e-12), "the guard acts");
-            Assert.That(s.Step(new HandSample(1.0, true, true, 0.4), 0.2) - 0.995, Is.EqualTo(0.005).Within(1e-12),
-                "given back: where the gain alone would have put it, not " + (0.01 * g));
-        }
-
-        [Test]
-        public void AHeavyObjectIsBroughtDownWithTheHandThenGivenBackAsTheHandRises()
-        {
-            var s = Solver(5);
-            double g = s.Gain;
-            Assert.That(g, Is.LessThan(0.1), "heavy");
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            // Lowering 1 cm: the gain would move it 0.1 mm and leave it 9.9 mm above the hand; the slack allows 5 mm.
-            Assert.That(hand.Move(s, -0.01), Is.EqualTo(0.995).Within(1e-12));
-            Assert.That(hand.Move(s, -0.01), Is.EqualTo(0.985).Within(1e-12), "then no further from the hand than it was");
-            double debt = (1.0 - 0.985) - 0.02 * g; // what the guard added beyond the gain's own motion
-            Assert.That(s.State.GuardDebt, Is.EqualTo(-debt).Within(1e-12));
-            // Turning up: the debt comes back, but the object moves no more than the hand does (1 cm) in a pose.
-            Assert.That(hand.Move(s, 0.01), Is.EqualTo(0.995).Within(1e-12));
-            double rest = debt - 0.01 * (1 - g);
-            Assert.That(hand.Move(s, 0.01), Is.EqualTo(0.995 + 0.01 * g + rest).Within(1e-12), "the rest of the debt");
-            double y = s.ObjectY;
-            Assert.That(hand.Move(s, 0.01) - y, Is.EqualTo(0.01 * g).Within(1e-12), "then the gain alone");
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0));
-        }
-
-        [TestCase(5, false)] // up 6/32 s of poses after the guard acted: given back (0.1 mm by the gain, 4.9 mm of debt)
-        [TestCase(6, true)]  // 7/32 s > 0.2 s: expired
-        public void WhatTheGuardAddedIsGivenBackOnlyWithinTwoTenthsOfASecondOfPoses(int stillPoses, bool expired)
-        {
-            var s = Solver(5);
-            double g = s.Gain;
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            hand.Move(s, -0.01);
-            for (int i = 0; i < stillPoses; i++) hand.Move(s, 0);
-            double y = s.ObjectY;
-            double up = hand.Move(s, 0.01) - y;
-            Assert.That(up, Is.EqualTo(expired ? 0.01 * g : 0.005).Within(1e-12), expired ? "the gain alone" : "back to where the gain alone would have put it");
-        }
-
-        [Test]
-        public void TheGiveBackWindowCountsFromWhenTheGuardActedNotFromTheGrab()
-        {
-            // Held still for half a second, then lowered 1 cm (the guard adds 4.9 mm) and raised 1 cm a pose later:
-            // what the guard added comes back, however long the hold had lasted.
-            var s = Solver(5);
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            for (int i = 0; i < 16; i++) hand.Move(s, 0);
-            hand.Move(s, -0.01);
-            double y = s.ObjectY;
-            Assert.That(hand.Move(s, 0.01) - y, Is.EqualTo(0.005).Within(1e-12), "back to where the gain alone would have put it");
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0).Within(1e-15));
-        }
-
-        [Test]
-        public void ALightObjectIsHeldBackWhileLoweringAndCatchesUpAsTheHandRises()
-        {
-            var s = Solver(0.01);
-            Assert.That(s.Gain, Is.EqualTo(3.0), "light: gain 3");
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            // Lowering 1 cm: the gain would drop it 3 cm, 2 cm below the hand; the slack allows 5 mm.
-            Assert.That(hand.Move(s, -0.01), Is.EqualTo(0.985).Within(1e-12));
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0.015).Within(1e-12));
-            Assert.That(hand.Move(s, -0.01), Is.EqualTo(0.975).Within(1e-12), "5 mm below the hand, as before");
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0.035).Within(1e-12));
-            // Up 1 cm a pose: the gain's 3 cm less what the guard added, but never less than the hand's own 1 cm.
-            Assert.That(hand.Move(s, 0.01), Is.EqualTo(0.985).Within(1e-12), "with the hand: 2 of the 3.5 cm given back");
-            Assert.That(hand.Move(s, 0.01), Is.EqualTo(1.0).Within(1e-12), "3 cm less the last 1.5 cm");
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0).Within(1e-15));
-            Assert.That(hand.Move(s, 0.01), Is.EqualTo(1.03).Within(1e-12), "then the gain alone");
-        }
-
-        [Test]
-        public void WhatTheGuardAddsPaysTheSpeedCapsDebtSoTheObjectNeverEndsBelowTheHand()
-        {
-            // 5 kg lowered 0.3 m at 2.4 m/s by a user of 0.3 m/s: the cap defers the gain's downward motion, the guard
-            // brings the object down with the hand anyway; that pays what the cap owed, or the cap would later lower
-            // it past the still hand.
-            var s = new WeightSolver(WeightModel.FromMass(5),
-                new WeightProfile("test", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new SpeedCap(), new LoweringGuard() }), 0.3);
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            for (int i = 0; i < 4; i++) hand.Move(s, -0.075);
-            Assert.That(s.ObjectY - hand.Y, Is.InRange(0.0, 0.005 + 1e-12), "brought down with the hand, within the slack");
-            for (int i = 0; i < 64; i++)
+            var s = Heavy();
+            var frames = Run.Headset(frameRate: 90).Render(HandPath.StartAt(1.0).Hold(0.3).MoveTo(0.6, 0.8).Hold(0.5).MoveTo(0.9, 1).Hold(0.5));
+            var y = new double[frames.Length];
+            s.BeginHold(frames[0].HandY, frames[0].HandY, frames[0].PoseTime);
+            double lowest = double.PositiveInfinity;
+            for (int i = 1; i < frames.Length; i++)
             {
-                double y = hand.Move(s, 0);
-                Assert.That(y - hand.Y, Is.InRange(0.0, 0.005 + 1e-12), "still hand, pose " + i + ": nothing owed pushes it lower");
+                y[i] = s.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+                if (frames[i].Time < 1.6) Assert.That(Math.Abs(frames[i].HandY - y[i]), Is.LessThanOrEqualTo(0.005 + 1e-12), "lowering: with the hand, frame " + i);
+                if (frames[i].Time < 1.6) lowest = Math.Min(lowest, y[i]);
             }
+            Assert.That(s.State.Base, Is.EqualTo(0.6 + 0.005).Within(1e-9), "the base is where the hand rested, plus the slack");
+            double lift = 0.9 - 0.605, gain = s.Gain;
+            Assert.That(Run.Last(y) - lowest, Is.EqualTo(gain * lift).Within(0.006), "the next lift weighed from where it started");
         }
 
         [Test]
-        public void ReanchoringForgetsWhatTheGuardAdded()
+        public void WithoutItAHeavyObjectLoweredFloatsAboveTheHand()
         {
-            // Lowered (the guard adds 4.9 mm), then tracking lost for 0.31 s: the hand comes back elsewhere and the hold
-            // re-anchors; rising from there moves the object by the gain alone, nothing is given back.
-            var s = Solver(5);
-            double g = s.Gain;
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            hand.Move(s, -0.01);
-            Assert.That(s.State.GuardDebt, Is.LessThan(-0.004));
-            for (int i = 0; i < 10; i++) { hand.T += Pose; s.Step(HandSample.Lost, Pose); }
-            hand.Y = 1.2;
-            hand.Move(s, 0);
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0), "forgotten");
-            double y = s.ObjectY;
-            Assert.That(hand.Move(s, 0.01) - y, Is.EqualTo(0.01 * g).Within(1e-12));
+            var frames = Run.Headset(frameRate: 90).Render(HandPath.StartAt(1.0).Hold(0.3).MoveTo(0.6, 0.8).Hold(0.5));
+            var without = Run.Replay(new WeightSolver(WeightModel.FromMass(2), new WeightProfile("bare", new WeightEffect[] { new WeightGain() })), frames);
+            var with = Run.Replay(Heavy(), frames);
+            Assert.That(Run.Last(without) - 0.6, Is.GreaterThan(0.2), "Eq. 4 alone: G × the lowering");
+            Assert.That(Run.Last(with), Is.EqualTo(0.6).Within(1e-9));
         }
 
         [Test]
-        public void LoweringWithinTheOffsetOrAStillHandLeavesTheGainAlone()
+        public void JitterAGlitchAndAHeftNeverMoveTheBase([Range(1, 40)] int seed)
         {
-            var s = Solver(5);
-            double g = s.Gain;
-            var hand = new Hand();
-            s.BeginHold(hand.Y, hand.Y, 0);
-            hand.Move(s, 0.1); // lifted 10 cm: the object hangs about 10 cm below the hand
-            double y = s.ObjectY;
-            Assert.That(hand.Move(s, -0.01) - y, Is.EqualTo(-0.01 * g).Within(1e-12), "lowering toward it: the gain alone");
-            y = s.ObjectY;
-            Assert.That(hand.Move(s, 0) - y, Is.EqualTo(0), "a still hand: nothing");
-            Assert.That(s.State.GuardDebt, Is.EqualTo(0));
+            var rng = new Random(seed);
+            var path = HandPath.StartAt(1.0).Hold(0.5).MoveTo(1.3, 1).Hold(0.5).MoveTo(1.42, 0.3).MoveTo(1.3, 0.3).Hold(1);
+            var headset = new HeadsetSimulator { FrameRate = 90, JitterSd = 0.0015, Seed = seed }.Glitch(0.2 + rng.NextDouble(), -0.2).Glitch(2.5 + rng.NextDouble(), -0.2);
+            var s = Heavy();
+            Run.Replay(s, headset.Render(path));
+            Assert.That(s.State.Base, Is.EqualTo(1.0).Within(0.0045), "seed " + seed + ": within the jitter of where the hold began");
+        }
+
+        [Test]
+        public void TheSlackIsValidatedAndNamed()
+        {
+            Assert.That(new LoweringGuard().Slack, Is.EqualTo(0.005));
+            Assert.That(() => new LoweringGuard(-0.001), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("slack"));
+            Assert.That(() => new LoweringGuard(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("slack"));
             Assert.That(new LoweringGuard().Name, Is.EqualTo("lowering-guard"));
+            Assert.That(new LoweringGuard().Stage, Is.EqualTo(EffectStage.Base));
         }
     }
 }

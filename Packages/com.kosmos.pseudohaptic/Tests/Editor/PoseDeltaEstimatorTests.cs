@@ -5,12 +5,12 @@ namespace Kosmos.PseudoHaptic.Tests
     /// <summary>
     /// The pose-delta estimator on its own, frame by frame: what a new pose is, the interval its speed is measured
     /// over (the poses' clock, else the frames' time since the last pose, at least a 60 Hz period), when it reads the
-    /// hand as still, and when it re-anchors instead of following (a jump no hand makes, a clock that steps back, a
-    /// frame or a loss longer than the catch-up gap).
+    /// hand as still, what it follows across a gap (everything: a loss, a long frame, a clock that steps back), and which
+    /// pose it refuses (one no hand could have reached in the frames' time since the last one it accepted).
     /// </summary>
     public class PoseDeltaEstimatorTests
     {
-        static readonly SolverLimits Limits = SolverLimits.Default; // hand ≤ 6 m/s, catch-up gap 0.25 s
+        static readonly SolverLimits Limits = SolverLimits.Default; // hand ≤ 10 m/s
 
         static PoseDeltaEstimator Started(double y = 1.0, double poseTime = 0)
         {
@@ -91,54 +91,74 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(f.HandDelta, Is.EqualTo(0));
         }
 
-        [TestCase(0.19, false)]  // a 90 Hz pose step is judged over a 30 Hz period: 6 m/s × 1/30 s = 0.2 m
-        [TestCase(0.21, true)]
-        public void AStepFasterThanAnyHandReanchorsJudgedOverAtLeastAThirtiethOfASecond(double step, bool reanchors)
+        [TestCase(0.33, false)]  // a 90 Hz pose step is judged over a 30 Hz period: 10 m/s × 1/30 s = 0.333 m
+        [TestCase(0.34, true)]
+        public void AStepFasterThanAnyHandIsRefusedJudgedOverAtLeastAThirtiethOfASecond(double step, bool refused)
         {
             var e = Started(1.0, 0);
             var f = Frame(ref e, 1.0 + step, 1 / 90.0, 1 / 90.0);
-            Assert.That(f.Reanchored, Is.EqualTo(reanchors));
-            Assert.That(f.HandDelta, Is.EqualTo(reanchors ? 0 : step).Within(1e-15));
-            Assert.That(f.HandAfter, Is.EqualTo(1.0 + step), "either way the estimator is now at the new pose");
-            Assert.That(e.Speed, Is.EqualTo(reanchors ? 0 : step * 90).Within(1e-9));
-        }
-
-        [TestCase(0.0, 0.29, false)] // after a still spell, at most 50 ms count: 6 m/s × 0.05 s = 0.3 m
-        [TestCase(0.0, 0.31, true)]
-        [TestCase(0.1, 0.85, false)] // after a 0.1 s loss, 0.15 s count: 0.9 m
-        [TestCase(0.1, 0.95, true)]
-        public void AfterAStillSpellOnlyFiftyMillisecondsCountPlusTheTimeTrackingWasLost(double lostFor, double step, bool reanchors)
-        {
-            var e = Started(1.0, 0);
-            Frame(ref e, 1.0, 0, 0.1); // 100 ms without a new pose
-            if (lostFor > 0) Frame(ref e, double.NaN, double.NaN, lostFor, usable: false);
-            var f = Frame(ref e, 1.0 + step, 0.2, 0.01);
-            Assert.That(f.Reanchored, Is.EqualTo(reanchors));
-            if (!reanchors) Assert.That(f.HandDelta, Is.EqualTo(step).Within(1e-12), "caught up over the loss");
+            Assert.That(f.Usable, Is.EqualTo(!refused));
+            Assert.That(f.HandDelta, Is.EqualTo(refused ? 0 : step).Within(1e-15));
+            Assert.That(f.HandAfter, Is.EqualTo(refused ? 1.0 : 1.0 + step), "a refused pose is not followed");
+            Assert.That(e.Speed, Is.EqualTo(refused ? 0 : step * 90).Within(1e-9));
         }
 
         [Test]
-        public void ALongFrameALongLossOrAClockThatStepsBackReanchors()
+        public void ARefusedPoseSeenAgainIsTheHandAndAGlitchAfterALossDoesNotLockItOut()
+        {
+            // A hand really is 0.5 m away: refused once, followed at the next pose that agrees with it.
+            var moved = Started(1.0, 0);
+            Assert.That(Frame(ref moved, 1.5, 1 / 90.0, 1 / 90.0).Usable, Is.False);
+            var seen = Frame(ref moved, 1.51, 2 / 90.0, 1 / 90.0);
+            Assert.That(seen.Usable, Is.True, "seen twice in a row at its new place");
+            Assert.That(seen.HandDelta, Is.EqualTo(0.51).Within(1e-12));
+            Assert.That(seen.Bridged, Is.True, "the refused frame was a gap: the motion is followed in full");
+
+            // After a loss a glitched pose is accepted (a hand lost for a second may be anywhere); the real hand, back next
+            // pose, is out of reach of the glitch but within reach of the pose before it: followed.
+            var glitched = Started(1.0, 0);
+            Frame(ref glitched, double.NaN, double.NaN, 1.0, usable: false);
+            Assert.That(Frame(ref glitched, 1.9, 1.0, 0.01).Usable, Is.True);
+            var real = Frame(ref glitched, 1.02, 1.0 + 1 / 30.0, 1 / 30.0);
+            Assert.That(real.Usable, Is.True);
+            Assert.That(real.HandAfter, Is.EqualTo(1.02));
+        }
+
+        [TestCase(0.0, 0.49, false)] // after a still spell, at most 50 ms count: 10 m/s × 0.05 s = 0.5 m
+        [TestCase(0.0, 0.51, true)]
+        [TestCase(0.1, 1.45, false)] // after a 0.1 s loss, 0.15 s count: 1.5 m
+        [TestCase(0.1, 1.55, true)]
+        public void AfterAStillSpellOnlyFiftyMillisecondsCountPlusTheTimeTrackingWasLost(double lostFor, double step, bool refused)
+        {
+            var e = Started(1.0, 0);
+            for (int i = 0; i < 10; i++) Frame(ref e, 1.0, 0, 0.01); // 100 ms of frames without a new pose
+            if (lostFor > 0) Frame(ref e, double.NaN, double.NaN, lostFor, usable: false);
+            var f = Frame(ref e, 1.0 + step, 0.2, 0.01);
+            Assert.That(f.Usable, Is.EqualTo(!refused));
+            if (!refused) Assert.That(f.HandDelta, Is.EqualTo(step).Within(1e-12), "caught up over the loss");
+            if (!refused) Assert.That(f.Bridged, Is.EqualTo(lostFor > 0));
+        }
+
+        [Test]
+        public void ALongFrameALongLossOrAClockThatStepsBackIsFollowedInFull()
         {
             var longFrame = Started(1.0, 0);
-            Assert.That(Frame(ref longFrame, 1.001, 0.3, 0.3).Reanchored, Is.True, "a 0.3 s frame: past the catch-up gap");
-            var shortFrame = Started(1.0, 0);
-            Assert.That(Frame(ref shortFrame, 1.001, 0.2, 0.2).Reanchored, Is.False, "a 0.2 s frame is bridged");
+            var hitch = Frame(ref longFrame, 1.6, 10.0, 10.0);
+            Assert.That(hitch.HandDelta, Is.EqualTo(0.6).Within(1e-12), "a 10 s frame: the hand may have gone anywhere a hand goes in 10 s");
+            Assert.That(hitch.MotionInterval, Is.EqualTo(10.0).Within(1e-12));
 
             var longLoss = Started(1.0, 0);
-            for (int i = 0; i < 3; i++) Frame(ref longLoss, double.NaN, double.NaN, 0.1, usable: false);
-            Assert.That(Frame(ref longLoss, 1.001, 0.31, 0.01).Reanchored, Is.True, "lost for 0.3 s");
-            var shortLoss = Started(1.0, 0);
-            for (int i = 0; i < 2; i++) Frame(ref shortLoss, double.NaN, double.NaN, 0.1, usable: false);
-            var bridged = Frame(ref shortLoss, 1.001, 0.21, 0.01);
-            Assert.That(bridged.Reanchored, Is.False, "lost for 0.2 s: bridged");
-            Assert.That(bridged.MotionInterval, Is.EqualTo(0.21).Within(1e-12));
+            for (int i = 0; i < 30; i++) Frame(ref longLoss, double.NaN, double.NaN, 0.1, usable: false);
+            var back = Frame(ref longLoss, 1.4, 3.01, 0.01);
+            Assert.That(back.Bridged, Is.True, "lost for 3 s");
+            Assert.That(back.HandDelta, Is.EqualTo(0.4).Within(1e-12), "the hand's motion across the loss is followed");
+            Assert.That(back.MotionInterval, Is.EqualTo(3.01).Within(1e-12));
 
-            var back = Started(1.0, 2.0);
-            var f = Frame(ref back, 1.001, 1.9, 0.01);
-            Assert.That(f.Reanchored, Is.True, "the pose clock stepped back");
-            Assert.That(f.HandDelta, Is.EqualTo(0));
-            Assert.That(back.Speed, Is.EqualTo(0));
+            var stepBack = Started(1.0, 2.0);
+            var f = Frame(ref stepBack, 1.001, 1.9, 0.01);
+            Assert.That(f.Usable, Is.True, "the pose clock stepped back: still the hand");
+            Assert.That(f.HandDelta, Is.EqualTo(0.001).Within(1e-15));
+            Assert.That(f.MotionInterval, Is.EqualTo(1 / 60.0).Within(1e-15), "measured over the frames, at least a 60 Hz period");
         }
 
         [Test]
@@ -170,12 +190,12 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(f.HandDelta, Is.EqualTo(0));
         }
 
-        [TestCase(0.23, false)] // poses 40 ms apart (between the 1/30 s floor and the 50 ms ceiling): 6 m/s × 0.04 s = 0.24 m
-        [TestCase(0.25, true)]
-        public void BetweenAThirtiethOfASecondAndFiftyMillisecondsAStepIsJudgedOverItsOwnInterval(double step, bool reanchors)
+        [TestCase(0.39, false)] // 40 ms since the last pose (between the 1/30 s floor and the 50 ms ceiling): 10 m/s × 0.04 s = 0.4 m
+        [TestCase(0.41, true)]
+        public void BetweenAThirtiethOfASecondAndFiftyMillisecondsAStepIsJudgedOverItsOwnTime(double step, bool refused)
         {
             var e = Started(1.0, 0);
-            Assert.That(Frame(ref e, 1.0 + step, 0.04, 0.04).Reanchored, Is.EqualTo(reanchors));
+            Assert.That(Frame(ref e, 1.0 + step, 0.04, 0.04).Usable, Is.EqualTo(!refused));
         }
 
         [Test]

@@ -57,8 +57,12 @@ namespace Kosmos.PseudoHaptic.Tests
             double y = s.ObjectY;
             s.Configure(WeightModel.FromMass(0.045), NamedProfiles.Gain, 0.5);
             Assert.That(s.ObjectY, Is.EqualTo(y));
+            // Now a golf ball: it moves with the hand, and the offset the 1 kg weight left glides away at the glide speed.
+            double glidePerFrame = SolverLimits.Default.GlideSpeed * SolverLimits.Default.MaxFrameTime;
             s.Step(new HandSample(1.2, true, true, 0.13), 0.03);
-            Assert.That(s.ObjectY - y, Is.EqualTo(0.1).Within(1e-9));
+            Assert.That(s.ObjectY - y, Is.EqualTo(0.1 + glidePerFrame).Within(1e-9));
+            for (int i = 0; i < 20; i++) s.Step(new HandSample(1.2, true, true, 0.13 + 0.03 * (i + 1)), 0.03);
+            Assert.That(s.ObjectY, Is.EqualTo(1.2).Within(1e-12), "then it is in the hand");
         }
 
         [Test]

@@ -6,8 +6,8 @@ using Kosmos.PseudoHaptic.Simulation;
 namespace Kosmos.PseudoHaptic.Tests
 {
     /// <summary>
-    /// Short tracking losses mid-lift, as a Quest produces them: low-confidence poses in fast motion and frames
-    /// without a pose. Motion during a short loss is caught up, not thrown away (P1 through short losses).
+    /// Tracking losses mid-lift, as a Quest produces them: low-confidence poses in fast motion and frames without a pose.
+    /// Motion during a loss is followed in full when the hand comes back, not thrown away (P1, P12).
     /// </summary>
     public class TrackingLossTests
     {
@@ -62,9 +62,9 @@ namespace Kosmos.PseudoHaptic.Tests
         }
     
 
-        // Frame by frame, with frames of 1/32 s so that every sum below is exact: the hold bridges a loss of up to the
-        // catch-up gap (0.25 s = 8 frames) and, after a longer one, withholds the hand for SettleTime (0.125 s = 4 frames
-        // of steady tracking) and then re-anchors on it, so the object moves with the hand from the next pose on.
+        // Frame by frame, with frames of 1/32 s so that every sum below is exact. A loss of any length is bridged: the
+        // first pose back is followed in full. For SettleTime (0.125 s = 4 frames) after a loss, and while a pose is of low
+        // confidence, poses are followed but not remembered: they never move the base the lift is measured from.
         const double Frame32 = 1 / 32.0;
 
         static WeightSolver GolfBallWithHold(double settleTime = 0.125, bool requireHighConfidence = true)
@@ -75,68 +75,69 @@ namespace Kosmos.PseudoHaptic.Tests
             return solver;
         }
 
-        [TestCase(8, false)] // 0.25 s: bridged, what the hand did meanwhile is caught up at once
-        [TestCase(9, true)]  // 0.28125 s: settles first
-        public void ALossLongerThanTheCatchUpGapSettlesForSettleTimeThenReanchors(int lostFrames, bool settles)
+        /// <summary>2 kg under Eq. 4 with the lowering guard (whose base the tests watch) and, if asked, the hold.</summary>
+        static WeightSolver HeavyWithGuard(bool hold, bool requireHighConfidence = true)
+        {
+            var effects = new List<WeightEffect> { new WeightGain(), new LoweringGuard() };
+            if (hold) effects.Insert(0, new TrackingLossHold(0.125, requireHighConfidence));
+            return new WeightSolver(WeightModel.FromMass(2), new WeightProfile("test", effects));
+        }
+
+        [TestCase(8)]   // 0.25 s
+        [TestCase(96)]  // 3 s
+        public void ALossOfAnyLengthIsFollowedInFullOnTheFirstPoseBack(int lostFrames)
         {
             var solver = GolfBallWithHold();
             double t = 0, hand = 1.0;
             solver.BeginHold(hand, hand, t);
             for (int i = 0; i < 4; i++) { t += Frame32; solver.Step(new HandSample(hand, true, true, t), Frame32); }
-            for (int i = 0; i < lostFrames; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); }
+            for (int i = 0; i < lostFrames; i++) { t += Frame32; Assert.That(solver.Step(HandSample.Lost, Frame32), Is.EqualTo(1.0), "lost: the object stays"); }
             hand = 1.05; // it came back 5 cm higher, then rises 1 mm a frame
-            var y = new double[6];
-            for (int i = 0; i < 6; i++) { t += Frame32; hand += 0.001; y[i] = solver.Step(new HandSample(hand, true, true, t), Frame32); }
-            if (!settles)
+            for (int i = 0; i < 6; i++)
             {
-                Assert.That(y[0], Is.EqualTo(1.051).Within(1e-12), "caught up on the first pose back");
-                Assert.That(y[5], Is.EqualTo(hand).Within(1e-12));
-                return;
+                t += Frame32;
+                hand += 0.001;
+                Assert.That(solver.Step(new HandSample(hand, true, true, t), Frame32), Is.EqualTo(hand).Within(1e-12), "frame " + i + " back: with the hand");
             }
-            for (int i = 0; i < 4; i++) Assert.That(y[i], Is.EqualTo(1.0), "frame " + i + ": settling, then re-anchored where the hand is");
-            Assert.That(y[4] - y[3], Is.EqualTo(0.001).Within(1e-12), "then it follows the hand's next step");
-            Assert.That(y[5] - y[4], Is.EqualTo(0.001).Within(1e-12));
         }
 
-        [Test]
-        public void AShortBlinkWhileSettlingNeitherRestartsNorCompletesTheSettling()
+        [TestCase(true, 0.0)]
+        [TestCase(false, 0.045)]
+        public void TheFirstPosesAfterALossAreFollowedButDoNotMoveTheBase(bool hold, double baseDrop)
         {
-            var solver = GolfBallWithHold();
+            // A 2 kg object lifted 5 cm; tracking lost 0.5 s; it comes back 10 cm low for four poses (the re-acquisition
+            // snap, below where the lift began), then where the hand is. With the hold the snap never reaches the base, and
+            // the object ends where it was.
+            var solver = HeavyWithGuard(hold);
             double t = 0, hand = 1.0;
             solver.BeginHold(hand, hand, t);
-            for (int i = 0; i < 10; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); } // a long loss
-            var y = new List<double>();
-            for (int i = 0; i < 2; i++) { t += Frame32; hand += 0.001; y.Add(solver.Step(new HandSample(hand, true, true, t), Frame32)); }
-            for (int i = 0; i < 2; i++) { t += Frame32; y.Add(solver.Step(HandSample.Lost, Frame32)); }      // a blink
-            for (int i = 0; i < 3; i++) { t += Frame32; hand += 0.001; y.Add(solver.Step(new HandSample(hand, true, true, t), Frame32)); }
-            // Settling counts only tracked frames: 2 before the blink and 2 after make its 4; the third after follows.
-            for (int i = 0; i < 6; i++) Assert.That(y[i], Is.EqualTo(1.0), "frame " + i);
-            Assert.That(y[6] - y[5], Is.EqualTo(0.001).Within(1e-12), "following");
+            for (int i = 0; i < 30; i++) { t += Frame32; hand = 1.0 + 0.05 * Math.Min(1, i / 20.0); solver.Step(new HandSample(hand, true, true, t), Frame32); }
+            double before = solver.ObjectY, baseBefore = solver.State.Base;
+            for (int i = 0; i < 16; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); }
+            for (int i = 0; i < 4; i++) { t += Frame32; solver.Step(new HandSample(hand - 0.1, true, true, t), Frame32); }
+            for (int i = 0; i < 10; i++) { t += Frame32; solver.Step(new HandSample(hand, true, true, t), Frame32); }
+            Assert.That(baseBefore - solver.State.Base, Is.EqualTo(baseDrop).Within(1e-12), "how far the snap moved the base");
+            if (hold) Assert.That(solver.ObjectY, Is.EqualTo(before).Within(1e-12), "back where it was");
+            else Assert.That(solver.ObjectY, Is.LessThan(before - 0.02), "without the hold the snap counts as a lowering, and the way back as a new lift");
         }
 
         [TestCase(true)]
         [TestCase(false)]
-        public void LowConfidencePosesCountAsLostOnlyWhenHighConfidenceIsRequired(bool require)
+        public void LowConfidencePosesAreFollowedAndRememberedOnlyWhenHighConfidenceIsNotRequired(bool require)
         {
-            var solver = GolfBallWithHold(requireHighConfidence: require);
+            var golf = GolfBallWithHold(requireHighConfidence: require);
             double t = 0, hand = 1.0;
-            solver.BeginHold(hand, hand, t);
-            for (int i = 0; i < 12; i++) { t += Frame32; hand += 0.002; solver.Step(new HandSample(hand, true, false, t), Frame32); }
-            if (require) Assert.That(solver.ObjectY, Is.EqualTo(1.0), "a long low-confidence spell is a long loss: the object waits");
-            else Assert.That(solver.ObjectY, Is.EqualTo(hand).Within(1e-12), "followed like any pose");
-        }
+            golf.BeginHold(hand, hand, t);
+            for (int i = 0; i < 12; i++) { t += Frame32; hand += 0.002; golf.Step(new HandSample(hand, true, false, t), Frame32); }
+            Assert.That(golf.ObjectY, Is.EqualTo(hand).Within(1e-12), "followed: the object stays with the hand the user sees");
 
-        [Test]
-        public void WithNoSettleTimeTheFirstPoseBackReanchors()
-        {
-            var solver = GolfBallWithHold(settleTime: 0);
-            double t = 0;
-            solver.BeginHold(1.0, 1.0, t);
-            for (int i = 0; i < 10; i++) { t += Frame32; solver.Step(HandSample.Lost, Frame32); }
-            t += Frame32;
-            Assert.That(solver.Step(new HandSample(1.2, true, true, t), Frame32), Is.EqualTo(1.0), "re-anchored: no jump");
-            t += Frame32;
-            Assert.That(solver.Step(new HandSample(1.201, true, true, t), Frame32), Is.EqualTo(1.001).Within(1e-12), "then follows");
+            // A low-confidence dip of 8 cm for six poses: remembered (the base follows it down) only where confidence is not required.
+            var heavy = HeavyWithGuard(hold: true, requireHighConfidence: require);
+            t = 0;
+            heavy.BeginHold(1.0, 1.0, t);
+            for (int i = 0; i < 6; i++) { t += Frame32; heavy.Step(new HandSample(1.0, true, true, t), Frame32); }
+            for (int i = 0; i < 6; i++) { t += Frame32; heavy.Step(new HandSample(0.92, true, false, t), Frame32); }
+            Assert.That(heavy.State.Base, require ? Is.EqualTo(1.0).Within(1e-12) : Is.LessThan(0.93));
             Assert.That(new TrackingLossHold().Name, Is.EqualTo("tracking-loss-hold"));
         }
     }

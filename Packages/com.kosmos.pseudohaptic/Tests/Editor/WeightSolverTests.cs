@@ -142,33 +142,23 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Assert.Throws<ArgumentNullException>(() => s.Configure(WeightModel.FromMass(1), null, 0.5)).ParamName, Is.EqualTo("profile"));
         }
 
-        [TestCase(+1)]
-        [TestCase(-1)]
-        public void TheSpeedLimitCarriesAtMostItsCarryLimitInEitherDirection(int direction)
-        {
-            // 0.3 m/s, at most 5 cm carried: a 15 cm pose moves 0.3 × 25 ms now, 5 cm later, and the rest is dropped.
-            var s = GolfBall(new WeightProfile("limited", new WeightEffect[0], new SolverLimits(maxObjectSpeed: 0.3, maxCarry: 0.05)));
-            s.BeginHold(1.0, 1.0, 0);
-            double first = s.Step(new HandSample(1.0 + direction * 0.15, true, true, Pose), Pose);
-            Assert.That(first - 1.0, Is.EqualTo(direction * 0.0075).Within(1e-15));
-            Assert.That(s.State.Carry, Is.EqualTo(direction * 0.05));
-            for (int i = 0; i < 20; i++) s.Step(new HandSample(1.0 + direction * 0.15, true, true, Pose), Pose);
-            Assert.That(s.ObjectY - 1.0, Is.EqualTo(direction * 0.0575).Within(1e-12));
-        }
 
         [Test]
-        public void TheHandFilterRestartsWhereTheHandIsReanchoredSoNothingCreeps()
+        public void WithAHandFilterTheObjectComesBackToTheHandAfterALossAndNothingCreeps()
         {
             var s = GolfBall(new WeightProfile("filtered", new WeightEffect[0], null, new ExponentialSmoothing(0.1)));
             double t = 0;
             s.BeginHold(1.0, 1.0, t);
             for (int i = 0; i < 10; i++) { t += Pose; s.Step(HandSample.Lost, Pose); }   // lost for 0.31 s
-            double y = s.ObjectY;
-            for (int i = 0; i < 30; i++)
+            double previous = s.ObjectY;
+            for (int i = 0; i < 60; i++)
             {
                 t += Pose;
-                Assert.That(s.Step(new HandSample(1.3, true, true, t), Pose), Is.EqualTo(y), "back 30 cm higher, still: pose " + i);
+                double y = s.Step(new HandSample(1.3, true, true, t), Pose);
+                Assert.That(y, Is.GreaterThanOrEqualTo(previous).And.LessThanOrEqualTo(1.3 + 1e-12), "back 30 cm higher: the filter brings it up, never past: pose " + i);
+                previous = y;
             }
+            Assert.That(previous, Is.EqualTo(1.3).Within(1e-6), "in the hand, and still");
         }
 
         [Test]

@@ -1,27 +1,32 @@
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// Optional (in no named profile): the hold in <see cref="WeightSolver3D"/> ends by itself once the followed
-    /// hand (the midpoint with two hands) has been more than <see cref="Distance"/> from where it grabbed the
-    /// object, in 3D, for <see cref="Dwell"/> of frame time. The solver reports it
-    /// (<see cref="WeightSolver3D.BrokeAway"/>) so a grab driver can drop the object. The dwell keeps a one-pose
-    /// tracking glitch (33 ms at 30 Hz) from dropping it.
+    /// Optional (in no named profile): the hold in <see cref="WeightSolver3D"/> ends by itself when the hand pulls too far.
+    /// What "too far" measures (<see cref="WeightSolver3D.BreakAwayMeasure"/>):
+    /// <list type="bullet">
+    /// <item>under <see cref="OffsetCorrection"/>, how far the hand has pulled beyond what the weight allows
+    /// (<see cref="WeightSolver3D.Strain"/>: the lag an object that moves no faster than <see cref="SpeedCap"/>'s v_cap would
+    /// have, and sideways how far <see cref="LateralInertia"/>'s lag exceeds the lag it shows). The offset the user sees
+    /// stops at the correction's ceiling, so a distance could never be reached; a yank can. A profile with the correction
+    /// and neither the cap nor lateral inertia is refused: break-away could never fire there;</item>
+    /// <item>without it, the distance between the followed point (one hand, or the midpoint of both) and the object, less
+    /// the one at the grab, in 3D.</item>
+    /// </list>
+    /// The hold ends at the second pose in a row past <see cref="Distance"/>: one pose interval at most after the first, and
+    /// a one-pose tracking glitch never drops the object. Time while tracking is lost counts for nothing: the next pose
+    /// seen decides. The solver reports it (<see cref="WeightSolver3D.BrokeAway"/>) and the object stays where it was let go.
     /// </summary>
     public sealed class BreakAway : WeightEffect
     {
         public override string Name => "break-away";
         public override EffectStage Stage => EffectStage.Hold;
 
-        /// <summary>Hand-to-grab-point distance at which the hold ends, m.</summary>
+        /// <summary>How far the hand must pull for the hold to end, m (see the class for what it measures).</summary>
         public double Distance { get; }
 
-        /// <summary>How long the distance must be exceeded, s (0: at once).</summary>
-        public double Dwell { get; }
-
-        public BreakAway(double distance, double dwell = 0.1)
+        public BreakAway(double distance)
         {
             Distance = ConfigurationGuard.Positive(distance, nameof(distance));
-            Dwell = ConfigurationGuard.InRange(dwell, 0, 5, nameof(dwell));
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }

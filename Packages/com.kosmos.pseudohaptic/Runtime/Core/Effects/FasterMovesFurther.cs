@@ -4,95 +4,148 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// Son et al. 2022, §3.1: "even if we moved our hands at the same height when lifting two virtual objects with
-    /// the same weight, ... the movement of the two fast-moving virtual objects was greater". A gain that is
-    /// constant in speed cannot keep that rule, and in it the user's standard speed v_std would cancel. For an
-    /// object heavier than the standard (G &lt; 1) the gain on each pose's displacement is
-    /// <code>G_v = G^r,  r = clamp(1/√x, <see cref="FastExponent"/>, <see cref="SlowExponent"/>),  x = v / v_std</code>
-    /// where v is the hand's speed over the pose: at the user's standard speed r = 1 (the gain of Eq. 4–6);
-    /// faster, r &lt; 1 and the gain moves toward 1 (the object moves further); slower, r &gt; 1 and it moves away
-    /// from 1. Bounded both ways (G^SlowExponent ≤ G_v ≤ G^FastExponent &lt; 1: never a jitter amplifier),
-    /// continuous in v, and monotone in G at every speed (heavier still lags more, P2). The standard weight
-    /// (G = 1) and lighter objects are untouched. v is judged on a hand that follows the pose only once it leaves a
-    /// ±<see cref="RestBand"/> band, so tracking jitter at rest reads as speed 0 (the slow end, a constant gain):
-    /// jitter back and forth then cancels exactly instead of walking the object away.
+    /// the same weight, ... the movement of the two fast-moving virtual objects was greater". A gain that is constant
+    /// in speed cannot keep that rule, and in it the user's standard speed v_std would cancel. For an object heavier
+    /// than the standard (G &lt; 1) the gain on the lift is
+    /// <code>G_p = G^r,  r = clamp(1/√x, <see cref="FastExponent"/>, <see cref="SlowExponent"/>),  x = κ · p / v_std</code>
+    /// where p is the lift's pace: the mean speed of its rise from the base to its highest point so far, which settles
+    /// once the rise pauses for <see cref="PauseTime"/> and starts over when the hand is back at the base. κ =
+    /// <see cref="StandardLiftRatio"/> makes a lift at the user's standard speed read x = 1, where G_p = G (Eq. 4–6);
+    /// faster, r &lt; 1 and the gain moves toward 1 (the object rises further); slower, r &gt; 1 and it moves away from 1.
+    /// Bounded both ways (G^SlowExponent ≤ G_p ≤ G^FastExponent &lt; 1), continuous, monotone in G at every pace (heavier
+    /// still lags more, P2). The pace is a mean over the whole rise, read on the steady hand (the median of three
+    /// poses), so a glitch, a loss or a snap barely changes it; and it never changes once the rise has paused, so a heft
+    /// after a lift, however fast, leaves the gain as it was: the weight stays a function of where the hand is.
+    /// The standard weight (G = 1) and lighter objects are untouched.
     /// </summary>
     public sealed class FasterMovesFurther : WeightEffect
     {
         public override string Name => "faster-moves-further";
-        public override EffectStage Stage => EffectStage.ObjectMotion;
+        public override EffectStage Stage => EffectStage.Lift;
+
+        /// <summary>
+        /// Mean speed of a standard lift's 10–90 % span (how <see cref="StandardSpeedCalibration"/> measures v_std) over
+        /// its pace as this effect measures it (the fastest mean speed from leaving a 5 mm band at the base), for a
+        /// minimum-jerk lift: a lift at the user's standard speed reads x = 1 (`FasterMovesFurtherTests`).
+        /// </summary>
+        public const double StandardLiftRatio = 1.29;
 
         /// <summary>The exponent r for a hand much faster than v_std (r ≤ 1): G^r is the largest gain.</summary>
         public double FastExponent { get; }
 
-        /// <summary>The exponent r for a hand much slower than v_std, and at rest (r ≥ 1).</summary>
+        /// <summary>The exponent r for a hand much slower than v_std, and at the start of a lift (r ≥ 1).</summary>
         public double SlowExponent { get; }
 
-        /// <summary>Half-width of the band that keeps jitter at rest from reading as speed, m.</summary>
+        /// <summary>How far above the base the steady hand is still at rest, m: a rise starts when it leaves this band.</summary>
         public double RestBand { get; }
 
-        /// <summary>Time constant over which the hand's pace is smoothed, s.</summary>
-        public double SmoothingTime { get; }
+        /// <summary>A rise that has not gone higher for this long has paused: its pace is settled until the hand is back at
+        /// the base, s.</summary>
+        public double PauseTime { get; }
 
-        /// <summary>
-        /// Hand travel over which <see cref="HoldState.HeldPace"/> forgets a faster pace, m. The held pace rises at once to
-        /// the smoothed pace and falls toward it in proportion to the distance the (band-followed) hand travels, never with
-        /// time: a resting hand keeps the pace of its latest motion.
-        /// </summary>
-        public double ReleaseDistance { get; }
+        /// <summary>How strongly the exponent follows the pace: r = x^(−Sensitivity) (0: not at all).</summary>
+        public double Sensitivity { get; }
 
-        public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005, double smoothingTime = 0.1,
-            double releaseDistance = 0.2)
+        public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005, double pauseTime = 0.16,
+            double sensitivity = 0.06)
         {
-            ReleaseDistance = ConfigurationGuard.InRange(releaseDistance, 0.001, 10, nameof(releaseDistance));
-            SmoothingTime = ConfigurationGuard.InRange(smoothingTime, 0, 1, nameof(smoothingTime));
+            Sensitivity = ConfigurationGuard.InRange(sensitivity, 0, 2, nameof(sensitivity));
             FastExponent = ConfigurationGuard.InRange(fastExponent, 0.01, 1, nameof(fastExponent));
             SlowExponent = ConfigurationGuard.InRange(slowExponent, 1, 10, nameof(slowExponent));
             RestBand = ConfigurationGuard.InRange(restBand, 0, 0.05, nameof(restBand));
+            PauseTime = ConfigurationGuard.InRange(pauseTime, 0.01, 5, nameof(pauseTime));
         }
 
-        /// <summary>The exponent r at hand speed <paramref name="speed"/> for a user of standard speed <paramref name="standardSpeed"/>.</summary>
-        public double ExponentAt(double speed, double standardSpeed)
+        /// <summary>The exponent r at lift pace <paramref name="pace"/> for a user of standard speed <paramref name="standardSpeed"/>;
+        /// 1 (the gain of Eq. 4–6) while no rise has a pace yet.</summary>
+        public double ExponentAt(double pace, double standardSpeed)
         {
-            double x = Math.Abs(speed) / standardSpeed;
-            // r = 1/√x, clamped: x ≤ 1/SlowExponent² reads as slow, x ≥ 1/FastExponent² as fast.
-            if (!(x * SlowExponent * SlowExponent > 1)) return SlowExponent;
-            double r = 1 / Math.Sqrt(x);
-            return Math.Max(r, FastExponent);
+            double x = StandardLiftRatio * Math.Abs(pace) / standardSpeed;
+            if (!(x > 0)) return 1;
+            double r = Math.Exp(-Sensitivity * Math.Log(x));
+            return r > SlowExponent ? SlowExponent : (r < FastExponent ? FastExponent : r);
         }
 
-        /// <summary>The gain G_v for an object of gain <paramref name="gain"/> at hand speed <paramref name="speed"/>.</summary>
-        public double GainAt(double gain, double speed, double standardSpeed)
-            => gain < 1 ? Math.Exp(ExponentAt(speed, standardSpeed) * Math.Log(gain)) : gain; // gain 0: e^(−∞) = 0
+        /// <summary>The gain G_p for an object of gain <paramref name="gain"/> at lift pace <paramref name="pace"/>.</summary>
+        public double GainAt(double gain, double pace, double standardSpeed)
+            => gain < 1 ? Math.Exp(ExponentAt(pace, standardSpeed) * Math.Log(gain)) : gain; // gain 0: e^(−∞) = 0
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double h = frame.HandAfter, r = state.PaceReference, w = RestBand;
-            double next = Math.Min(Math.Max(r, h - w), h + w);
-            state.PaceReference = next;
             if (!(constants.Gain < 1)) return;
-            // The hand's pace: the band-follower's speed over each new pose, smoothed over about SmoothingTime
-            // (exponentially, per pose, so every frame clock sees the same pace), so one pose's jitter barely moves
-            // the gain and lifts repeated for hours do not random-walk.
-            double interval = frame.MotionInterval;
-            if (interval > 0)
+            bool changed = frame.SteadyTaken && UpdatePace(ref state, frame.SteadyHand - state.Base, state.Time, constants.StandardSpeed);
+            // Recomputed only when the pace or the object changed (PaceGainOf is NaN after a reset).
+            if (changed || state.PaceGainOf != constants.LogGain)
             {
-                double a = interval / (SmoothingTime + interval);
-                state.Pace += a * ((next - r) / interval - state.Pace);
-                double pace = Math.Abs(state.Pace);
-                bool faster = pace >= state.HeldPace;
-                double share = Math.Min(Math.Abs(next - r) / ReleaseDistance, 1);
-                state.HeldPace = faster ? pace : state.HeldPace + share * (pace - state.HeldPace);
+                state.PaceGain = Math.Exp(ExponentAt(state.Pace, constants.StandardSpeed) * constants.LogGain);
+                state.PaceGainOf = constants.LogGain;
             }
-            double exponent = ExponentAt(state.Pace, constants.StandardSpeed);
-            double g = Math.Exp(exponent * constants.LogGain); // G = 0: log G = −∞, g = 0
-            frame.ObjectDelta += (g - constants.Gain) * frame.HandDelta;
+            frame.Gain = state.PaceGain;
+        }
+
+        /// <summary>A rise reaches a new top when the steady hand passes the last one by this much, m: tracking jitter at
+        /// the end of a lift does not keep the rise going.</summary>
+        public const double TopStep = 0.002;
+
+        /// <summary>Steady poses further apart than this, s, had a gap between them (a loss, and the settling after it). Not a
+        /// whole number of frames at 30, 60, 72, 90 or 120 Hz, so no common frame clock sits on the boundary.</summary>
+        public const double GapTime = 0.11;
+
+        /// <summary>Follows the rise on the steady hand; true when the pace changed.</summary>
+        bool UpdatePace(ref HoldState state, double lift, double time, double standardSpeed)
+        {
+            time -= state.PaceClockSkip; // the rise's clock: the hold's, less the time gaps hid from a rise
+            double seenTime = state.PaceSeenTime, seenLift = state.PaceSeenLift;
+            state.PaceSeenTime = time;
+            state.PaceSeenLift = lift;
+            if (lift <= RestBand)
+            {
+                // At the base: the next rise starts from here.
+                state.RiseStartLift = state.RiseTop = lift;
+                state.RiseStartTime = state.RiseTopTime = time;
+                state.PaceSettled = false;
+                if (state.Pace == 0) return false;
+                state.Pace = 0;
+                return true;
+            }
+            if (state.PaceSettled) return false;
+            if (lift < state.RiseTop + TopStep)
+            {
+                if (time - state.RiseTopTime > PauseTime) state.PaceSettled = true;
+                return false;
+            }
+            if (time - seenTime > GapTime && lift > seenLift)
+            {
+                // The hand rose while unseen: it got here no later than now; at the rise's pace so far (or, if it had not
+                // started, at the user's standard pace) it got here earlier. A gap in tracking must not read as a slow lift.
+                double pace = state.Pace > 0 ? state.Pace : standardSpeed / StandardLiftRatio;
+                double reached = seenTime + (lift - seenLift) / pace;
+                if (reached < time)
+                {
+                    state.PaceClockSkip += time - reached;
+                    state.PaceSeenTime = time = reached;
+                }
+            }
+            state.RiseTop = lift;
+            state.RiseTopTime = time;
+            // The mean speed from where the rise left the base to its top: a function of the two ends. At least one 60 Hz
+            // pose period of time.
+            double mean = (lift - state.RiseStartLift) / Math.Max(time - state.RiseStartTime, 1.0 / 60);
+            if (mean == state.Pace) return false;
+            state.Pace = mean;
+            return true;
         }
 
         protected internal override void Reset(ref HoldState state, double handY)
         {
-            state.PaceReference = handY;
             state.Pace = 0;
-            state.HeldPace = 0;
+            state.PaceGain = 0;
+            state.PaceGainOf = double.NaN;
+            state.RiseStartLift = state.RiseTop = 0;
+            state.PaceClockSkip = 0;
+            state.RiseStartTime = state.RiseTopTime = state.PaceSeenTime = state.Time;
+            state.PaceSeenLift = 0;
+            state.PaceSettled = false;
         }
     }
 }

@@ -24,10 +24,7 @@ namespace Kosmos.PseudoHaptic
         {
             // NewObjectY is the held height (pivot + grab offset): the pivot's lowest height moves with it.
             double lowest = Floor + constants.BottomBelowPivot + state.GrabOffset;
-            if (frame.NewObjectY >= lowest) return;
-            frame.NewObjectY = lowest;
-            state.Carry = Math.Max(0, state.Carry); // do not keep pushing into the floor
-            state.CapDeferred = Math.Max(0, state.CapDeferred);
+            if (frame.NewObjectY < lowest) frame.NewObjectY = lowest;
         }
     }
 }

@@ -3,46 +3,57 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// The paper's named next step (§5): "speed deceleration according to ... the height". On the way up, an
-    /// object heavier than the standard rises more slowly the higher it already is above where the hold began,
-    /// and the more the heavier it is. The object's upward displacement is multiplied by
-    /// f(h, m) = φ + (1 − φ) / (1 + w(m) · h / <see cref="Height"/>), with h ≥ 0 the object's height above its
-    /// height when the hold began, φ = <see cref="MinFraction"/>, and w(m) = 1 − min(G(m), 1) the object's
-    /// weight cue (0 for the standard weight and anything lighter, rising toward 1 with mass; G the profile's
-    /// gain). f(0) = 1, f is strictly decreasing in h and in m from the first millimetre, continuous, and never
-    /// below φ, so nothing stalls. Lowering and holding still are untouched. One division per rising frame.
-    /// ALGORITHM.md §6 says why this shape.
+    /// The paper's named next step (§5): "speed deceleration according to ... the height". An object heavier than the
+    /// standard rises more slowly the higher the hand has lifted it, and the more the heavier it is: at lift h (how high
+    /// the hand has lifted the object above where the lift began, <see cref="MotionFrame.Lift"/>) the object moves
+    /// f(h, m) = φ + (1 − φ) / (1 + w(m) · h / <see cref="Height"/>) as much as it would without the effect, with
+    /// φ = <see cref="MinFraction"/> and w(m) = (1 − min(G(m), 1))² the square of the object's weight cue (0 for the standard
+    /// weight and anything lighter, rising toward 1 with mass; squared so that the slowing grows clearly with the mass:
+    /// 0.34 at 1 kg, 0.46 at 2 kg, 0.71 at 5 kg under `paper`'s gain). So the lift the gain carries is
+    /// F(h) = ∫₀ʰ f = φ·h + (1 − φ)·(H/w)·ln(1 + w·h/H): f(0) = 1, f strictly decreasing in h and in m from the first
+    /// millimetre, continuous, never below φ, so nothing stalls. Being a function of the lift, a lowering retraces the
+    /// rise, and a lift and a lowering end where they began; below the base (lowering past where the lift began) it
+    /// changes nothing. One logarithm per frame with a lift. ALGORITHM.md §6 says why this shape.
     /// </summary>
     public sealed class HeightDeceleration : WeightEffect
     {
         public override string Name => "height-deceleration";
-        public override EffectStage Stage => EffectStage.ObjectMotion;
+        public override EffectStage Stage => EffectStage.Lift;
 
-        /// <summary>Height scale, m: at h = Height a very heavy object (w → 1) rises at the midpoint between full
-        /// speed and the floor fraction.</summary>
+        /// <summary>Height scale, m: at a lift of this much a very heavy object (w → 1) moves at the midpoint between
+        /// full speed and the floor fraction.</summary>
         public double Height { get; }
 
-        /// <summary>The gain is never multiplied by less than this (the floor φ), in (0, 1].</summary>
+        /// <summary>The object's motion is never multiplied by less than this (the floor φ), in (0, 1].</summary>
         public double MinFraction { get; }
 
-        public HeightDeceleration(double height = 0.5, double minFraction = 0.5)
+        public HeightDeceleration(double height = 0.125, double minFraction = 0.5)
         {
             Height = ConfigurationGuard.InRange(height, 0.01, 100, nameof(height));
             MinFraction = ConfigurationGuard.InRange(minFraction, 0.01, 1, nameof(minFraction));
         }
 
-        /// <summary>The factor on the upward displacement at height <paramref name="height"/> above the hold's
-        /// start for an object of gain <paramref name="gain"/>.</summary>
-        public double Factor(double height, double gain)
+        /// <summary>w: how strongly an object of gain <paramref name="gain"/> slows with height, (1 − min(G, 1))².</summary>
+        public static double Strength(double gain)
         {
-            double w = Math.Max(0, 1 - gain), h = Math.Max(0, height);
-            return MinFraction + (1 - MinFraction) / (1 + w * h / Height);
+            double cue = gain < 1 ? 1 - gain : 0;
+            return cue * cue;
+        }
+
+        /// <summary>The factor f on the object's motion at lift <paramref name="lift"/> for an object of gain <paramref name="gain"/>.</summary>
+        public double Factor(double lift, double gain)
+            => MinFraction + (1 - MinFraction) / (1 + Strength(gain) * Math.Max(0, lift) / Height);
+
+        /// <summary>F: the lift the gain carries at lift <paramref name="lift"/> (the integral of <see cref="Factor"/>), m.</summary>
+        public double CarriedLift(double lift, double gain)
+        {
+            double w = Strength(gain);
+            if (!(w > 0) || !(lift > 0)) return lift;
+            double a = w / Height;
+            return MinFraction * lift + (1 - MinFraction) * Math.Log(1 + a * lift) / a;
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
-        {
-            // Only motion up is slowed (Factor is 1 at or below the start height, and for the standard weight and lighter).
-            frame.ObjectDelta += Math.Max(0, frame.ObjectDelta) * (Factor(frame.ObjectY - state.StartY, constants.Gain) - 1);
-        }
+            => frame.CarriedLift = CarriedLift(frame.Lift, constants.Gain);
     }
 }

@@ -5,17 +5,19 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The paper's named next step (§5): "speed deceleration according to the movement in the xyz direction".
     /// In <see cref="WeightSolver3D"/>, an object heavier than the standard trails the hand's horizontal (x/z)
-    /// motion: its horizontal lag e (a vector, from where it was grabbed) takes each frame's hand displacement
-    /// Δ and relaxes as e ← (e + Δ) · τ/(τ + dt), with τ(m) = <see cref="TimeConstant"/> · w(m) and
-    /// w(m) = 1 − min(G(m), 1) (0 for the standard weight and lighter, which follow exactly). |e| never exceeds
-    /// <see cref="MaxOffset"/>. The factor lies in [0, 1): no overshoot past the hand, no oscillation; once the
-    /// hand stops e decays (from 0.10 m to under 1 cm within 1 s at the defaults). Frame time counts for at most
-    /// <see cref="MaxDecayStep"/> per frame, so a hitch is not a jump.
+    /// motion: its horizontal lag e (a vector, from where it was grabbed) takes each frame's displacement Δ of the steady
+    /// hand (the median of its last three poses) and relaxes as e ← (e + Δ) · τ/(τ + dt·(1 + |e + Δ|/M)), with
+    /// τ(m) = <see cref="TimeConstant"/> · w(m), w(m) = 1 − min(G(m), 1) (0 for the standard weight and lighter, which
+    /// follow exactly) and M = <see cref="MaxOffset"/>; the object shows the lag M·tanh(|e|/M) in e's direction. The
+    /// factor lies in [0, 1): no overshoot past the hand, no oscillation. The decay is faster the further e is past M, so
+    /// the lag a fast swing builds is gone within a second of the hand stopping, and the shown lag approaches M smoothly,
+    /// strictly increasing in e: heavier always trails more, at every speed, and never more than M. Frame time counts for
+    /// at most <see cref="MaxDecayStep"/> per frame, so a hitch is not a jump.
     /// </summary>
     public sealed class LateralInertia : WeightEffect
     {
-        /// <summary>A frame counts for at most this long in the decay, s.</summary>
-        public const double MaxDecayStep = 0.1;
+        /// <summary>A frame counts for at most this long in the decay, s (one 30 Hz frame: a hitch gives back no more of the lag than the slowest frame clock would).</summary>
+        public const double MaxDecayStep = 1.0 / 30;
 
         public override string Name => "lateral-inertia";
         public override EffectStage Stage => EffectStage.Hold;

@@ -3,16 +3,14 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// A motion deadband (backlash) on the hand, only where the gain amplifies jitter: the followed hand height
-    /// moves only when the tracked hand leaves a band of ±width around it, so millimetre tracking jitter at rest,
-    /// multiplied by a light object's gain, moves nothing (P4). At a gain of 1 or less nothing is amplified and
-    /// the band is 0: the standard weight follows every pose exactly and loses no motion (P1), and a heavier
-    /// object's jitter is already smaller than the hand's.
+    /// A motion deadband (backlash) on the hand the weight reads, only where the gain amplifies jitter: the lift of
+    /// an object lighter than the standard moves only when the tracked hand leaves a band of ±width around it, so
+    /// millimetre tracking jitter at rest, multiplied by a light object's lead, moves nothing (P4): the object shimmers
+    /// with the hand that holds it, no more. At a gain of 1 or less nothing is amplified and the band is 0: the
+    /// standard weight is exactly the hand (P1), and a heavier object's jitter is already smaller than the hand's.
     /// Above a gain of 1 the half-width is w = span × (1 − 1/G), span = max(<see cref="JitterSpan"/>,
-    /// v_std × <see cref="LagTime"/>): a hand at rest whose poses wander over ±span moves the object by at most
-    /// G × (span − w) = span, no more than the hand itself (a light object never shimmers more than the hand that
-    /// holds it). Real motion passes less the band at each reversal (the price of a light object at rest).
-    /// Later effects see the deadbanded hand.
+    /// v_std × <see cref="LagTime"/>). A motion that comes back moves the band's reference by at most w, so it leaves
+    /// the lead at most (G − 1) × w different (the backlash's hysteresis).
     /// </summary>
     public sealed class MotionDeadband : WeightEffect
     {
@@ -39,14 +37,11 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            double w = constants.DeadbandWidth;
-            if (w <= 0) { state.DeadbandReference = frame.HandAfter; return; } // gain ≤ 1: nothing to suppress, nothing lost
-            double h = frame.HandAfter, r = state.DeadbandReference;
-            double next = Math.Min(Math.Max(r, h - w), h + w);
-            // Later effects see the deadbanded hand: jitter the band swallowed is not hand motion to them either.
-            frame.HandBefore = r;
-            frame.HandAfter = next;
-            frame.HandDelta = next - r;
+            double w = constants.DeadbandWidth, h = frame.WeightHand;
+            if (w <= 0) { state.DeadbandReference = h; return; } // gain ≤ 1: nothing to suppress, nothing lost
+            double r = state.DeadbandReference;
+            double next = r < h - w ? h - w : (r > h + w ? h + w : r);
+            frame.WeightHand = next;
             state.DeadbandReference = next;
         }
 

@@ -3,14 +3,16 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// Off in the paper's experiments (design note, open question 4): while the hand is still, a held
-    /// offset relaxes toward zero with time constant <see cref="TimeConstant"/>. "Still" is relative to the
-    /// user: hand speed below <see cref="StillFraction"/> × v_std.
+    /// Off in the paper's experiments (design note, open question 4): while the hand is still, the lift relaxes toward
+    /// zero with time constant <see cref="TimeConstant"/> (the base rises toward the hand, dt/(τ+dt) of the way per frame:
+    /// no exponential, never overshoots), so a held offset fades. Where the offset correction holds the offset at its
+    /// ceiling, the visible offset starts to fade once the lift has relaxed below the ceiling's reach. "Still" is
+    /// relative to the user: hand speed below <see cref="StillFraction"/> × v_std.
     /// </summary>
     public sealed class OffsetRelaxation : WeightEffect
     {
         public override string Name => "offset-relaxation";
-        public override EffectStage Stage => EffectStage.ObjectMotion;
+        public override EffectStage Stage => EffectStage.Base;
 
         public double TimeConstant { get; }
         public double StillFraction { get; }
@@ -25,11 +27,9 @@ namespace Kosmos.PseudoHaptic
         {
             if (Math.Abs(state.Estimator.Speed) >= StillFraction * constants.StandardSpeed) return;
             double dt = Math.Min(frame.Dt, constants.Limits.MaxFrameTime);
-            double after = frame.HandAfter - frame.ObjectY - frame.TotalDelta;
-            // dt/(τ+dt) ≈ 1 − e^(−dt/τ) without an exponential per frame; never overshoots.
-            double relax = after * dt / (TimeConstant + dt);
-            frame.ObjectDelta += relax;
-            SpeedCap.Settle(ref state, relax);
+            double relax = frame.Lift * dt / (TimeConstant + dt);
+            state.Base += relax;
+            frame.Lift -= relax;
         }
     }
 }

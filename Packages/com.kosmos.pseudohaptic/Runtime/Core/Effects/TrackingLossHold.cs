@@ -1,25 +1,27 @@
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// Headset hygiene, not in the paper: a low-confidence pose counts as lost (Quest drops confidence routinely in
-    /// fast motion). A short loss, up to <see cref="SolverLimits.MaxCatchUpGap"/>, is bridged: the object holds, and
-    /// when a usable pose comes back it catches up G × the hand's displacement across the loss through the speed
-    /// limit (only a pose no hand could have reached is rejected, by the estimator). After a longer loss the
-    /// object stays where it is until tracking has been steady for <see cref="SettleTime"/>, then follows the
-    /// hand from where it is (re-anchors): the first poses after reacquiring a hand are often off by centimetres.
+    /// Headset hygiene, not in the paper: poses the headset is unsure of are followed but not remembered
+    /// (<see cref="MotionFrame.Settling"/>): a low-confidence pose (Quest drops confidence routinely in fast motion), and
+    /// every pose for <see cref="SettleTime"/> after tracking was lost or unsure (the first poses after reacquiring a hand
+    /// are often centimetres off). The object stays with the hand the user sees, since the weight is a function of where
+    /// the hand is and a wrong pose leaves nothing once it is gone; but such poses never move what the hold remembers (the
+    /// base the lift is measured from, the lift's pace). While tracking is lost the object stays where it is; when a
+    /// usable pose comes back the object is where the weight puts it for the hand's new place (the estimator bridges the
+    /// gap: the hand's motion across it is real motion).
     /// </summary>
     public sealed class TrackingLossHold : WeightEffect
     {
         public override string Name => "tracking-loss-hold";
         public override EffectStage Stage => EffectStage.Input;
 
-        /// <summary>Steady tracking required after a long loss before the object follows again, s.</summary>
+        /// <summary>Steady tracking required after a loss before poses count toward what the hold remembers, s.</summary>
         public double SettleTime { get; }
 
-        /// <summary>Whether a tracked but low-confidence pose counts as lost.</summary>
+        /// <summary>Whether a tracked but low-confidence pose is kept from what the hold remembers.</summary>
         public bool RequireHighConfidence { get; }
 
-        public TrackingLossHold(double settleTime = 0.1, bool requireHighConfidence = true)
+        public TrackingLossHold(double settleTime = 0.11, bool requireHighConfidence = true)
         {
             SettleTime = ConfigurationGuard.InRange(settleTime, 0, 5, nameof(settleTime));
             RequireHighConfidence = requireHighConfidence;
@@ -27,26 +29,23 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (!frame.Usable || (RequireHighConfidence && !frame.IsHighConfidence))
+            if (!frame.Usable)
             {
-                frame.Usable = false;
                 state.LostFor += frame.Dt;
-                // A long loss: settling starts over when the hand comes back. A short one is bridged.
-                if (state.LostFor > constants.Limits.MaxCatchUpGap) state.SettleElapsed = 0;
+                state.SettleElapsed = 0; // settling starts over when the hand comes back
+                return;
+            }
+            if (RequireHighConfidence && !frame.IsHighConfidence)
+            {
+                frame.Settling = true;
+                state.SettleElapsed = 0;
                 return;
             }
             state.LostFor = 0;
-            if (state.SettleElapsed < 0) return; // settled: a short loss is caught up by the estimator
+            if (state.SettleElapsed < 0) return; // settled
             state.SettleElapsed += frame.Dt;
-            if (state.SettleElapsed < SettleTime)
-            {
-                frame.Usable = false;
-                return;
-            }
-            // Stryker disable once Unary : the re-anchoring forced below resets every effect, this one to −1 too
-            state.SettleElapsed = -1;
-            // Stryker disable once Boolean : withheld past the catch-up gap, the estimator would re-anchor by itself too; said here, not relied on
-            frame.ForceReanchor = true;
+            if (state.SettleElapsed < SettleTime) frame.Settling = true;
+            else state.SettleElapsed = -1;
         }
 
         protected internal override void Reset(ref HoldState state, double handY)

@@ -3,21 +3,21 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// The default estimator of the hand's vertical motion: it follows each new pose's exact displacement in
-    /// the frame the pose arrives and measures speed against the pose's own timestamps (design note §6).
-    /// Repeated poses (30 Hz tracking under 72–120 Hz frames) move nothing and never read as a stop
-    /// followed by a spike. Total displacement is conserved, so any frame clock ends in the same place (P7).
-    /// It re-anchors (follows the hand from where it is now, without moving the object) after a loss or a
-    /// hitch longer than <see cref="SolverLimits.MaxCatchUpGap"/>, on a pose clock that steps back, and on a
-    /// pose that would need an impossible hand speed (P8).
+    /// The default estimator of the hand's vertical motion: it follows each new pose in the frame the pose arrives
+    /// and measures speed against the pose's own timestamps (design note §6). Repeated poses (30 Hz tracking under
+    /// 72–120 Hz frames) move nothing and never read as a stop followed by a spike. Across a loss, a hitch or a pose
+    /// clock that steps back the hand's motion is followed in full (bridged): it is the hand's real motion, and the
+    /// weight is a function of where the hand is, so nothing the gap hid is lost. Only a pose no hand could have
+    /// reached in the time since the last one is refused (treated as lost, P8; <see cref="Reach"/>); once enough time has
+    /// passed for a hand to get there, it is followed.
     /// </summary>
     public struct PoseDeltaEstimator
     {
         double _poseY;
         double _poseTime;       // NaN when the source gives no pose timestamps
-        double _sincePose;      // frame time since the last new pose, s
-        double _lostFor;        // frame time since tracking was lost, s
+        double _sincePose;      // frame time since the last accepted pose, s
         double _speed;          // the last pose-to-pose speed, m/s
+        Reach _reach;           // whether a hand could have got to a pose
         bool _hasPose;
         bool _lost;
 
@@ -38,29 +38,37 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Starts over at the pose <paramref name="handY"/> taken at <paramref name="poseTime"/>. When the hand is
         /// not tracked (<paramref name="handY"/> not finite), the hand is taken to be at <paramref name="untrackedHandY"/>
         /// until a pose comes (the solver passes the object's height: nothing pulls the object toward a hand never seen),
-        /// and the first pose re-anchors.</summary>
+        /// and the first pose anchors the hold.</summary>
         public void Reset(double handY, double poseTime, double untrackedHandY = 0)
         {
             _hasPose = double.IsFinite(handY);
             _poseY = _hasPose ? handY : untrackedHandY;
             _poseTime = poseTime;
-            _sincePose = _lostFor = _speed = 0;
-            // Stryker disable once all : no path reads _lost before a frame sets it (its loss time is 0, its speed 0)
-            _lost = !_hasPose;
+            _sincePose = _speed = 0;
+            _lost = false;
+            _reach.Reset();
+            if (_hasPose) _reach.TryAccept(0, handY, 0, double.PositiveInfinity);
         }
 
-        /// <summary>Fills HandBefore/After, HandDelta, HandSpeed, MotionInterval and Reanchored.</summary>
+        /// <summary>Fills HandBefore/After, HandDelta, HandSpeed, MotionInterval, NewPose, Bridged and Reanchored; clears
+        /// Usable for a pose no hand could have reached.</summary>
         public void Update(ref MotionFrame f, SolverLimits limits)
         {
             _sincePose += f.Dt;
-            f.HandBefore = _poseY;
+            _reach.Tick(f.Dt, limits.MaxFrameTime);
+            f.HandBefore = f.HandAfter = _poseY;
             f.HandDelta = f.HandSpeed = f.MotionInterval = 0;
 
             if (!f.Usable)
             {
-                _lost = true;
-                _lostFor += f.Dt;
-                f.HandAfter = _poseY;
+                Lose();
+                return;
+            }
+            if (!_hasPose)
+            {
+                _reach.TryAccept(0, f.PoseY, 0, double.PositiveInfinity);
+                f.Reanchored = true;
+                Accept(ref f);
                 return;
             }
 
@@ -68,60 +76,42 @@ namespace Kosmos.PseudoHaptic
             bool hadTime = double.IsFinite(_poseTime);
             // A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.
             bool newPose = f.PoseY != _poseY || (hasTime && !(hadTime && f.PoseTime == _poseTime));
-            bool clockBack = hasTime && hadTime && f.PoseTime < _poseTime;
-            bool gap = f.Dt > limits.MaxCatchUpGap || (_lost && _lostFor > limits.MaxCatchUpGap);
+            if (!newPose) return;
 
-            if (!_hasPose || f.ForceReanchor || clockBack || gap)
-            {
-                Reanchor(ref f);
-                return;
-            }
-            if (!newPose)
-            {
-                _lost = false;
-                _lostFor = 0;
-                f.HandAfter = _poseY;
-                return;
-            }
-
-            // Speed is measured against the poses' own clock; without it, against the frames' time since the last
-            // new pose, but never less than a 60 Hz pose period: two poses can land in one short frame.
+            // Speed is measured against the poses' own clock; without it (or when it steps back), against the frames'
+            // time since the last pose, but never less than a 60 Hz pose period: two poses can land in one short frame.
             double interval = hasTime && hadTime && f.PoseTime > _poseTime ? f.PoseTime - _poseTime
                 : Math.Max(_sincePose, MinPosePeriod);
             interval = Math.Max(interval, 1e-4);
             double delta = f.PoseY - _poseY;
-            // Judged over at least one 30 Hz pose period: without timestamps two poses can land in one short frame;
-            // and over at most 50 ms, so a long still spell does not license a teleport, plus the time tracking was
-            // lost, so a hand that moved during a short loss is caught up, not rejected (only a pose no hand could
-            // have reached is).
-            double longest = SolverLimits.JumpWindow + _lostFor; // _lostFor is 0 unless tracking was lost
-            double window = Math.Max(SolverLimits.MinJumpWindow, Math.Min(interval, longest));
-            if (Math.Abs(delta) > limits.MaxHandSpeed * window)
+            if (!_reach.TryAccept(0, f.PoseY, 0, limits.MaxHandSpeed))
             {
-                Reanchor(ref f);
+                f.Usable = false;
+                Lose();
                 return;
             }
 
+            f.Bridged = _lost;
             f.HandDelta = delta;
             f.HandSpeed = _speed = delta / interval;
             f.MotionInterval = interval;
             Accept(ref f);
         }
 
-        void Reanchor(ref MotionFrame f)
+        void Lose()
         {
-            f.Reanchored = true;
-            _speed = 0;
-            Accept(ref f);
+            _lost = true;
+            _reach.Miss();
         }
 
         void Accept(ref MotionFrame f)
         {
             _poseY = f.PoseY;
             _poseTime = f.PoseTime;
-            _sincePose = _lostFor = 0;
+            _sincePose = 0;
             _hasPose = true;
             _lost = false;
+            f.NewPose = true;
             f.HandAfter = _poseY;
         }
     }

@@ -42,6 +42,7 @@ namespace Kosmos.PseudoHaptic.Simulation
         /// <summary>How far a glitched pose is off, m (a joint jumping a few centimetres).</summary>
         public double GlitchSize = 0.03;
 
+        readonly List<(double start, double end, double size)> _offsets = new List<(double, double, double)>();
         readonly List<double> _dropStart = new List<double>();
         readonly List<double> _dropEnd = new List<double>();
         readonly List<double> _lowStart = new List<double>();
@@ -52,6 +53,19 @@ namespace Kosmos.PseudoHaptic.Simulation
         {
             _dropStart.Add(start);
             _dropEnd.Add(start + seconds);
+            return this;
+        }
+
+        /// <summary>One pose is off by <paramref name="size"/> m: the first pose sampled at or after <paramref name="at"/>
+        /// (a tracked joint jumping for one pose).</summary>
+        public HeadsetSimulator Glitch(double at, double size) => Offset(at, 1.0 / PoseRate, size);
+
+        /// <summary>Every pose sampled from <paramref name="start"/> for <paramref name="seconds"/> is off by
+        /// <paramref name="size"/> m: after a <see cref="Drop"/>, the re-acquisition snap (the first poses of a hand found
+        /// again are centimetres off, then snap back).</summary>
+        public HeadsetSimulator Offset(double start, double seconds, double size)
+        {
+            _offsets.Add((start, start + seconds, size));
             return this;
         }
 
@@ -86,6 +100,8 @@ namespace Kosmos.PseudoHaptic.Simulation
                     poseY = path.HeightAt(poseT) + (JitterSd > 0 ? JitterSd * Gaussian(Seed, k) : 0);
                     if (GlitchChance > 0 && Uniform(Mix(Seed, k, 3)) < GlitchChance)
                         poseY += Uniform(Mix(Seed, k, 4)) < 0.5 ? -GlitchSize : GlitchSize;
+                    foreach (var o in _offsets)
+                        if (poseT >= o.start - 1e-9 && poseT < o.end - 1e-9) poseY += o.size;
                     double speed = Math.Abs(path.HeightAt(poseT + 0.005) - path.HeightAt(poseT - 0.005)) / 0.01;
                     poseLow = speed > LowConfidenceAboveSpeed && Uniform(Mix(Seed, k, 5)) < LowConfidenceChance;
                 }

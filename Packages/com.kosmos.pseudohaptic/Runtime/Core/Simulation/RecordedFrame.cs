@@ -34,6 +34,6 @@ namespace Kosmos.PseudoHaptic.Simulation
         public string Profile;
 
         /// <summary>The replay trace's view of this frame: t, hand_y, tracked, pose_t.</summary>
-        public TraceFrame ToTraceFrame() => new TraceFrame(Time, HandY, Tracked, PoseTime);
+        public TraceFrame ToTraceFrame() => new TraceFrame(Time, HandY, Tracked, PoseTime) { LowConfidence = Tracked && !HighConfidence };
     }
 }

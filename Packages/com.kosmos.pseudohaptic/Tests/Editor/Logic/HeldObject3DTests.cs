@@ -111,7 +111,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 }
                 Assert.That(obj.Z, Is.EqualTo(0.4).Within(0.005), mass + " kg ends where the hand put it");
                 Assert.That(obj.X, Is.EqualTo(0).Within(0.005));
-                Assert.That(maxLag, Is.GreaterThan(previousLag + 0.005), mass + " kg lags more than the lighter one");
+                Assert.That(maxLag, Is.GreaterThan(previousLag + 0.002), mass + " kg lags more than the lighter one");
                 previousLag = maxLag;
             }
             Assert.That(Object(1, NamedProfiles.Paper).MovesHorizontal, Is.False, "without lateral inertia the grab moves x/z");
@@ -177,11 +177,12 @@ namespace Kosmos.PseudoHaptic.Tests
             }
         }
 
-        /// <summary>A yank on a heavy object with break-away tears it loose: both grabs end with BrokeAway, the hold ends once.</summary>
+        /// <summary>A yank (1 m in 0.3 s) on a heavy object with break-away tears it loose: both grabs end with BrokeAway, the
+        /// hold ends once.</summary>
         [Test]
         public void ABreakAwayReleasesBothHandsAndEndsTheHoldOnce([Values(1, 2, 3)] int seed)
         {
-            WeightProfile profile = NamedProfiles.Xyz.With(new BreakAway(0.15, 0.05));
+            WeightProfile profile = NamedProfiles.Xyz.With(new BreakAway(0.3));
             foreach (double mass in new[] { 2 * PhysicalConstants.StandardMassKg, 5.0 }) // two hands: the first carries one standard mass each
             {
                 var scene = new BoxScene();
@@ -189,8 +190,8 @@ namespace Kosmos.PseudoHaptic.Tests
                 var left = new ScriptedGrab(scene, 1);
                 var right = new ScriptedGrab(scene, 2);
                 Vector3d l0 = Table + new Vector3d(-0.04, 0.02, 0), r0 = Table + new Vector3d(0.04, 0.02, 0);
-                HandFrame[] lf = Hand(QuestHand.Lift(l0, 0.5, 0.5, 0.5), 1.5, seed);
-                HandFrame[] rf = Hand(QuestHand.Lift(r0, 0.5, 0.5, 0.5), 1.5, seed + 100);
+                HandFrame[] lf = Hand(QuestHand.Lift(l0, 1.0, 0.5, 0.3), 1.5, seed);
+                HandFrame[] rf = Hand(QuestHand.Lift(r0, 1.0, 0.5, 0.3), 1.5, seed + 100);
                 int ended = 0;
                 box.Hold.Ended += () => ended++;
                 for (int i = 0; i < lf.Length; i++)

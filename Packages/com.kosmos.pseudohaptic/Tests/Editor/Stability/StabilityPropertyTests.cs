@@ -27,9 +27,11 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 for (int i = 0; i < y.Length; i++)
                 {
                     if (double.IsNaN(y[i]) || double.IsInfinity(y[i])) Assert.Fail(s + ": non-finite at frame " + i);
-                    if (i > 0 && Math.Abs(y[i] - y[i - 1]) > 0.1 + 1e-12) Assert.Fail(s + ": step of " + Math.Abs(y[i] - y[i - 1]) + " m at frame " + i);
                     if (floor && y[i] < 0) Assert.Fail(s + ": below the floor at frame " + i);
                 }
+                // No jump: no step beyond the hand's own in the surrounding 100 ms (times a light object's gain) plus 1 cm.
+                double beyond = QuestLikeInput.StepBeyondHand(s.Frames, y, solver.Gain, double.NegativeInfinity, double.PositiveInfinity);
+                Assert.That(beyond, Is.LessThanOrEqualTo(0.01), s + ": a step beyond the hand's own");
             }
         }
 
@@ -39,10 +41,6 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             foreach (int seed in SeedRange(40, 2000))
             {
                 var s = ScenarioGenerator.Clean(seed);
-                // Known limit (stability.md): where the 4 m/s object speed limit binds (a light object at a gain near
-                // 3 moved at the generator's fastest 2.25 m/s peaks), the carried motion drains on the frames between
-                // poses, where the lowering guard does not act, so the end depends on the frame clock by about 1 cm.
-                if (ScenarioGenerator.Solver(s).Gain * 2.25 > SolverLimits.Default.MaxObjectSpeed) continue;
                 double? first = null;
                 string firstClock = null;
                 // The issue's clocks. (A 30 Hz frame clock with wobble skips some 30 Hz poses; where the speed cap
@@ -81,7 +79,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         }
 
         [Test]
-        public void WithTheOffsetCorrectionTheOffsetStaysWithinAQuarterMetre()
+        public void WithTheOffsetCorrectionTheOffsetStaysWithinTheStatedCeiling()
         {
             foreach (int seed in SeedRange(Seeds, 4000))
             {
@@ -90,7 +88,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 var y = TraceReplay.Run(ScenarioGenerator.Solver(s), s.Frames);
                 double max = 0;
                 for (int i = 0; i < y.Length; i++) max = Math.Max(max, Math.Abs(s.Frames[i].HandY - y[i]));
-                Assert.That(max, Is.LessThan(0.25), s + ", " + s.MassKg.ToString("G3") + " kg, v_std " + s.StandardSpeed.ToString("G3"));
+                Assert.That(max, Is.LessThanOrEqualTo(SolverPropertyTests.StatedCeiling + 1e-12), s + ", " + s.MassKg.ToString("G3") + " kg, v_std " + s.StandardSpeed.ToString("G3"));
             }
         }
 
@@ -183,16 +181,9 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             return (headset.Render(path), clean, new[] { 0.5 + up + headset.Latency + 0.5, 1.5 + up + down + headset.Latency + 0.5 });
         }
 
-        static double WorstEndError;
-
-        /// <summary>Glitches are followed (a plausible pose is the hand) and a faster-moves-further gain judged on a
-        /// glitched pace is not exactly undone by the pose after it: measured worst over these seeds is printed.</summary>
-        const double QuestLikeEndTolerance = 0.025;
-
         [Test]
         public void OnQuestLikeInputTheGolfBallStaysRigidAndHeavyObjectsEndWhereTheyWould()
         {
-            int longLosses = 0;
             foreach (int seed in SeedRange(60, 7000))
             {
                 var (frames, clean, restFrom) = QuestLike(seed);
@@ -200,48 +191,35 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 foreach (var f in frames) { if (f.LowConfidence) lowConfidence++; if (!f.Tracked) lost++; }
                 Assert.That(lowConfidence + lost, Is.GreaterThan(0), "seed " + seed + ": the headset degrades the input");
 
-                // Low-confidence poses in a row and a drop can merge into a loss long enough to re-anchor (0.25 s):
-                // the rules for short losses apply where none did.
-                double longest = 0, run = 0;
-                for (int i = 1; i < frames.Length; i++)
-                {
-                    run = !frames[i].Tracked || frames[i].LowConfidence ? run + frames[i].Time - frames[i - 1].Time : 0;
-                    longest = Math.Max(longest, run);
-                }
-                if (longest >= 0.2) { longLosses++; continue; }
+                // The golf ball is the hand on every frame it is tracked (a low-confidence pose is followed, not remembered).
                 var y = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(PhysicalConstants.StandardMassKg), NamedProfiles.Paper, 0.5), frames);
-                double lastBad = double.NegativeInfinity;
                 for (int i = 0; i < frames.Length; i++)
                 {
                     var f = frames[i];
-                    if (!f.Tracked || f.LowConfidence) { lastBad = f.Time; continue; }
+                    if (!f.IsUsable) continue;
                     double offset = Math.Abs(f.HandY - y[i]);
-                    if (f.Time > lastBad + 0.1) Assert.That(offset, Is.LessThanOrEqualTo(0.005), "seed " + seed + ": golf ball at frame " + i + " (" + f.Time.ToString("0.000") + " s)");
                     bool rested = (f.Time >= restFrom[0] && f.Time < restFrom[0] + 0.5) || f.Time >= restFrom[1];
-                    if (rested && f.Time > lastBad + 0.1) Assert.That(offset, Is.LessThanOrEqualTo(0.001), "seed " + seed + ": golf ball at rest, frame " + i);
+                    Assert.That(offset, Is.LessThanOrEqualTo(rested ? 0.001 : 0.005), "seed " + seed + ": golf ball at frame " + i + " (" + f.Time.ToString("0.000") + " s)");
                 }
-                // Heavier objects: never a teleport, never past a quarter metre under the correction; and, where no loss
-                // lasted long enough to re-anchor (0.25 s), without the correction (whose band makes the end sensitive
-                // to a millimetre) they end near where they end on the clean input.
+                // Heavier objects: never a step beyond the hand's, never past the stated ceiling under the correction, and they
+                // end where they end on the clean input (issue 22, rule 1: within 10 mm), with and without the correction.
                 foreach (var m in new[] { 0.5, 2.0 })
-                {
-                    var heavy = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(m), NamedProfiles.Paper, 0.5), frames);
-                    Assert.That(Run.MaxStep(heavy), Is.LessThanOrEqualTo(0.15), "seed " + seed + ": " + m + " kg, no teleport");
-                    double bad = double.NegativeInfinity;
-                    for (int i = 0; i < frames.Length; i++)
+                    foreach (var profile in new[] { NamedProfiles.Paper, NamedProfiles.PaperExperiment })
                     {
-                        if (!frames[i].Tracked || frames[i].LowConfidence) { bad = frames[i].Time; continue; }
-                        // A loss's catch-up runs through the speed limit: judged 0.1 s after it, as the golf ball is.
-                        if (frames[i].Time > bad + 0.1) Assert.That(Math.Abs(frames[i].HandY - heavy[i]), Is.LessThanOrEqualTo(0.25), "seed " + seed + ": " + m + " kg, offset at frame " + i);
+                        var solver = new WeightSolver(WeightModel.FromMass(m), profile, 0.5);
+                        var heavy = TraceReplay.Run(solver, frames);
+                        Assert.That(QuestLikeInput.StepBeyondHand(frames, heavy, solver.Gain, 0, double.PositiveInfinity), Is.LessThanOrEqualTo(0.01),
+                            "seed " + seed + ": " + m + " kg, " + profile.Name + ", a step beyond the hand's");
+                        if (profile.Has<OffsetCorrection>())
+                            Assert.That(Run.MaxOffset(frames, heavy), Is.LessThanOrEqualTo(SolverPropertyTests.StatedCeiling + 1e-12), "seed " + seed + ": " + m + " kg, offset");
+                        var reference = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(m), profile, 0.5), clean);
+                        // At rest, the median over the last 0.3 s: the degraded input glitches 3 % of its poses, the last one too.
+                        double end = frames[frames.Length - 1].Time;
+                        Assert.That(QuestLikeInput.MedianOver(frames, i => heavy[i], end - 0.3, end),
+                            Is.EqualTo(QuestLikeInput.MedianOver(clean, i => reference[i], end - 0.3, end)).Within(0.010),
+                            "seed " + seed + ": " + m + " kg, " + profile.Name + " ends where it would on clean input");
                     }
-                    var free = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(m), NamedProfiles.PaperExperiment, 0.5), frames);
-                    var reference = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(m), NamedProfiles.PaperExperiment, 0.5), clean);
-                    WorstEndError = Math.Max(WorstEndError, Math.Abs(free[free.Length - 1] - reference[reference.Length - 1]));
-                    Assert.That(free[free.Length - 1], Is.EqualTo(reference[reference.Length - 1]).Within(QuestLikeEndTolerance), "seed " + seed + ": " + m + " kg ends where it would on clean input");
-                }
             }
-            TestContext.Progress.WriteLine("Quest-like input: worst end error of a heavy object " + (WorstEndError * 1000).ToString("0.0") + " mm; " + longLosses + " of 60 seeds had a loss of 0.2 s or more");
-            Assert.That(longLosses, Is.LessThan(30), "most seeds exercise the short-loss rules");
         }
     }
 }

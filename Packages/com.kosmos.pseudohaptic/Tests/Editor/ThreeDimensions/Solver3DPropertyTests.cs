@@ -59,6 +59,15 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             solver.BeginHold(new HandPose(hx, hy, hz), new HandPose(hx + sep, hy, hz), hx + sep / 2, hy, hz);
             double px = solver.ObjectX, py = solver.ObjectY, pz = solver.ObjectZ;
             bool lost1 = false, lost2 = false;
+            // Each frame: the time, the object's step, the largest step a hand made (from its previous usable pose, in 3D),
+            // and the gain the y solver used.
+            var time = new double[1500];
+            var objectStep = new double[1500];
+            var handStep = new double[1500];
+            var gain = new double[1500];
+            var followedStep = new double[1500];
+            double fx = solver.FollowedX, fy = solver.FollowedY, fz = solver.FollowedZ;
+            HandPose lastA = solver.IsHolding ? new HandPose(hx, hy, hz) : HandPose.Lost, lastB = new HandPose(hx + sep, hy, hz);
             for (int i = 0; i < 1500; i++)
             {
                 double dt = 1 / 90.0;
@@ -81,12 +90,38 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 solver.Step(a, b, dt);
                 double x = solver.ObjectX, y = solver.ObjectY, z = solver.ObjectZ;
                 Assert.That(double.IsFinite(x) && double.IsFinite(y) && double.IsFinite(z), Is.True, $"seed {seed} frame {i}");
-                // y: the speed limit's 10 cm per step; x/z: no more than a hand can move in one pose window (6 m/s × 50 ms)
-                // plus what the lateral lag gives back in one step (a quarter of 0.10 m).
-                Assert.That(Math.Abs(y - py), Is.LessThanOrEqualTo(0.1 + 1e-9), $"y step, seed {seed} frame {i}");
-                Assert.That(Math.Sqrt((x - px) * (x - px) + (z - pz) * (z - pz)), Is.LessThanOrEqualTo(0.3 + 0.025 + 1e-9), $"x/z step, seed {seed} frame {i}");
+                time[i] = t;
+                objectStep[i] = Distance(x, y, z, px, py, pz);
+                handStep[i] = Math.Max(Step(a, ref lastA), Step(b, ref lastB));
+                gain[i] = Math.Max(1, solver.Vertical.Gain);
+                followedStep[i] = Distance(solver.FollowedX, solver.FollowedY, solver.FollowedZ, fx, fy, fz);
+                fx = solver.FollowedX; fy = solver.FollowedY; fz = solver.FollowedZ;
                 px = x; py = y; pz = z;
             }
+            // No frame's step beyond the hands' own largest step in the surrounding 100 ms (times the gain of a light
+            // object, which leads the hand) plus 1 cm (issue 22): garbage, glitches and clock faults never become a jump.
+            // Frames of no time or of ten seconds make "100 ms" meaningless: the nine frames either side count too. A hand
+            // whose jump was refused and which is then lost is followed where it comes back: the step of the point the
+            // object follows counts as the hand's there.
+            for (int i = 0; i < 1500; i++)
+            {
+                double near = followedStep[i] * gain[i];
+                for (int j = 0; j < 1500; j++)
+                    if (Math.Abs(time[j] - time[i]) <= 0.1 || Math.Abs(j - i) <= 9) near = Math.Max(near, handStep[j] * gain[j]);
+                Assert.That(objectStep[i], Is.LessThanOrEqualTo(near + 0.01), $"seed {seed} frame {i}: the object's step against the hands'");
+            }
+        }
+
+        static double Distance(double x, double y, double z, double px, double py, double pz)
+            => Math.Sqrt((x - px) * (x - px) + (y - py) * (y - py) + (z - pz) * (z - pz));
+
+        /// <summary>A hand's step from its previous usable pose (0 while it is not usable).</summary>
+        static double Step(in HandPose pose, ref HandPose last)
+        {
+            if (!pose.IsUsable) return 0;
+            double d = last.IsUsable ? Distance(pose.X, pose.Y, pose.Z, last.X, last.Y, last.Z) : 0;
+            last = pose;
+            return d;
         }
 
         [Category("Soak")] // ten hours at 120 Hz (Support/Soak.cs)
@@ -168,24 +203,27 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(() => solver.Configure(WeightModel.FromMass(1), NamedProfiles.Xyz, 0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("standardSpeed"));
         }
 
-        [TestCase("paper", true), TestCase("xyz", true), TestCase("paper-experiment", false), TestCase("gain", false)]
-        public void AHandThatJumpsSidewaysIsReanchoredThenDrawnBackWithTheOffsetCorrection(string name, bool drawnBack)
+        [TestCase("paper"), TestCase("xyz"), TestCase("paper-experiment"), TestCase("gain")]
+        public void AHandThatReallyJumpsSidewaysIsFollowedOnceSeenThereTwiceAndKeepsTheGrab(string name)
         {
+            // The hand is 0.4 m to the side from one pose on (12 m/s: no hand moves so between two poses). Refused at first,
+            // it is followed at the next pose that agrees with it, rigidly: the grab's 5 cm beside the hand stays, nothing is
+            // drawn back afterwards, and the object never steps more than the hand did.
             var solver = new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.Get(name));
             solver.BeginHold(new HandPose(0, 1, 0, true, true, 0), 0.05, 1, 0);
-            double previous = solver.ObjectX, maxStep = 0;
+            double previous = solver.ObjectX;
             for (int i = 1; i <= 270; i++)
             {
                 long pose = i / 3;
-                double x = pose >= 30 ? 0.4 : 0; // one pose 0.4 m to the side: no hand moves 12 m/s, so it is a re-anchor
+                double x = pose >= 30 ? 0.4 : 0;
                 solver.Step(new HandPose(x, 1, 0, true, true, pose / 30.0), 1 / 90.0);
-                if (i == 90) Assert.That(solver.ObjectX, Is.EqualTo(0.05).Within(0.5 / 90 + 1e-12), "the jump itself moves the object no more than one frame of the pull");
-                maxStep = Math.Max(maxStep, Math.Abs(solver.ObjectX - previous));
+                if (i == 90) Assert.That(solver.ObjectX, Is.EqualTo(0.05).Within(1e-12), "the first pose there is refused");
+                if (i == 93) Assert.That(solver.ObjectX, Is.EqualTo(0.45).Within(1e-9), "seen there again: followed, beside the hand as grabbed");
+                Assert.That(Math.Abs(solver.ObjectX - previous), Is.LessThanOrEqualTo(0.4 + 1e-9), "never a step beyond the hand's");
                 previous = solver.ObjectX;
             }
-            Assert.That(maxStep, Is.LessThanOrEqualTo(0.5 / 90 + 1e-12), "drawn back at most at the correction's 0.5 m/s");
-            if (drawnBack) Assert.That(solver.ObjectX, Is.EqualTo(0.45).Within(0.01), "back at hand + grab offset within two seconds");
-            else Assert.That(solver.ObjectX, Is.EqualTo(0.05).Within(1e-9), "without the correction the re-anchored offset stays");
+            Assert.That(solver.ObjectX, Is.EqualTo(0.45).Within(1e-9), "and it stays there");
+            Assert.That(solver.ObjectY, Is.EqualTo(1).Within(1e-9));
         }
 
         [Test]
