@@ -24,9 +24,14 @@ public static class ReplayCommand
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
-        bool anyUsable = true;
-        target.Write(w => anyUsable = Replay(reader, solver, breakAway, grabOffset, w, target.SpareFolder));
-        if (!anyUsable) Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; object_y is 0 throughout");
+        var summary = new ReplaySummary();
+        target.Write(w => summary = Replay(reader, solver, breakAway, grabOffset, w, target.SpareFolder));
+        if (!summary.AnyUsable)
+            Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; the object stays at {(reader.HasRig ? "the rig's origin" : "0")} throughout");
+        // One line saying what was done; on standard error when the rows went to standard output.
+        var say = target.IsStandardOutput ? Console.Error : Console.Out;
+        string largest = summary.LargestOffset > 0 || summary.Holds > 0 ? NumberText.Fixed(summary.LargestOffset * 1000, 1) + " mm" : "none";
+        say.WriteLine($"replay: {summary.Rows} rows, {summary.Holds} hold{(summary.Holds == 1 ? "" : "s")}{(summary.Released ? " (broken away)" : "")}, largest offset {largest} -> {Messages.OneLine(output)}");
         return 0;
     }
 
@@ -79,10 +84,12 @@ public static class ReplayCommand
 
     /// <summary>Streams rows through the solver. Rows before the first usable hand wait until the starting
     /// position is known: the first <see cref="FrameBuffer.InMemory"/> in memory, the rest in a temporary file
-    /// beside the output, so memory stays bounded. Returns false when no row had a usable hand.</summary>
-    static bool Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
+    /// beside the output, so memory stays bounded. With the rig's columns (issue 26) each hand is taken into the
+    /// rig's frame, the solver runs there, and the object is written back through that row's rig; without them
+    /// nothing is transformed. Returns the summary of what was replayed.</summary>
+    static ReplaySummary Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
     {
-        var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway);
+        var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway, reader.HasRig);
         w.Write("t,hand_y,object_y,offset");
         if (columns.Horizontal) w.Write(",hand_x,hand_z,object_x,object_z");
         if (columns.SecondHand) w.Write(",hands");
@@ -91,12 +98,15 @@ public static class ReplayCommand
 
         bool twoHands = solver.Profile.Has<TwoHands>();
         using var waiting = new FrameBuffer(spareFolder);
+        var summary = new ReplaySummary();
         bool holding = false;
+        (double X, double Y, double Z)? letGo = null;
         double lastT = double.NaN;
         while (reader.TryReadRow(out TraceRow r))
         {
-            var a = r.FirstPose;
-            var b = r.SecondPose;
+            summary.Rows++;
+            var a = columns.First(r);
+            var b = columns.Second(r);
             if (!holding)
             {
                 bool one = a.IsUsable, two = twoHands && b.IsUsable;
@@ -108,7 +118,8 @@ public static class ReplayCommand
                 double z = one && two ? 0.5 * (a.Z + b.Z) : (one ? a.Z : b.Z);
                 solver.BeginHoldWithGrabOffset(a, twoHands ? b : HandPose.Lost, x, grabOffset, z);
                 holding = true;
-                waiting.Drain(early => Write(w, columns, early, solver.ObjectX, solver.ObjectY, solver.ObjectZ, true));
+                summary.Holds++;
+                waiting.Drain(early => Write(w, columns, early, columns.Object(early, solver.ObjectX, solver.ObjectY, solver.ObjectZ), true, ref summary));
             }
             else
             {
@@ -116,34 +127,72 @@ public static class ReplayCommand
                 solver.Step(a, b, dt);
             }
             if (double.IsFinite(r.First.Time)) lastT = r.First.Time;
-            Write(w, columns, r, solver.ObjectX, solver.ObjectY, solver.ObjectZ, solver.IsHolding);
+            var world = columns.Object(r, solver.ObjectX, solver.ObjectY, solver.ObjectZ);
+            // Let go (--break-away): the object stays where it was let go in the world, not in a rig that may walk
+            // on; without a rig the solver's frame is the world's and the solver already keeps it there.
+            if (columns.Rig && !solver.IsHolding) world = letGo ??= world;
+            Write(w, columns, r, world, solver.IsHolding, ref summary);
         }
-        bool none = waiting.Count == 0;
-        waiting.Drain(early => Write(w, columns, early, 0, 0, 0, true));
-        return holding || none;
+        summary.Released = holding && !solver.IsHolding;
+        summary.AnyUsable = holding || waiting.Count == 0;
+        waiting.Drain(early => Write(w, columns, early, columns.Object(early, 0, 0, 0), true, ref summary));
+        return summary;
     }
 
-    readonly record struct Columns(bool Horizontal, bool SecondHand, bool Held);
-
-    /// <summary>One output row, formatted on the stack (no allocation per row, as the one-hand replay).</summary>
-    static void Write(TextWriter w, Columns c, in TraceRow r, double objectX, double objectY, double objectZ, bool held)
+    /// <summary>What one replay did, for the line the command prints.</summary>
+    struct ReplaySummary
     {
-        bool usable = r.FirstPose.IsUsable;
-        double offset = usable ? r.First.HandY - objectY : double.NaN;
+        public long Rows;
+        public int Holds;
+        public bool Released;
+        public bool AnyUsable;
+
+        /// <summary>The largest |hand_y − object_y| over rows with a usable first hand, m; NaN when there is none.</summary>
+        public double LargestOffset;
+
+        public void Offset(double offset)
+        {
+            if (double.IsFinite(offset) && !(Math.Abs(offset) <= LargestOffset)) LargestOffset = Math.Abs(offset);
+        }
+    }
+
+    readonly record struct Columns(bool Horizontal, bool SecondHand, bool Held, bool Rig)
+    {
+        /// <summary>The first hand as the solver takes it: in the rig's frame when the trace gives the rig, else as read.</summary>
+        public HandPose First(in TraceRow r) => Rig ? r.InRig(r.FirstPose, Horizontal) : r.FirstPose;
+
+        public HandPose Second(in TraceRow r) => Rig ? r.InRig(r.SecondPose, Horizontal) : r.SecondPose;
+
+        /// <summary>The solver's object in the world: through the row's rig when the trace gives it, else as it is.</summary>
+        public (double X, double Y, double Z) Object(in TraceRow r, double x, double y, double z)
+        {
+            if (!Rig) return (x, y, z);
+            r.Rig.ToWorld(x, y, z, out double wx, out double wy, out double wz);
+            return (wx, wy, wz);
+        }
+    }
+
+    /// <summary>One output row, formatted on the stack (no allocation per row, as the one-hand replay); the object
+    /// in world coordinates.</summary>
+    static void Write(TextWriter w, Columns c, in TraceRow r, (double X, double Y, double Z) world, bool held, ref ReplaySummary summary)
+    {
+        bool usable = c.First(r).IsUsable;
+        double offset = usable ? r.First.HandY - world.Y : double.NaN;
+        summary.Offset(offset);
         Span<char> buffer = stackalloc char[32 * 8 + 16];
         int n = 0;
         n += NumberText.Format(r.First.Time, buffer[n..]); buffer[n++] = ',';
         n += NumberText.Format(r.First.HandY, buffer[n..]); buffer[n++] = ',';
-        n += NumberText.Format(objectY, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(world.Y, buffer[n..]); buffer[n++] = ',';
         n += NumberText.Format(offset, buffer[n..]);
         if (c.Horizontal)
         {
             buffer[n++] = ','; n += NumberText.Format(r.HandX, buffer[n..]);
             buffer[n++] = ','; n += NumberText.Format(r.HandZ, buffer[n..]);
-            buffer[n++] = ','; n += NumberText.Format(objectX, buffer[n..]);
-            buffer[n++] = ','; n += NumberText.Format(objectZ, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(world.X, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(world.Z, buffer[n..]);
         }
-        if (c.SecondHand) { buffer[n++] = ','; buffer[n++] = (char)('0' + (usable ? 1 : 0) + (r.SecondPose.IsUsable ? 1 : 0)); }
+        if (c.SecondHand) { buffer[n++] = ','; buffer[n++] = (char)('0' + (usable ? 1 : 0) + (c.Second(r).IsUsable ? 1 : 0)); }
         if (c.Held) { buffer[n++] = ','; buffer[n++] = held ? '1' : '0'; }
         buffer[n++] = '\n';
         w.Write(buffer[..n]);
