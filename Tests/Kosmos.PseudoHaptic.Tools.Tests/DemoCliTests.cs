@@ -25,9 +25,15 @@ public class DemoCliTests
         string dir = TempDir();
         try
         {
-            var (code, stdout, stderr) = Demo("--out", dir);
+            // Progress goes to standard error when it is a terminal (forced here: the test's is a pipe).
+            Kosmos.PseudoHaptic.Cli.CommandLine.Progress.Forced = true;
+            int code;
+            string stdout, stderr;
+            try { (code, stdout, stderr) = Demo("--out", dir); }
+            finally { Kosmos.PseudoHaptic.Cli.CommandLine.Progress.Forced = false; }
             Assert.That(code, Is.EqualTo(0), stderr);
             Assert.That(stderr, Does.Contain("[1/").And.Contain("v_std ="), "progress and calibration");
+            Assert.That(stdout, Does.Contain("demo: ").And.Contain(" -> "), "the one line saying what was done");
             Assert.That(stdout, Does.Contain("box B").And.Contain("bottle 2 L").And.Contain("max offset"));
             foreach (var png in new[] { "experiment-1-boxes.png", "experiment-2-bottles.png", "offset-correction.png" })
                 ChartFiles.AssertPng(Path.Combine(dir, png), 1000, 560);
@@ -101,7 +107,7 @@ public class DemoCliTests
         {
             string trace = Path.Combine(dir, "bad.csv");
             File.WriteAllText(trace, "t,hand_y\n0,1\n0.1,oops\n");
-            var (code, _, stderr) = Demo("--out", dir, "--trace", trace);
+            var (code, _, stderr) = Demo("--out", Path.Combine(dir, "out"), "--trace", trace);
             Assert.That(code, Is.EqualTo(2));
             Assert.That(stderr.Trim(), Does.Contain("bad.csv:3:").And.Not.Contain("\n"));
         }

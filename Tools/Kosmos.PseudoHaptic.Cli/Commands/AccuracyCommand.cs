@@ -1,4 +1,5 @@
 using Kosmos.PseudoHaptic.Cli.Accuracy;
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Plotting;
 
@@ -13,8 +14,6 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// </summary>
 public static class AccuracyCommand
 {
-    public const string Usage = "pseudohaptic accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--standard-speed V] [--mocap FILE|none] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS] [--chart OUT.png [--svg]]";
-
     public const string MocapRelative = "../shared/data/mocap-hand-100hz.csv";
     public const double DefaultMassKg = 1.0;
     public const double DefaultLongMinutes = 60;
@@ -22,9 +21,29 @@ public static class AccuracyCommand
     /// <summary>Longest long run, min: its frames are held in memory (180 min with a 120 s trace, the lifts and the motion capture: see README; 480 min: 318 MB).</summary>
     public const double MaxLongMinutes = 180;
 
-    public static int Run(string[] args)
+    public static CliCommand Define() => new(
+        "accuracy",
+        "Measure what each hand-motion estimator, precision and integration costs in accuracy on Quest-like input: tables on standard output (accuracy-vs-time.md)",
+        Run,
+        new[]
+        {
+            "pseudohaptic accuracy --long-minutes 0 --mocap none",
+            "pseudohaptic accuracy --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --lifts none --mocap none --long-minutes 0 --csv out/accuracy.csv",
+        },
+        CliCommand.Value("--trace", "FILE", "also measure on this recorded hand (replay's CSV format; usable rows spanning at most 120 s)"),
+        CliCommand.Choice("--lifts", "measure on the synthetic lifts (default all)", "all", "none"),
+        CliCommand.Value("--mass-kg", "M", $"the held object's mass, kg (default {DefaultMassKg})"),
+        CliCommand.Value("--standard-speed", "V", $"the standard lifting speed, m/s (default {WeightSolver.DefaultStandardSpeed})"),
+        CliCommand.Value("--mocap", "FILE|none", $"the motion-capture trace (default {MocapRelative} beside the repository, when present; none: skip)"),
+        CliCommand.Value("--long-minutes", "N", $"minutes of the long run that measures drift, 0–{MaxLongMinutes:0} (default {DefaultLongMinutes:0})"),
+        CliCommand.Value("--csv", "OUT.csv", "also write every figure as CSV ('-': standard output; the tables then go to standard error)"),
+        CliCommand.Value("--costs", "BENCH_RESULTS", "BenchmarkDotNet's results folder or report CSV: the time each estimator costs, for --chart"),
+        CliCommand.Value("--chart", "OUT.png", "the accuracy-against-time (Pareto) chart; needs --costs"),
+        CliCommand.Flag("--svg", "write an SVG beside the chart"));
+
+    static int Run(Options o)
     {
-        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--trace", "--lifts", "--mass-kg", "--standard-speed", "--mocap", "--long-minutes", "--csv", "--costs", "--chart");
+        bool svg = o.Flag("--svg");
         double mass = o.Number("--mass-kg") ?? DefaultMassKg;
         if (!(mass > 0) || double.IsInfinity(mass))
             throw new CliException($"option --mass-kg: must be a finite number greater than 0, got {NumberText.Format(mass)}");
@@ -36,7 +55,7 @@ public static class AccuracyCommand
             throw new CliException($"option --long-minutes: must lie in [0, {MaxLongMinutes:0}] (the long run is held in memory), got {NumberText.Format(minutes)}");
         string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
         if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
-        if (svg && chartPath == null) throw new CliException($"option {Charts.SvgFlag} needs --chart (the SVG is written beside the PNG)");
+        if (svg && chartPath == null) throw new CliException($"option --svg needs --chart (the SVG is written beside the PNG)");
         // Outputs are checked before anything is read: never an input, never a folder, never a missing folder.
         string? trace = o.Get("--trace"), mocapOption = o.Get("--mocap"), csv = o.Get("--csv");
         var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapOption == "none" ? null : mocapOption), new NamedPath("--costs", costsPath) };
@@ -69,7 +88,7 @@ public static class AccuracyCommand
         if (sources.Count == 0) throw new CliException("nothing to measure: --lifts none without --trace or a motion-capture trace");
 
         var model = WeightModel.FromMass(mass);
-        var report = AccuracyStudy.Run(new AccuracyStudy.Settings(model, speed, sources, minutes, notes), Console.Error);
+        var report = AccuracyStudy.Run(new AccuracyStudy.Settings(model, speed, sources, minutes, notes), Progress.Writer);
         // With an output on standard output ("-"), the tables go to standard error.
         bool stdoutTaken = csvOut?.IsStandardOutput == true || chartOut?.IsStandardOutput == true;
         AccuracyTable.Write(stdoutTaken ? Console.Error : Console.Out, report);

@@ -19,9 +19,6 @@ public static class EvaluationInputsLimits
 /// </summary>
 static class EvaluationInputs
 {
-    /// <summary>Exit code of a contract error: malformed input, bad option, unreadable file.</summary>
-    public const int ContractError = 2;
-
     /// <summary>
     /// Most data rows score and report read from one file (100,000: a study of 4,500 participants answering all
     /// 22 items), so their memory is bounded whatever the file (report of 100,000 scores: 110 MB peak); a row
@@ -78,36 +75,6 @@ static class EvaluationInputs
     public static void WriteText(string path, string text) => OutputFile.Check("--out", path).Write(w => w.Write(text));
 
     public static void WriteBytes(string path, byte[] bytes) => OutputFile.Check("--out", path).WriteBytes(bytes);
-
-    /// <summary>
-    /// Runs a command body under the error contract: a malformed file prints "FILE:LINE: reason", a usage
-    /// error "pseudohaptic COMMAND: reason (usage: …)", each one line on stderr, exit code 2. Output is only
-    /// written at the end of a body, after everything was read and checked, so an error leaves nothing.
-    /// </summary>
-    public static int Guard(string command, string usage, Func<int> body)
-    {
-        try
-        {
-            return body();
-        }
-        catch (EvaluationFormatException e)
-        {
-            Console.Error.WriteLine(OneLine(e.Message));
-            return ContractError;
-        }
-        catch (CliException e)
-        {
-            string hint = e.Message.StartsWith("option", StringComparison.Ordinal) || e.Message.StartsWith("unknown option", StringComparison.Ordinal)
-                ? $" (usage: {usage})" : "";
-            Console.Error.WriteLine($"pseudohaptic {command}: {OneLine(e.Message)}{hint}");
-            return e.ExitCode;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            Console.Error.WriteLine($"pseudohaptic {command}: {Messages.Reason(e)}");
-            return 1;
-        }
-    }
 
     public static string OneLine(string text) => Messages.OneLine(text);
 }

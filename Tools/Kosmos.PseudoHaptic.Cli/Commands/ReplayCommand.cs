@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Traces;
 using Kosmos.PseudoHaptic.Simulation;
@@ -11,11 +12,27 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// </summary>
 public static class ReplayCommand
 {
-    public const string Usage = "pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--grab-offset D] [--break-away D]";
+    public static CliCommand Define() => new(
+        "replay",
+        "Replay a recorded hand (CSV) through the weight solver: one output row per input row with the object's position and the offset (ALGORITHM.md §10)",
+        Run,
+        new[]
+        {
+            "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --out out/replayed.csv --mass-kg 2",
+            "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/walk-and-turn.csv --out - --mass-kg 0.5 --profile xyz --break-away 0.3",
+        },
+        CliCommand.Value("--trace", "IN.csv", "the recorded hand: columns t (s), hand_y (m), optional tracked, pose_t, hand_x, hand_z, a second hand hand2_*, and the rig's world pose rig_x, rig_y, rig_z (m), rig_yaw (degrees)", required: true),
+        CliCommand.Value("--out", "OUT.csv", "where the replay goes ('-': standard output); replaced whole or not at all", required: true),
+        CliCommand.Value("--mass-kg", "M", "the held object's mass, kg (> 0)", required: true),
+        CliCommand.Value("--standard-speed", "V", $"the user's calibrated standard lifting speed, m/s, {WeightSolver.MinStandardSpeed}–{WeightSolver.MaxStandardSpeed} (default {WeightSolver.DefaultStandardSpeed})"),
+        CliCommand.Choice("--profile", $"which effects act (default {NamedProfiles.PaperName})", NamedProfiles.Names.ToArray()),
+        CliCommand.Value("--grab-offset", "D", "the object starts D metres below the first usable hand (default 0; negative: above)"),
+        CliCommand.Value("--break-away", "D", "let go when the object lags more than D metres behind the hand for 0.1 s (default: never)"));
 
-    public static int Run(string[] args)
+    public static int Run(string[] args) => Cli.Run(args.Prepend("replay").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(args, "--trace", "--out", "--mass-kg", "--standard-speed", "--profile", "--grab-offset", "--break-away");
         string trace = o.Require("--trace");
         string output = o.Require("--out");
         var solver = CreateSolver3D(o, out bool breakAway);
@@ -147,7 +164,7 @@ public static class ReplayCommand
         public bool Released;
         public bool AnyUsable;
 
-        /// <summary>The largest |hand_y − object_y| over rows with a usable first hand, m; NaN when there is none.</summary>
+        /// <summary>The largest |hand_y − object_y| over held rows with a usable first hand, m; 0 when there is none.</summary>
         public double LargestOffset;
 
         public void Offset(double offset)
@@ -178,7 +195,7 @@ public static class ReplayCommand
     {
         bool usable = c.First(r).IsUsable;
         double offset = usable ? r.First.HandY - world.Y : double.NaN;
-        summary.Offset(offset);
+        if (held) summary.Offset(offset);
         Span<char> buffer = stackalloc char[32 * 8 + 16];
         int n = 0;
         n += NumberText.Format(r.First.Time, buffer[n..]); buffer[n++] = ',';

@@ -1,4 +1,5 @@
 using System.Globalization;
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
@@ -16,11 +17,23 @@ namespace Kosmos.PseudoHaptic.Cli;
 /// </summary>
 public static class ScoreCommand
 {
-    public const string Usage = "pseudohaptic score --responses R.csv --out S.csv [--questionnaires DIR]";
 
-    public static int Run(string[] args) => EvaluationInputs.Guard("score", Usage, () =>
+    public static CliCommand Define() => new(
+        "score",
+        "Score questionnaire answers as the paper does (reverse-coded items, a mean per part, incomplete parts unscored): one row per participant × questionnaire (evaluation.md)",
+        Run,
+        new[]
+        {
+            "pseudohaptic score --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/responses.csv --out out/scores.csv",
+        },
+        CliCommand.Value("--responses", "R.csv", "the answers: participant,questionnaire,item,response (optional condition); any number of rows", required: true),
+        CliCommand.Value("--out", "S.csv", "the scores: participant,[condition,]questionnaire,score ('-': standard output)", required: true),
+        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) to use instead of the paper's, built in"));
+
+    public static int Run(string[] args) => Cli.Run(args.Prepend("score").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(args, "--responses", "--out", "--questionnaires");
         string responsesPath = o.Require("--responses");
         string output = o.Require("--out");
         var target = OutputFile.Check("--out", output,
@@ -48,5 +61,5 @@ public static class ScoreCommand
         foreach (var s in scores.Where(s => !s.IsComplete))
             summary.WriteLine($"  {Messages.OneLine(s.Participant)}{(hasCondition ? " " + Messages.OneLine(s.Condition) : "")} {s.QuestionnaireId}: incomplete, unanswered items {string.Join(", ", s.MissingItems.Select(i => i.ToString(CultureInfo.InvariantCulture)))}");
         return 0;
-    });
+    }
 }

@@ -226,34 +226,6 @@ public static class Charts
         if (svgText != null) Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteAllText(Path.ChangeExtension(pngPath, ".svg"), svgText);
     }
 
-    /// <summary>The command-line flag that asks for an SVG beside each PNG chart.</summary>
-    public const string SvgFlag = "--svg";
-
-    /// <summary>
-    /// A command's arguments without the flag <c>--svg</c> (which takes no value), for <see cref="Options"/>;
-    /// <paramref name="svg"/> tells whether it was given. Only option names are looked at, not their values
-    /// ("--out --svg" keeps "--svg" as the folder name). Given twice, it is an error naming it.
-    /// </summary>
-    public static string[] TakeSvgFlag(string[] args, out bool svg)
-    {
-        ArgumentNullException.ThrowIfNull(args);
-        svg = false;
-        var rest = new List<string>(args.Length);
-        for (int i = 0; i < args.Length; i++)
-        {
-            if (args[i] == SvgFlag)
-            {
-                if (svg) throw new CliException($"option {SvgFlag} is given twice");
-                svg = true;
-                continue;
-            }
-
-            rest.Add(args[i]);
-            if (args[i].StartsWith("--", StringComparison.Ordinal) && i + 1 < args.Length) rest.Add(args[++i]);
-        }
-
-        return rest.ToArray();
-    }
 
     /// <summary>The plot as PNG bytes of exactly <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
     public static byte[] Png(Plot plot, int width, int height)
