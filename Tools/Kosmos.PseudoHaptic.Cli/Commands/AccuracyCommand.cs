@@ -37,8 +37,8 @@ public static class AccuracyCommand
         CliCommand.Value("--mocap", "FILE|none", $"the motion-capture trace (default {MocapRelative} beside the repository, when present; none: skip)"),
         CliCommand.Value("--long-minutes", "N", $"minutes of the long run that measures drift, 0–{MaxLongMinutes:0} (default {DefaultLongMinutes:0})"),
         CliCommand.Value("--csv", "OUT.csv", "also write every figure as CSV ('-': standard output; the tables then go to standard error)"),
-        CliCommand.Value("--costs", "BENCH_RESULTS", "BenchmarkDotNet's results folder or report CSV: the time each estimator costs, for --chart"),
-        CliCommand.Value("--chart", "OUT.png", "the accuracy-against-time (Pareto) chart; needs --costs"),
+        CliCommand.Value("--costs", "BENCH_RESULTS", "BenchmarkDotNet's results folder or report CSV: the time each estimator costs, for --chart (default: none, no chart)"),
+        CliCommand.Value("--chart", "OUT.png", "also draw the accuracy-against-time (Pareto) chart; needs --costs"),
         CliCommand.Flag("--svg", "write an SVG beside the chart"));
 
     static int Run(Options o)

@@ -48,7 +48,8 @@ public static class PsychometricCommand
 
         // Read and check everything, compute, render; only then does the folder appear, whole.
         var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
-        var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed);
+        var progress = Progress.Writer;
+        var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed, (done, all) => progress.Write($"\rpsychometric: fit and bootstrap {done}/{all}{(done == all ? "\n" : "")}"));
         var files = new List<(string Name, byte[] Bytes)>();
         var utf8 = new UTF8Encoding(false);
         files.Add(("fits.csv", utf8.GetBytes(FitsCsv(rows))));

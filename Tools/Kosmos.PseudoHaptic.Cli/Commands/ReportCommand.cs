@@ -24,8 +24,8 @@ public static class ReportCommand
         },
         CliCommand.Value("--scores", "S.csv", "the scores score wrote; any number of rows", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
-        CliCommand.Value("--responses", "R.csv", "the answers, for Cronbach's alpha and a check of the scores"),
-        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) to use instead of the paper's, built in"),
+        CliCommand.Value("--responses", "R.csv", "the answers, for Cronbach's alpha and a check of the scores (default: none, no alpha)"),
+        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) (default: the paper's, built in)"),
         CliCommand.Flag("--svg", "write an SVG beside each PNG"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("report").ToArray());

@@ -28,7 +28,7 @@ public static class ScoreCommand
         },
         CliCommand.Value("--responses", "R.csv", "the answers: participant,questionnaire,item,response (optional condition); any number of rows", required: true),
         CliCommand.Value("--out", "S.csv", "the scores: participant,[condition,]questionnaire,score ('-': standard output)", required: true),
-        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) to use instead of the paper's, built in"));
+        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) (default: the paper's, built in)"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("score").ToArray());
 
