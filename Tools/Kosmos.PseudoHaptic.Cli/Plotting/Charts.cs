@@ -143,7 +143,25 @@ public static class Charts
     }
 
     /// <summary>Markers at (xs[i], ys[i]); non-finite points are left out.</summary>
-    public static ScottPlot.Plottables.Scatter Points(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour)
+    /// <summary>Marker shapes that stay apart in grey print: series i takes shape i.</summary>
+    static readonly MarkerShape[] Shapes = { MarkerShape.FilledCircle, MarkerShape.FilledSquare, MarkerShape.FilledTriangleUp, MarkerShape.FilledDiamond, MarkerShape.OpenCircle, MarkerShape.FilledTriangleDown };
+
+    public static MarkerShape Shape(int i) => Shapes[((i % Shapes.Length) + Shapes.Length) % Shapes.Length];
+
+    /// <summary>Vertical error bars (a 95 % interval: <paramref name="low"/> to <paramref name="high"/>) in <paramref name="colour"/>.</summary>
+    public static void ErrorBars(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> low, IReadOnlyList<double> high, Color colour)
+    {
+        for (int i = 0; i < xs.Count; i++)
+        {
+            if (!double.IsFinite(xs[i]) || !double.IsFinite(low[i]) || !double.IsFinite(high[i])) continue;
+            var bar = plot.Add.Line(xs[i], low[i], xs[i], high[i]);
+            bar.Color = colour;
+            bar.LineWidth = 1.5f;
+            bar.MarkerSize = 0;
+        }
+    }
+
+    public static ScottPlot.Plottables.Scatter Points(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour, int shape = 0)
     {
         CheckLengths(xs, ys);
         var fx = new List<double>();
@@ -157,6 +175,7 @@ public static class Charts
 
         var scatter = plot.Add.ScatterPoints(fx.ToArray(), fy.ToArray(), colour);
         scatter.MarkerSize = MarkerSize;
+        scatter.MarkerShape = Shape(shape);
         scatter.LegendText = label;
         return scatter;
     }
