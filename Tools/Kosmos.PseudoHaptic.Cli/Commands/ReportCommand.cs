@@ -20,7 +20,7 @@ public static class ReportCommand
         Run,
         new[]
         {
-            "pseudohaptic report --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/scores.csv --out out/report --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/responses.csv",
+            "pseudohaptic report --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/scores.csv --out report --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv",
         },
         CliCommand.Value("--scores", "S.csv", "the scores score wrote; any number of rows", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
