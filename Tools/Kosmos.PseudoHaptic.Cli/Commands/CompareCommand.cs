@@ -45,7 +45,7 @@ public static class CompareCommand
         foreach (string q in rows.Select(r => r.Questionnaire).Distinct())
         {
             string name = $"chart{charts.Count + 1}-{PsychometricCommand.Slug(q)}.png";
-            files.Add((name, StudyCharts.PairedLines(q, scores.Where(s => s.Questionnaire == q).ToList(), rows.Where(r => r.Questionnaire == q && r.Pair != null).ToList())));
+            files.Add((name, StudyCharts.PairedLines(q, scores.Where(s => s.Questionnaire == q).ToList(), rows.Where(r => r.Questionnaire == q).ToList())));
             charts.Add((name, q));
         }
         files.Add(("report.md", utf8.GetBytes(Report(scoresPath, scores, rows, charts))));

@@ -72,7 +72,7 @@ public static class DemoCommand
                     sceneResults.Add(result);
                     Temporaries.Guard(() => WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y));
                 }
-                Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg));
+                Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg, standardSpeed));
                 results.AddRange(sceneResults);
             }
             results3D = DemoThreeDimensions.Run(temp, standardSpeed, svg, Progress.Writer);
@@ -172,14 +172,38 @@ public static class DemoCommand
             w.WriteLine($"{NumberText.Format(frames[i].Time)},{NumberText.Format(frames[i].HandY)},{NumberText.Format(y[i])},{NumberText.Format(frames[i].HandY - y[i])}");
     }
 
-    static void Plot(string path, Scene scene, List<Result> results, bool svg)
+    /// <summary>
+    /// A scene's chart: each object's height (its own colour, line pattern and width), the hand over them (black,
+    /// dashed, drawn last), the legend under the plot. With the offset correction, a second panel shows the offset
+    /// (hand − object) against the correction's threshold, and each object's offset without the correction.
+    /// </summary>
+    static void Plot(string path, Scene scene, List<Result> results, bool svg, double standardSpeed)
     {
-        var plot = Charts.Create(scene.Title, "time (s)", "height (m)");
         var t = scene.Frames.Select(f => f.Time).ToArray();
-        Charts.Line(plot, t, scene.Frames.Select(f => f.HandY).ToArray(), "hand (30 Hz poses)", Charts.Black, dashed: true);
+        var hand = scene.Frames.Select(f => f.Tracked ? f.HandY : double.NaN).ToArray();
+        var plot = Charts.Create(scene.Title, "time (s)", "height (m)");
         for (int i = 0; i < results.Count; i++)
-            Charts.Line(plot, t, results[i].ObjectY, $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg", Charts.Colour(i));
-        Charts.Save(plot, path, 1000, 560, svg);
+            Charts.Series(plot, t, results[i].ObjectY, $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg", i);
+        Charts.Hand(plot, t, hand, "hand (30 Hz poses)");
+        Charts.LegendBelow(plot);
+        var correction = scene.Profile.Find<OffsetCorrection>();
+        if (correction == null)
+        {
+            Charts.Save(plot, path, 1000, 600, svg);
+            return;
+        }
+        // What the correction does: the offset with and without it, and the threshold it acts beyond.
+        var uncorrected = scene.Profile.Without<OffsetCorrection>("paper without the offset correction");
+        var offsets = Charts.Create("Offset, hand − object, with the correction and without it (thin dashed)", "time (s)", "offset (m)");
+        Charts.Threshold(offsets, correction.Threshold, $"threshold {correction.Threshold:0.##} m");
+        for (int i = 0; i < results.Count; i++)
+        {
+            var free = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(results[i].Item.MassKg), uncorrected, standardSpeed), scene.Frames);
+            Charts.Series(offsets, t, hand.Select((h, k) => h - results[i].ObjectY[k]).ToArray(), $"{results[i].Item.Name}", i);
+            Charts.Line(offsets, t, hand.Select((h, k) => h - free[k]).ToArray(), $"{results[i].Item.Name}, uncorrected", Charts.Colour(i), dashed: true);
+        }
+        Charts.LegendBelow(offsets);
+        Charts.SavePanels(new[] { plot, offsets }, path, 1000, new[] { 560, 520 }, svg);
     }
 
     static void PrintSummary(List<Result> results, double standardSpeed, string outDir)
