@@ -208,8 +208,13 @@ static class StudyCharts
             double low = finite.Min(), high = finite.Max(), span = Math.Max(high - low, 1e-9);
             plot.Axes.SetLimitsY(low - 0.08 * span, high + 0.08 * span);
         }
-        int chars = Math.Max(8, 90 / Math.Max(1, conditions.Count));
-        var names = conditions.Select(c => Charts.Wrap(Messages.OneLine(c.Length == 0 ? "(none)" : c), chars)).ToArray();
+        // Names that fit under their column are written there; otherwise every condition gets a short code (C1, C2, …)
+        // and the key is listed with the tests, so no name is cut or broken inside a word.
+        int chars = Math.Max(8, 100 / Math.Max(1, conditions.Count));
+        var full = conditions.Select(c => Messages.OneLine(c.Length == 0 ? "(none)" : c)).ToList();
+        bool coded = full.Any(n => n.Split(' ').Any(word => word.Length > chars) || Charts.Wrap(n, chars).Split('\n').Length > 3);
+        string Name(string condition) => coded ? "C" + (conditions.IndexOf(condition) + 1) : Messages.OneLine(condition);
+        var names = coded ? full.Select((_, i) => "C" + (i + 1)).ToArray() : full.Select(n => Charts.Wrap(n, chars)).ToArray();
         int lines = names.Length > 0 ? names.Max(n => n.Split('\n').Length) : 1;
         plot.Axes.Bottom.SetTicks(Enumerable.Range(1, conditions.Count).Select(i => (double)i).ToArray(), names);
         plot.Axes.Bottom.MinimumSize = 30 + 20 * lines;
@@ -218,6 +223,7 @@ static class StudyCharts
         int width = Math.Clamp(300 + 160 * conditions.Count, 900, 2400);
 
         var tests = new List<string>();
+        if (coded) tests.Add("Conditions: " + string.Join("; ", full.Select((n, i) => $"C{i + 1} = {n}")));
         var friedman = rows.FirstOrDefault(r => r.Friedman != null)?.Friedman;
         if (friedman != null)
             tests.Add($"Friedman test over {friedman.K} conditions: χ²({friedman.DegreesOfFreedom}) = {G(friedman.Statistic)}, p = {G(friedman.P)} (n = {friedman.N} complete participants)");
@@ -226,7 +232,7 @@ static class StudyCharts
         foreach (var r in rows.Where(r => r.Pair != null))
         {
             var pr = r.Pair;
-            string pair = $"{Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)}";
+            string pair = $"{Name(r.ConditionB)} − {Name(r.ConditionA)}";
             if (!double.IsFinite(pr.MeanDifference)) { tests.Add($"{pair}: too few pairs (n = {pr.N})"); continue; }
             string wilcoxon = conditions.Count >= 3 && double.IsFinite(r.PHolm) ? $"Wilcoxon signed-rank p = {G(pr.WP)}, Holm-corrected p = {G(r.PHolm)}" : $"Wilcoxon signed-rank p = {G(pr.WP)}";
             tests.Add($"{pair} = {G(pr.MeanDifference)} (n = {pr.N}): paired t test p = {G(pr.TP)}; {wilcoxon}");

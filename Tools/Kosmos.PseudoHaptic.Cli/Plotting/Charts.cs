@@ -183,7 +183,7 @@ public static class Charts
         int chars = Math.Max(40, (int)(width / (NoteSize * 0.62)) - 4);
         var wrapped = lines.Select(l => Wrap(l, chars)).ToList();
         int count = wrapped.Sum(l => l.Split('\n').Length);
-        int height = 24 + (int)Math.Ceiling(count * (NoteSize + 6) * 1.25);
+        int height = 30 + (int)Math.Ceiling(count * (NoteSize + 2) * 1.35);
         var plot = Create("", "", "");
         plot.Axes.Frameless();
         plot.HideGrid();
