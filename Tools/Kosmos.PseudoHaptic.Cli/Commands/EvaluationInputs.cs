@@ -10,6 +10,9 @@ public static class EvaluationInputsLimits
 {
     /// <summary>See <see cref="EvaluationInputs.MaxRows"/>.</summary>
     public const int MaxRows = 100_000;
+
+    /// <summary>See <see cref="EvaluationInputs.MaxParticipants"/>.</summary>
+    public const int MaxParticipants = 100_000;
 }
 
 /// <summary>
@@ -29,6 +32,22 @@ static class EvaluationInputs
     /// <summary>Most characters the fields of one file may hold together (64 a row on average), so long fields cannot
     /// add up past the memory bound either; the row that passes it is refused naming its line.</summary>
     public const long MaxCharacters = 64L * MaxRows;
+
+    /// <summary>
+    /// Most participants score and report keep from one file (100,000: a 10,000-participant study is a tenth of it).
+    /// score streams its answers, so the rows are not counted: it keeps one sheet per participant, questionnaire and
+    /// condition (about 1 kB each), and the participants' and conditions' names at most <see cref="MaxNameCharacters"/>.
+    /// </summary>
+    public const int MaxParticipants = EvaluationInputsLimits.MaxParticipants;
+
+    /// <summary>Most characters of distinct participant and condition names kept (64 a participant on average).</summary>
+    public const long MaxNameCharacters = 64L * MaxParticipants;
+
+    /// <summary>What score and report keep of an answers file, bounded by participants, not rows.</summary>
+    public static ParticipantLimit Participants() => new(MaxParticipants, MaxNameCharacters);
+
+    /// <summary>Most rows report reads from a scores file: one score per participant and part.</summary>
+    public static int MaxScoreRows(QuestionnaireCatalog catalog) => MaxParticipants * Math.Max(1, catalog.Questionnaires.Count);
 
     /// <summary>The package's definitions as built in, or those of <paramref name="directory"/> when given.</summary>
     public static QuestionnaireCatalog Catalog(string? directory)

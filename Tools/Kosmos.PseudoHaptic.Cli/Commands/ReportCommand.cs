@@ -42,9 +42,11 @@ public static class ReportCommand
         var catalog = EvaluationInputs.Catalog(questionnaires);
 
         // Everything is read, checked and rendered before the folder is made; it then appears whole.
-        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        // One score per participant and part: the rows are bounded by the participants, as score's answers are.
+        int maxScores = EvaluationInputs.MaxScoreRows(catalog);
+        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, maxScores, 64L * maxScores);
         ResponseSet? responses = responsesPath != null
-            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters)
+            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, int.MaxValue, long.MaxValue, EvaluationInputs.Participants())
             : null;
         var report = EvaluationReport.Build(catalog, scores, scoresPath, responses, responsesPath);
 

@@ -42,7 +42,8 @@ public static class ScoreCommand
 
         // R.csv may have a condition column (issue 11); S.csv then carries it after the participant. Without
         // it there is one set and the output is the scores file as before, byte for byte.
-        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        // Streamed: any number of rows; what is kept is bounded by the participants (EvaluationInputs.MaxParticipants).
+        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition, int.MaxValue, long.MaxValue, EvaluationInputs.Participants());
         var scores = hasCondition ? ScoreCalculator.ScoreAll(sets) : ScoreCalculator.ScoreAll(sets[0].Value);
         target.Write(w => w.Write(ScoresCsv.Format(scores, hasCondition)));
         var participants = new HashSet<string>(StringComparer.Ordinal);
