@@ -22,7 +22,7 @@ public static class ReportCommand
         {
             "pseudohaptic report --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/scores.csv --out report --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv",
         },
-        CliCommand.Value("--scores", "S.csv", "the scores score wrote; any number of rows", required: true),
+        CliCommand.Value("--scores", "S.csv", "the scores score wrote (one per participant and part, at most 100,000 participants)", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
         CliCommand.Value("--responses", "R.csv", "the answers, for Cronbach's alpha and a check of the scores (default: none, no alpha)"),
         CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) (default: the paper's, built in)"),

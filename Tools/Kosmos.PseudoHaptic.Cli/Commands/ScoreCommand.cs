@@ -26,7 +26,7 @@ public static class ScoreCommand
         {
             "pseudohaptic score --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv --out scores.csv",
         },
-        CliCommand.Value("--responses", "R.csv", "the answers: participant,questionnaire,item,response (optional condition); any number of rows", required: true),
+        CliCommand.Value("--responses", "R.csv", "the answers: participant,questionnaire,item,response (optional condition); any number of rows, at most 100,000 participants", required: true),
         CliCommand.Value("--out", "S.csv", "the scores: participant,[condition,]questionnaire,score ('-': standard output)", required: true),
         CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) (default: the paper's, built in)"));
 
