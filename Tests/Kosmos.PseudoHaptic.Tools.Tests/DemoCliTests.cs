@@ -17,6 +17,14 @@ public class DemoCliTests
         finally { Console.SetOut(o); Console.SetError(e); }
     }
 
+    /// <summary>A scene's chart height: one panel (600 px), two with the offset correction (height and offset), three for xyz.</summary>
+    static int SceneHeight(string scene) => Path.GetFileNameWithoutExtension(scene) switch
+    {
+        "offset-correction" or "recorded-hand" => 560 + 520,
+        "xyz-carry-lift" => 330 + 330 + 400,
+        _ => 600,
+    };
+
     static string TempDir() => Path.Combine(Path.GetTempPath(), "ph-demo-" + Guid.NewGuid().ToString("N"));
 
     [Test]
@@ -25,12 +33,18 @@ public class DemoCliTests
         string dir = TempDir();
         try
         {
-            var (code, stdout, stderr) = Demo("--out", dir);
+            // Progress goes to standard error when it is a terminal (forced here: the test's is a pipe).
+            Kosmos.PseudoHaptic.Cli.CommandLine.Progress.Forced = true;
+            int code;
+            string stdout, stderr;
+            try { (code, stdout, stderr) = Demo("--out", dir); }
+            finally { Kosmos.PseudoHaptic.Cli.CommandLine.Progress.Forced = false; }
             Assert.That(code, Is.EqualTo(0), stderr);
             Assert.That(stderr, Does.Contain("[1/").And.Contain("v_std ="), "progress and calibration");
+            Assert.That(stdout, Does.Contain("demo: ").And.Contain(" -> "), "the one line saying what was done");
             Assert.That(stdout, Does.Contain("box B").And.Contain("bottle 2 L").And.Contain("max offset"));
             foreach (var png in new[] { "experiment-1-boxes.png", "experiment-2-bottles.png", "offset-correction.png" })
-                ChartFiles.AssertPng(Path.Combine(dir, png), 1000, 560);
+                ChartFiles.AssertPng(Path.Combine(dir, png), 1000, SceneHeight(png));
             Assert.That(Directory.GetFiles(dir, "*.svg"), Is.Empty, "no SVG unless --svg");
             // Experiment 1: same size, B densest, so B lags most; the golf ball stays with the hand.
             double Peak(string file) => File.ReadLines(Path.Combine(dir, "experiment-1-boxes", file)).Skip(1)
@@ -40,7 +54,7 @@ public class DemoCliTests
             Assert.That(Peak("box-a.csv"), Is.LessThan(Peak("golf-ball.csv")));
 
             // Issue 10's scene: x and y over time for several masses; heavier trails the sideways carry more.
-            ChartFiles.AssertPng(Path.Combine(dir, "xyz-carry-lift.png"), 1000, 560);
+            ChartFiles.AssertPng(Path.Combine(dir, "xyz-carry-lift.png"), 1000, SceneHeight("xyz-carry-lift"));
             Assert.That(stdout, Does.Contain("xyz-carry-lift").And.Contain("max x lag"));
             double Lag(string file)
             {
@@ -68,8 +82,8 @@ public class DemoCliTests
             Assert.That(code, Is.EqualTo(0), stderr);
             foreach (var scene in new[] { "experiment-1-boxes", "experiment-2-bottles", "offset-correction", "xyz-carry-lift" })
             {
-                ChartFiles.AssertPng(Path.Combine(dir, scene + ".png"), 1000, 560);
-                ChartFiles.AssertSvg(Path.Combine(dir, scene + ".svg"), 1000, 560);
+                ChartFiles.AssertPng(Path.Combine(dir, scene + ".png"), 1000, SceneHeight(scene));
+                ChartFiles.AssertSvg(Path.Combine(dir, scene + ".svg"), 1000, SceneHeight(scene));
             }
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
@@ -86,7 +100,7 @@ public class DemoCliTests
             var (code, stdout, stderr) = Demo("--out", dir, "--trace", Path.Combine(RepositoryRoot.Shared, "data", "mocap-hand-100hz.csv"));
             Assert.That(code, Is.EqualTo(0), stderr);
             Assert.That(stdout, Does.Contain("recorded-hand"));
-            ChartFiles.AssertPng(Path.Combine(dir, "recorded-hand.png"), 1000, 560);
+            ChartFiles.AssertPng(Path.Combine(dir, "recorded-hand.png"), 1000, SceneHeight("recorded-hand"));
             Assert.That(File.ReadLines(Path.Combine(dir, "recorded-hand", "box-b.csv")).Count(), Is.GreaterThan(60 * 90));
         }
         finally { if (Directory.Exists(dir)) Directory.Delete(dir, true); }
@@ -101,7 +115,7 @@ public class DemoCliTests
         {
             string trace = Path.Combine(dir, "bad.csv");
             File.WriteAllText(trace, "t,hand_y\n0,1\n0.1,oops\n");
-            var (code, _, stderr) = Demo("--out", dir, "--trace", trace);
+            var (code, _, stderr) = Demo("--out", Path.Combine(dir, "out"), "--trace", trace);
             Assert.That(code, Is.EqualTo(2));
             Assert.That(stderr.Trim(), Does.Contain("bad.csv:3:").And.Not.Contain("\n"));
         }

@@ -126,7 +126,7 @@ public class EvaluationCliTests : CliTestFolder
         var (code, stderr, _) = Score("--responses", responses, "--out", Out);
         Assert.That(code, Is.EqualTo(2));
         Assert.That(stderr.TrimEnd('\n').Split('\n'), Has.Length.EqualTo(1), "one line: " + stderr);
-        Assert.That(stderr, Does.StartWith($"{responses}:{line}: "));
+        Assert.That(stderr, Does.StartWith($"pseudohaptic score: {responses}:{line}: "));
         Assert.That(stderr, Does.Contain(reason));
         Assert.That(File.ReadAllText(Out), Is.EqualTo("previous output\n"), "an existing output is left as it was");
         File.Delete(Out);
@@ -196,7 +196,7 @@ public class EvaluationCliTests : CliTestFolder
             if (result.code == 2)
             {
                 refused++;
-                Assert.That(result.stderr, Does.StartWith(responses + ":"), $"round {round}");
+                Assert.That(result.stderr, Does.StartWith("pseudohaptic score: " + responses + ":"), $"round {round}");
                 Assert.That(result.stderr.TrimEnd('\n').Split('\n'), Has.Length.EqualTo(1), $"round {round}");
                 Assert.That(File.Exists(Out), Is.False, $"round {round}: nothing written");
             }
@@ -327,7 +327,7 @@ public class EvaluationCliTests : CliTestFolder
         var (code, stderr, _) = Report("--scores", scores, "--out", dir);
         Assert.That(code, Is.EqualTo(2));
         Assert.That(stderr.TrimEnd('\n').Split('\n'), Has.Length.EqualTo(1));
-        Assert.That(stderr, Does.StartWith($"{scores}:{line}: ").And.Contain(reason));
+        Assert.That(stderr, Does.StartWith($"pseudohaptic report: {scores}:{line}: ").And.Contain(reason));
         Assert.That(Directory.Exists(dir), Is.False, "nothing written");
     }
 
@@ -339,7 +339,7 @@ public class EvaluationCliTests : CliTestFolder
         string dir = Path.Combine(_dir, "report");
         var (code, stderr, _) = Report("--scores", scores, "--out", dir, "--responses", responses);
         Assert.That(code, Is.EqualTo(2));
-        Assert.That(stderr, Does.StartWith($"{responses}:2: "));
+        Assert.That(stderr, Does.StartWith($"pseudohaptic report: {responses}:2: "));
         Assert.That(Directory.Exists(dir), Is.False);
     }
 

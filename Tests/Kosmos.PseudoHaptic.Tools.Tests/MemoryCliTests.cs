@@ -80,24 +80,49 @@ public class MemoryCliTests
     }
 
     [Test]
-    public void ScoreReadsAtMostItsRowLimit()
+    public void ScoreAndReportStreamAStudyOfTenThousandParticipantsInBoundedMemory()
     {
-        int max = Kosmos.PseudoHaptic.Cli.EvaluationInputsLimits.MaxRows;
+        // 210,000 answers (the old row limit was 100,000): score keeps a sheet per participant, not the rows.
         string responses = Path.Combine(_dir, "R.csv");
         using (var w = new StreamWriter(responses))
         {
             w.Write("participant,questionnaire,item,response\n");
-            for (int i = 0; i < max; i++) w.Write($"P{i / 10},immersion,{i % 10 + 1},{i % 5 + 1}\n");
+            for (int p = 0; p < 10_000; p++)
+            {
+                for (int i = 1; i <= 10; i++) w.Write($"P{p},weight-detection,{i},{(p + i) % 5 + 1}\n");
+                for (int i = 1; i <= 10; i++) w.Write($"P{p},immersion,{i},{(3 * p + i) % 5 + 1}\n");
+                w.Write($"P{p},self-assessment,1,{p % 10 + 1}\n");
+            }
         }
-        var ok = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S.csv"));
-        Assert.That(ok.Code, Is.EqualTo(0), ok.Stderr);
-        File.AppendAllText(responses, $"Q,immersion,1,1\n");
+        string scores = Path.Combine(_dir, "S.csv");
+        var score = Run("score", "--responses", responses, "--out", scores);
+        Assert.That(score.Code, Is.EqualTo(0), score.Stderr);
+        Assert.That(score.Stdout, Does.Contain("30000 scores of 10000 participants from 210000 answers"));
+        Assert.That(score.PeakKb, Is.LessThan(200_000), "score's peak resident memory, kB");
+        var report = Run("report", "--scores", scores, "--out", Path.Combine(_dir, "report"), "--responses", responses);
+        Assert.That(report.Code, Is.EqualTo(0), report.Stderr);
+        Assert.That(report.PeakKb, Is.LessThan(200_000), "report's peak resident memory, kB");
+        TestContext.WriteLine($"score {score.PeakKb} kB, report {report.PeakKb} kB peak");
+        Directory.Delete(Path.Combine(_dir, "report"), true);
+        File.Delete(responses);
+        File.Delete(scores);
+    }
+
+    [Test]
+    public void ScoreRefusesTheParticipantBeyondItsBoundNamingTheLine()
+    {
+        int max = Kosmos.PseudoHaptic.Cli.EvaluationInputsLimits.MaxParticipants;
+        string responses = Path.Combine(_dir, "R.csv");
+        using (var w = new StreamWriter(responses))
+        {
+            w.Write("participant,questionnaire,item,response\n");
+            for (int i = 0; i <= max; i++) w.Write($"P{i},self-assessment,1,{i % 10 + 1}\n");
+        }
         var refused = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S2.csv"));
         Assert.That(refused.Code, Is.EqualTo(2));
-        Assert.That(refused.Stderr, Does.Contain($"R.csv:{max + 2}: more than {max} rows"));
+        Assert.That(refused.Stderr, Does.Contain($"R.csv:{max + 2}: more than {max} participants"));
         Assert.That(File.Exists(Path.Combine(_dir, "S2.csv")), Is.False);
         File.Delete(responses);
-        File.Delete(Path.Combine(_dir, "S.csv"));
     }
 
     [Test]
@@ -112,7 +137,7 @@ public class MemoryCliTests
         }
         var r = Run("score", "--responses", responses, "--out", Path.Combine(_dir, "S.csv"));
         Assert.That(r.Code, Is.EqualTo(2));
-        Assert.That(r.Stderr, Does.Contain("R.csv:8: more than 6400000 characters of data"));
+        Assert.That(r.Stderr, Does.Contain("R.csv:8: the participants' and conditions' names add up to more than 6400000 characters"));
         File.Delete(responses);
     }
 

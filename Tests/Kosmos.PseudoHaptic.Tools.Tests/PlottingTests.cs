@@ -172,19 +172,4 @@ public sealed class PlottingTests
         Assert.That(major.Select(t => t.Position), Is.EqualTo(new[] { 1, Math.Log10(20), Math.Log10(50), 2, Math.Log10(200), Math.Log10(500), 3 }).Within(1e-12));
         Assert.That(ticks.Count(t => !t.IsMajor), Is.EqualTo(12), "3, 4, 6, 7, 8, 9 of two decades");
     }
-
-    [Test]
-    public void TakeSvgFlag_RemovesTheFlagOnlyWhereAnOptionNameStands()
-    {
-        Assert.That(Charts.TakeSvgFlag(new[] { "--out", "d", "--svg" }, out bool svg), Is.EqualTo(new[] { "--out", "d" }));
-        Assert.That(svg, Is.True);
-        Assert.That(Charts.TakeSvgFlag(new[] { "--svg", "--out", "d" }, out svg), Is.EqualTo(new[] { "--out", "d" }));
-        Assert.That(svg, Is.True);
-        Assert.That(Charts.TakeSvgFlag(new[] { "--out", "--svg" }, out svg), Is.EqualTo(new[] { "--out", "--svg" }), "a folder named --svg");
-        Assert.That(svg, Is.False);
-        Assert.That(Charts.TakeSvgFlag(Array.Empty<string>(), out svg), Is.Empty);
-        Assert.That(svg, Is.False);
-        Assert.That(() => Charts.TakeSvgFlag(new[] { "--svg", "--svg" }, out _),
-            Throws.InstanceOf<CliException>().With.Message.Contains("--svg is given twice"));
-    }
 }

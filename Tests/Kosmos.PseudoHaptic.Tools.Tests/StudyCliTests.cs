@@ -118,7 +118,7 @@ public class StudyCliTests : CliTestFolder
         string outDir = Path.Combine(_dir, "out");
         var (code, stderr, stdout) = Psychometric("--trials", trials, "--out", outDir);
         Assert.That(code, Is.EqualTo(2));
-        Assert.That(stderr, Does.StartWith(Path.Combine(_dir, expected)));
+        Assert.That(stderr, Does.StartWith("pseudohaptic psychometric: " + Path.Combine(_dir, expected)));
         Assert.That(stderr.TrimEnd('\n').Split('\n'), Has.Length.EqualTo(1), "one line");
         Assert.That(Directory.Exists(outDir), Is.False, "nothing written");
         Assert.That(Directory.GetFileSystemEntries(_dir).Select(Path.GetFileName), Is.EqualTo(new[] { "T.csv" }));
@@ -211,7 +211,7 @@ public class StudyCliTests : CliTestFolder
         string scores = Write("S.csv", text);
         var (code, stderr, _) = Compare("--scores", scores, "--out", Path.Combine(_dir, "out"));
         Assert.That(code, Is.EqualTo(2));
-        Assert.That(stderr, Does.StartWith(Path.Combine(_dir, expected)));
+        Assert.That(stderr, Does.StartWith("pseudohaptic compare: " + Path.Combine(_dir, expected)));
         Assert.That(Directory.Exists(Path.Combine(_dir, "out")), Is.False);
     }
 

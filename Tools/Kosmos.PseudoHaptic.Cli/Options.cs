@@ -1,30 +1,39 @@
-using System.Globalization;
+using System.CommandLine;
 
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// "--name value" options after a command. Unknown or repeated options and missing values are errors that
-/// name the option.
+/// A command's options as parsed by System.CommandLine (unknown and repeated options and missing values are
+/// refused by the parser before a command runs), read by name. Numbers are parsed here, so a bad one names
+/// its option: "option --mass-kg: cannot parse 'x' as a number".
 /// </summary>
 public sealed class Options
 {
-    readonly Dictionary<string, string> _values = new(StringComparer.Ordinal);
+    readonly ParseResult _result;
+    readonly Command _command;
 
-    public Options(string[] args, params string[] known)
+    public Options(ParseResult result, Command command)
     {
-        for (int i = 0; i < args.Length; i++)
-        {
-            string a = args[i];
-            if (!a.StartsWith("--", StringComparison.Ordinal) || Array.IndexOf(known, a) < 0)
-                throw new CliException($"unknown option '{a}'; expected {string.Join(", ", known)}");
-            if (i + 1 >= args.Length)
-                throw new CliException($"option {a} needs a value");
-            if (!_values.TryAdd(a, args[++i]))
-                throw new CliException($"option {a} is given twice");
-        }
+        _result = result;
+        _command = command;
     }
 
-    public string? Get(string name) => _values.TryGetValue(name, out var v) ? v : null;
+    Option Find(string name) => _command.Options.FirstOrDefault(o => o.Name == name)
+        ?? throw new InvalidOperationException($"{_command.Name} has no option {name}");
+
+    /// <summary>The option's text, or null when it was not given.</summary>
+    public string? Get(string name)
+    {
+        var option = Find(name);
+        var result = _result.GetResult(option);
+        return result == null || result.Implicit ? null : _result.GetValue<string>(name);
+    }
+
+    /// <summary>A positional argument's text (its default when not given).</summary>
+    public string? Argument(string name) => _result.GetValue<string>(name);
+
+    /// <summary>Whether the switch (an option without a value) was given.</summary>
+    public bool Flag(string name) => _result.GetResult(Find(name)) is { Implicit: false };
 
     public string Require(string name) => Get(name) ?? throw new CliException($"option {name} is required");
 
@@ -33,7 +42,7 @@ public sealed class Options
         var text = Get(name);
         if (text == null) return null;
         if (!NumberText.TryParse(text, out double v))
-            throw new CliException($"option {name}: cannot parse '{text}' as a number");
+            throw new CliException($"option {name}: cannot parse '{Files.Messages.OneLine(text)}' as a number");
         return v;
     }
 }

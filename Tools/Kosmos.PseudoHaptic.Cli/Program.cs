@@ -1,31 +1,20 @@
+using System.CommandLine;
+using System.CommandLine.Help;
+using System.CommandLine.Invocation;
 using Kosmos.PseudoHaptic.Cli;
-using Kosmos.PseudoHaptic.Cli.Commands;
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 
-// pseudohaptic: headless tools around the weight solver. Each command returns its exit code; contract
-// errors are one line on stderr and exit code 2.
+// pseudohaptic: headless tools around the weight solver. Each command returns its exit code; errors are one
+// line on stderr, "pseudohaptic COMMAND: …", exit code 2 for usage and input errors, 1 for I/O.
 return Cli.Run(args);
 
 namespace Kosmos.PseudoHaptic.Cli
 {
     public static class Cli
     {
-        public const string Usage = """
-            pseudohaptic — pseudo-haptic weight (Son et al., Electronics 2022) without a headset
-
-              demo   [--out DIR] [--trace FILE] [--svg]
-                                                     simulate the paper's scenes, write CSV + PNG (+ SVG), print a summary
-              replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--grab-offset D] [--break-away D]
-              score  --responses R.csv --out S.csv [--questionnaires DIR]
-                                                     score questionnaire responses
-              report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]
-                                                     tables, statistics and charts of scores
-              psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S]
-                                                     fit 2AFC answers: PSE, JND, Weber fraction, bootstrap CIs, charts
-              compare --scores S.csv --out DIR       paired tests between conditions (t, Wilcoxon, Friedman, Holm)
-              accuracy [--trace FILE] [--lifts all|none] [--mass-kg M] [--long-minutes N] [--csv OUT.csv] [--costs BENCH_RESULTS --chart OUT.png [--svg]]
-                                                     accuracy of each estimator on Quest-like input (accuracy-vs-time.md)
-            """;
+        /// <summary>Exit codes, as README "Exit codes" documents them.</summary>
+        public const int Success = 0, InputOutputError = 1, UsageError = 2;
 
         /// <summary>
         /// Set to a file name, the process writes its peak resident memory there when it ends (Linux: VmHWM of
@@ -33,38 +22,51 @@ namespace Kosmos.PseudoHaptic.Cli
         /// </summary>
         public const string PeakMemoryVariable = "PSEUDOHAPTIC_PEAK_RSS_FILE";
 
+        /// <summary>Every command, in the order help lists them (made anew for each run: a command belongs to one root).</summary>
+        public static IReadOnlyList<CliCommand> Define() => new[]
+        {
+            Commands.DemoCommand.Define(),
+            Commands.ReplayCommand.Define(),
+            Commands.AccuracyCommand.Define(),
+            ScoreCommand.Define(),
+            ReportCommand.Define(),
+            PsychometricCommand.Define(),
+            CompareCommand.Define(),
+            CompletionCommand.Define(),
+        };
+
         public static int Run(string[] args)
         {
             PeakMemory.ReportAtExit(Environment.GetEnvironmentVariable(PeakMemoryVariable));
-            if (args.Length == 0 || args[0] is "-h" or "--help" or "help")
+            var root = Root(Define());
+            // A path that starts with '@' is a path, not a response file.
+            var result = root.Parse(args, new ParserConfiguration { ResponseFileTokenReplacer = null });
+            string who = result.CommandResult.Command is RootCommand ? "pseudohaptic" : "pseudohaptic " + result.CommandResult.Command.Name;
+            if (args.Length == 0)
             {
-                Console.Out.WriteLine(Usage);
-                return args.Length == 0 ? 2 : 0;
+                // No command: the overview, on standard error since nothing was done (exit 2).
+                result = root.Parse(new[] { "--help" });
+                result.Invoke(new InvocationConfiguration { Output = Console.Error, Error = Console.Error });
+                return UsageError;
             }
-            var rest = args[1..];
+            if (result.Errors.Count > 0 && result.Action is ParseErrorAction or null)
+            {
+                Console.Error.WriteLine($"{who}: {Messages.OneLine(ParseErrors.Describe(result))} (see '{who} --help')");
+                return UsageError;
+            }
             try
             {
-                return args[0] switch
-                {
-                    "demo" => DemoCommand.Run(rest),
-                    "replay" => ReplayCommand.Run(rest),
-                    "score" => ScoreCommand.Run(rest),
-                    "report" => ReportCommand.Run(rest),
-                    "accuracy" => AccuracyCommand.Run(rest),
-                    "psychometric" => PsychometricCommand.Run(rest),
-                    "compare" => CompareCommand.Run(rest),
-                    _ => throw new CliException($"unknown command '{args[0]}'; expected demo, replay, score, report, psychometric, compare or accuracy"),
-                };
+                return result.Invoke(new InvocationConfiguration { Output = Console.Out, Error = Console.Error, EnableDefaultExceptionHandler = false });
             }
             catch (CliException e)
             {
-                Console.Error.WriteLine("pseudohaptic: " + Messages.OneLine(e.Message));
+                Console.Error.WriteLine($"{who}: {Messages.OneLine(e.Message)}");
                 return e.ExitCode;
             }
             catch (Kosmos.PseudoHaptic.Evaluation.EvaluationFormatException e)
             {
-                Console.Error.WriteLine("pseudohaptic: " + Messages.OneLine(e.Message));
-                return 2;
+                Console.Error.WriteLine($"{who}: {Messages.OneLine(e.Message)}");
+                return UsageError;
             }
             catch (OperationCanceledException)
             {
@@ -72,9 +74,19 @@ namespace Kosmos.PseudoHaptic.Cli
             }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
-                Console.Error.WriteLine("pseudohaptic: " + Messages.Reason(e));
-                return 1;
+                Console.Error.WriteLine($"{who}: {Messages.Reason(e)}");
+                return InputOutputError;
             }
+        }
+
+        /// <summary>The tool's root command: every command, --help, --version and the [suggest] directive completion uses.</summary>
+        public static RootCommand Root(IReadOnlyList<CliCommand> commands)
+        {
+            var root = new RootCommand("pseudohaptic: pseudo-haptic weight (Son et al., Electronics 2022) without a headset. Run 'pseudohaptic COMMAND --help' for a command's options, units, defaults and examples.");
+            foreach (var c in commands) root.Subcommands.Add(c.Command);
+            var help = root.Options.OfType<HelpOption>().Single();
+            if (help.Action is HelpAction standard) help.Action = new HelpWithExamples(standard, commands);
+            return root;
         }
     }
 

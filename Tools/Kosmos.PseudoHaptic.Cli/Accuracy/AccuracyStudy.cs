@@ -3,9 +3,9 @@ using Kosmos.PseudoHaptic.Simulation;
 namespace Kosmos.PseudoHaptic.Cli.Accuracy;
 
 /// <summary>
-/// Runs the study: every configuration on every source's six degraded renders against its reference, the
-/// still-hand renders for creep, and the long run for precision and integration drift. Deterministic: the
-/// renders are seeded, the work is sequential, nothing depends on the clock.
+/// Runs the study: every configuration on every source's seeded degraded renders against its reference, the
+/// still-hand renders for creep, and the long runs for precision and integration drift. Deterministic: the
+/// renders are seeded by their hand, results are kept in render order, nothing depends on the clock.
 /// </summary>
 public static class AccuracyStudy
 {
@@ -17,11 +17,10 @@ public static class AccuracyStudy
     {
         var configs = s.Configs ?? AccuracyConfig.All(s.Model, s.StandardSpeed);
         var perSource = new List<SourceResult>();
-        for (int si = 0; si < s.Sources.Count; si++)
+        foreach (var source in s.Sources)
         {
-            var source = s.Sources[si];
-            progress.WriteLine($"accuracy: {source.Name} ({source.Description})");
-            var renders = Degradation.Renders(source.Hand, 1000 * (si + 1));
+            progress.WriteLine($"accuracy: {source.Name} ({source.Description}), {Degradation.RenderCount} seeded renders");
+            var renders = Degradation.Renders(source.Hand);
             var referenceFrames = Degradation.Reference(source.Hand);
             var references = new Dictionary<WeightProfile, double[]>();
             foreach (var config in configs)
@@ -32,24 +31,27 @@ public static class AccuracyStudy
                     reference = MillisecondGrid.Hold(referenceFrames, y, MillisecondGrid.Length(referenceFrames));
                     references.Add(config.Reference, reference);
                 }
-                var runs = new List<(string, RunMetrics)>();
-                foreach (var render in renders)
+                // Renders are independent: measured on both cores, kept in render order (the result does not depend on the scheduling).
+                var runs = new (string, RunMetrics)[renders.Count];
+                Parallel.For(0, renders.Count, new ParallelOptions { MaxDegreeOfParallelism = 2 }, k =>
                 {
+                    var render = renders[k];
                     var y = config.Run(render.Frames);
                     var grid = MillisecondGrid.Hold(render.Frames, y, Math.Min(reference.Length, MillisecondGrid.Length(render.Frames)));
-                    runs.Add((render.Label, RunMetrics.Measure(grid, reference, Degradation.Latency)));
-                }
+                    runs[k] = (render.Label, RunMetrics.Measure(grid, reference, Degradation.Latency));
+                });
                 perSource.Add(new SourceResult(config.Key, source.Name, runs));
             }
         }
 
         progress.WriteLine("accuracy: still hand with jitter (creep)");
         var rest = new List<RestResult>();
-        var restRenders = Degradation.Renders(RestMetrics.Hand(), 99_000);
+        var restRenders = Degradation.Renders(RestMetrics.Hand());
         foreach (var config in configs)
         {
-            var runs = new List<(string, RestMetrics)>();
-            foreach (var render in restRenders) runs.Add((render.Label, RestMetrics.Measure(render.Frames, config.Run(render.Frames))));
+            var runs = new (string, RestMetrics)[restRenders.Count];
+            Parallel.For(0, restRenders.Count, new ParallelOptions { MaxDegreeOfParallelism = 2 },
+                k => runs[k] = (restRenders[k].Label, RestMetrics.Measure(restRenders[k].Frames, config.Run(restRenders[k].Frames))));
             rest.Add(new RestResult(config.Key, runs));
         }
 
@@ -58,14 +60,16 @@ public static class AccuracyStudy
         {
             var mine = perSource.Where(r => r.Config == config.Key).ToList();
             var r = rest.First(x => x.Config == config.Key);
-            var lags = mine.Select(m => m.LagMs).Where(double.IsFinite).ToList();
+            // Render k's figure is the mean over the sources of their render k; the interval is over the renders.
+            Interval Across(Func<RunMetrics, double> figure) => mine.Count == 0
+                ? Interval.Of(Array.Empty<double>())
+                : Interval.Of(Enumerable.Range(0, Degradation.RenderCount).Select(k => mine.Select(m => figure(m.Runs[k].Metrics)).Where(double.IsFinite).DefaultIfEmpty(double.NaN).Average()));
             summary.Add(new SummaryRow(config.Key, config.Group,
-                mine.Count > 0 ? mine.Average(m => m.RmsMm) : double.NaN,
-                mine.Count > 0 ? mine.Average(m => m.RawRmsMm) : double.NaN,
+                Across(m => m.RmsMm), Across(m => m.RawRmsMm),
                 mine.Count > 0 ? mine.Max(m => m.MaxMm) : double.NaN,
-                lags.Count > 0 ? lags.Average() : double.NaN,
+                Across(m => m.LagMs),
                 mine.Any(m => m.LagWidened),
-                r.CreepMm, r.RestMm));
+                r.Creep, r.CreepMaxMm, r.Rest));
         }
 
         string? longDescription = null;
@@ -73,7 +77,7 @@ public static class AccuracyStudy
         if (s.LongRunMinutes > 0)
         {
             progress.WriteLine($"accuracy: long run, {s.LongRunMinutes:0.##} min");
-            (longDescription, longRun) = LongRunStudy.Run(s.Model, s.StandardSpeed, s.LongRunMinutes);
+            (longDescription, longRun) = LongRunStudy.Run(s.Model, s.StandardSpeed, s.LongRunMinutes, progress);
         }
 
         double gain = new WeightSolver(s.Model, NamedProfiles.Paper, s.StandardSpeed).Gain;

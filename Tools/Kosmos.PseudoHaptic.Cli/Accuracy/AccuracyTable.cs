@@ -8,23 +8,24 @@ namespace Kosmos.PseudoHaptic.Cli.Accuracy;
 /// </summary>
 public static class AccuracyTable
 {
-    public static readonly string[] SummaryColumns = { "config", "rms_mm", "raw_mm", "max_mm", "lag_ms", "added_ms", "creep_mm", "rest_mm" };
-    public static readonly string[] SourceColumns = { "config", "rms_mm", "raw_mm", "max_mm", "lag_ms", "added_ms" };
-    public static readonly string[] LongRunColumns = { "scheme", "end_mm", "max_mm", "what" };
+    public static readonly string[] SummaryColumns = { "config", "rms_mm", "rms_ci", "raw_mm", "max_mm", "lag_ms", "added_ms", "added_ci", "creep_mm", "rest_mm" };
+    public static readonly string[] SourceColumns = { "config", "rms_mm", "rms_ci", "raw_mm", "max_mm", "lag_ms", "added_ms", "added_ci" };
+    public static readonly string[] LongRunColumns = { "scheme", "end_mm", "end_ci", "max_mm", "what" };
 
     public const string Columns =
-        "rms_mm   RMS of object − reference, the reference delayed by the headset's 45 ms (what the pipeline adds)\n" +
+        "rms_mm   RMS of object − reference, the reference delayed by the headset's 45 ms (what the pipeline adds); every figure is a mean over the seeded renders\n" +
+        "rms_ci   half-width of the 95 % confidence interval of rms_mm (Student's t over the renders); added_ci, end_ci likewise\n" +
         "raw_mm   RMS of object − reference as it is, without delay (what the user sees, headset latency included)\n" +
         "max_mm   largest |object − delayed reference| (the worst offset error)\n" +
         "lag_ms   lag of the object behind the undelayed reference, by cross-correlation of object velocity (±200 ms, 1 ms steps; * peak beyond, searched ±1 s)\n" +
         "added_ms lag_ms − the headset's 45 ms: the 30 Hz pose hold (~17 ms), the frame hold (~4–7 ms) and the estimator's own lag\n" +
-        "creep_mm how far the object's mean height moves in 10 s of a still hand with jitter (worst render)\n" +
+        "creep_mm how far the object's mean height moves in 10 s of a still hand with jitter\n" +
         "rest_mm  RMS of the object's height about its mean with a still hand (jitter that reaches the object)";
 
     public static void Write(TextWriter w, AccuracyReport r)
     {
         w.WriteLine($"pseudohaptic accuracy: {F(r.MassKg, 3)} kg object, paper profile gain G = {F(r.Gain, 3)}, standard speed {F(r.StandardSpeed, 2)} m/s");
-        w.WriteLine($"degraded: {Degradation.PoseRate:0} Hz poses, {Degradation.Latency * 1000:0} ms late, jitter {string.Join(" and ", Degradation.JitterMm.Select(j => F(j, 0)))} mm (sd), held over {string.Join("/", Degradation.FrameRates.Select(f => F(f, 0)))} Hz frames: {Degradation.FrameRates.Length * Degradation.JitterMm.Length} renders per source");
+        w.WriteLine($"degraded: {Degradation.PoseRate:0} Hz poses, {Degradation.Latency * 1000:0} ms late, jitter {string.Join(" and ", Degradation.JitterMm.Select(j => F(j, 0)))} mm (sd), held over {string.Join("/", Degradation.FrameRates.Select(f => F(f, 0)))} Hz frames, each {Degradation.Replicates} times: {Degradation.RenderCount} seeded renders per source");
         w.WriteLine("reference: the noise-free hand, a pose every 1 ms, no latency, through the paper profile without deadband or filter (estimators) or the gain-only profile (integration)");
         w.WriteLine("sources:");
         foreach (var s in r.Sources) w.WriteLine($"  {s.Name,-14} {s.Description}");
@@ -33,7 +34,7 @@ public static class AccuracyTable
         foreach (var line in Columns.Split('\n')) w.WriteLine("  " + line);
         w.WriteLine();
 
-        w.WriteLine($"== summary: mean over {r.Sources.Count} source(s) (max_mm, creep_mm: the worst); default: {EstimatorCatalog.Default} ==");
+        w.WriteLine($"== summary: mean over {r.Sources.Count} source(s) and {Degradation.RenderCount} renders (max_mm: the worst); default: {EstimatorCatalog.Default} ==");
         WriteSummary(w, r.Summary);
 
         foreach (var source in r.Sources)
@@ -48,7 +49,7 @@ public static class AccuracyTable
                 string g = r.Configs.First(c => c.Key == row.Config).Group;
                 if (group != null && g != group) table.Add(Array.Empty<string>());
                 group = g;
-                table.Add(new[] { row.Config, F(row.RmsMm, 2), F(row.RawRmsMm, 2), F(row.MaxMm, 2), Lag(row.LagMs, row.LagWidened), F(row.LagMs - Degradation.Latency * 1000, 0) });
+                table.Add(new[] { row.Config, F(row.RmsMm, 2), Pm(row.Rms.HalfWidth, 2), F(row.RawRmsMm, 2), F(row.MaxMm, 2), Lag(row.LagMs, row.LagWidened), F(row.LagMs - Degradation.Latency * 1000, 0), Pm(row.Lag.HalfWidth, 0) });
             }
             Align(w, table);
         }
@@ -58,7 +59,7 @@ public static class AccuracyTable
             w.WriteLine();
             w.WriteLine($"== long run: {r.LongRunDescription} ==");
             var table = new List<string[]> { LongRunColumns };
-            foreach (var row in r.LongRun) table.Add(new[] { row.Scheme, Small(row.EndErrorMm), Small(row.MaxErrorMm), row.Description });
+            foreach (var row in r.LongRun) table.Add(new[] { row.Scheme, Small(row.EndErrorMm), "±" + Small(row.EndError.HalfWidth), Small(row.MaxErrorMm), row.Description });
             Align(w, table);
         }
     }
@@ -71,7 +72,7 @@ public static class AccuracyTable
         {
             if (group != null && row.Group != group) table.Add(Array.Empty<string>());
             group = row.Group;
-            table.Add(new[] { row.Config, F(row.RmsMm, 2), F(row.RawRmsMm, 2), F(row.MaxMm, 2), Lag(row.LagMs, row.LagWidened), F(row.AddedLagMs, 0), F(row.CreepMm, 2), F(row.RestMm, 2) });
+            table.Add(new[] { row.Config, F(row.RmsMm, 2), Pm(row.Rms.HalfWidth, 2), F(row.RawRmsMm, 2), F(row.MaxMm, 2), Lag(row.LagMs, row.LagWidened), F(row.AddedLagMs, 0), Pm(row.Lag.HalfWidth, 0), F(row.CreepMm, 2), F(row.RestMm, 2) });
         }
         Align(w, table);
     }
@@ -79,22 +80,22 @@ public static class AccuracyTable
     /// <summary>Every figure as CSV: summary rows, then one row per source, then one per render and one per still-hand render.</summary>
     public static void WriteCsv(TextWriter w, AccuracyReport r)
     {
-        w.WriteLine("kind,config,group,source,render,rms_mm,raw_mm,max_mm,lag_ms,added_ms,creep_mm,rest_mm");
+        w.WriteLine("kind,config,group,source,render,rms_mm,rms_lo,rms_hi,raw_mm,max_mm,lag_ms,added_ms,added_lo,added_hi,creep_mm,creep_lo,creep_hi,rest_mm");
         string Group(string config) => r.Configs.First(c => c.Key == config).Group;
         foreach (var s in r.Summary)
-            w.WriteLine(string.Join(',', "summary", s.Config, s.Group, "", "", N(s.RmsMm), N(s.RawRmsMm), N(s.MaxMm), N(s.LagMs), N(s.AddedLagMs), N(s.CreepMm), N(s.RestMm)));
+            w.WriteLine(string.Join(',', "summary", s.Config, s.Group, "", "", N(s.RmsMm), N(s.Rms.Low), N(s.Rms.High), N(s.RawRmsMm), N(s.MaxMm), N(s.LagMs), N(s.AddedLagMs), N(s.AddedLag.Low), N(s.AddedLag.High), N(s.CreepMm), N(s.Creep.Low), N(s.Creep.High), N(s.RestMm)));
+        double latency = Degradation.Latency * 1000;
         foreach (var s in r.PerSource)
-            w.WriteLine(string.Join(',', "source", s.Config, Group(s.Config), s.Source, "", N(s.RmsMm), N(s.RawRmsMm), N(s.MaxMm), N(s.LagMs), N(s.LagMs - Degradation.Latency * 1000), "", ""));
+            w.WriteLine(string.Join(',', "source", s.Config, Group(s.Config), s.Source, "", N(s.RmsMm), N(s.Rms.Low), N(s.Rms.High), N(s.RawRmsMm), N(s.MaxMm), N(s.LagMs), N(s.LagMs - latency), N(s.Lag.Low - latency), N(s.Lag.High - latency), "", "", "", ""));
         foreach (var s in r.PerSource)
             foreach (var (render, m) in s.Runs)
-            {
-                double rms = 1000 * Math.Sqrt(m.SumSquares / Math.Max(1, m.Count)), raw = 1000 * Math.Sqrt(m.RawSumSquares / Math.Max(1, m.Count));
-                w.WriteLine(string.Join(',', "run", s.Config, Group(s.Config), s.Source, render, N(rms), N(raw), N(1000 * m.MaxAbs), N(m.LagMs), N(m.LagMs - Degradation.Latency * 1000), "", ""));
-            }
+                w.WriteLine(string.Join(',', "run", s.Config, Group(s.Config), s.Source, render, N(m.RmsMm), "", "", N(m.RawRmsMm), N(1000 * m.MaxAbs), N(m.LagMs), N(m.LagMs - latency), "", "", "", "", "", ""));
         foreach (var s in r.Rest)
             foreach (var (render, m) in s.Runs)
-                w.WriteLine(string.Join(',', "rest", s.Config, Group(s.Config), "still", render, "", "", "", "", "", N(1000 * m.CreepM), N(1000 * Math.Sqrt(m.RestSumSquares / Math.Max(1, m.RestCount)))));
+                w.WriteLine(string.Join(',', "rest", s.Config, Group(s.Config), "still", render, "", "", "", "", "", "", "", "", "", N(1000 * m.CreepM), "", "", N(1000 * Math.Sqrt(m.RestSumSquares / Math.Max(1, m.RestCount)))));
     }
+
+    static string Pm(double halfWidth, int decimals) => double.IsFinite(halfWidth) ? "±" + F(halfWidth, decimals) : "";
 
     static string Lag(double ms, bool widened) => double.IsFinite(ms) ? F(ms, 0) + (widened ? "*" : "") : "n/a";
 

@@ -14,7 +14,7 @@ public static class ParetoChart
 {
     const int Width = 1000, Height = 600, Gap = 7;
 
-    sealed record Point(string Key, double Ns, double RmsMm, string Label, int Group);
+    sealed record Point(string Key, double Ns, double RmsMm, double Low, double High, string Label, int Group);
 
     public static void Save(string path, AccuracyReport report, IReadOnlyDictionary<string, double> costs, bool svg)
     {
@@ -31,7 +31,7 @@ public static class ParetoChart
             if (row == null || !costs.TryGetValue(key, out double ns) || !(ns > 0) || !double.IsFinite(row.RmsMm)) continue;
             string lag = row.AddedLagMs.ToString("+0;-0;0", CultureInfo.InvariantCulture) + (row.LagWidened ? "*" : "");
             int group = key == EstimatorCatalog.Default ? 1 : key == EstimatorCatalog.PaperLiteral ? 2 : 0;
-            points.Add(new Point(key, ns, row.RmsMm, $"{key} {lag} ms", group));
+            points.Add(new Point(key, ns, row.RmsMm, row.Rms.Low, row.Rms.High, $"{key} {lag} ms", group));
         }
         if (points.Count == 0) throw new CliException("option --costs: none of the estimators has a benchmark figure; run the benchmarks first");
 
@@ -48,12 +48,15 @@ public static class ParetoChart
         var plot = Charts.Create(
             $"RMS error vs ns per update, {report.MassKg.ToString("0.###", CultureInfo.InvariantCulture)} kg, Quest-like input (label: added lag)",
             "ns per update (BenchmarkDotNet, log scale)",
-            "RMS error vs reference (mm)");
+            "RMS error vs reference (mm; bars: 95 % interval)");
         plot.Axes.Bottom.TickGenerator = Charts.LogTicks(xMin, xMax);
         for (int g = 0; g < groups.Length; g++)
         {
             var mine = points.Where(p => p.Group == g).ToList();
-            if (mine.Count > 0) Charts.Points(plot, mine.Select(p => Math.Log10(p.Ns)).ToList(), mine.Select(Y).ToList(), groups[g].Label, groups[g].Colour);
+            if (mine.Count == 0) continue;
+            var onScale = mine.Where(p => !Off(p)).ToList();
+            Charts.ErrorBars(plot, onScale.Select(p => Math.Log10(p.Ns)).ToList(), onScale.Select(p => p.Low).ToList(), onScale.Select(p => p.High).ToList(), groups[g].Colour);
+            Charts.Points(plot, mine.Select(p => Math.Log10(p.Ns)).ToList(), mine.Select(Y).ToList(), groups[g].Label, groups[g].Colour, shape: g);
         }
         plot.Legend.Alignment = ScottPlot.Alignment.LowerRight;
         plot.Axes.SetLimits(Math.Log10(xMin), Math.Log10(xMax), 0, top);

@@ -8,6 +8,12 @@ namespace Kosmos.PseudoHaptic.Cli.Accuracy;
 /// </summary>
 public readonly record struct RunMetrics(double SumSquares, double RawSumSquares, int Count, double MaxAbs, double LagMs, bool LagWidened)
 {
+    /// <summary>This run's RMS error against the delayed reference, mm.</summary>
+    public double RmsMm => 1000 * Math.Sqrt(SumSquares / Math.Max(1, Count));
+
+    /// <summary>This run's RMS error against the undelayed reference, mm.</summary>
+    public double RawRmsMm => 1000 * Math.Sqrt(RawSumSquares / Math.Max(1, Count));
+
     public static RunMetrics Measure(double[] degraded, double[] reference, double latencySeconds)
     {
         int n = Math.Min(degraded.Length, reference.Length);

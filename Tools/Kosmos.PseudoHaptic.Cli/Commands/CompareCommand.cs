@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Text;
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
@@ -14,12 +15,23 @@ namespace Kosmos.PseudoHaptic.Cli;
 /// </summary>
 public static class CompareCommand
 {
-    public const string Usage = "pseudohaptic compare --scores S.csv --out DIR";
     public const string Header = "questionnaire,condition_a,condition_b,n,mean_diff,diff_lo,diff_hi,t,t_p,w,w_p,dz,r,p_holm,method";
 
-    public static int Run(string[] args) => EvaluationInputs.Guard("compare", Usage, () =>
+    public static CliCommand Define() => new(
+        "compare",
+        "Compare conditions within participants per questionnaire: paired t, Wilcoxon signed-rank, the mean difference with its 95 % interval, d_z, r; with three or more conditions Friedman's test and Holm-corrected p (evaluation.md §8)",
+        Run,
+        new[]
+        {
+            "pseudohaptic compare --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/psychophysics.csv --out compare",
+        },
+        CliCommand.Value("--scores", "S.csv", "participant,condition,questionnaire,score (what score writes from answers with a condition column)", required: true),
+        CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true));
+
+    public static int Run(string[] args) => Cli.Run(args.Prepend("compare").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(args, "--scores", "--out");
         string scoresPath = o.Require("--scores");
         string outDir = o.Require("--out");
         var inputs = new[] { new NamedPath("--scores", scoresPath) };
@@ -33,7 +45,7 @@ public static class CompareCommand
         foreach (string q in rows.Select(r => r.Questionnaire).Distinct())
         {
             string name = $"chart{charts.Count + 1}-{PsychometricCommand.Slug(q)}.png";
-            files.Add((name, StudyCharts.PairedLines(q, scores.Where(s => s.Questionnaire == q).ToList(), rows.Where(r => r.Questionnaire == q && r.Pair != null).ToList())));
+            files.Add((name, StudyCharts.PairedLines(q, scores.Where(s => s.Questionnaire == q).ToList(), rows.Where(r => r.Questionnaire == q).ToList())));
             charts.Add((name, q));
         }
         files.Add(("report.md", utf8.GetBytes(Report(scoresPath, scores, rows, charts))));
@@ -52,7 +64,7 @@ public static class CompareCommand
                 Console.Out.WriteLine($"  {Messages.OneLine(r.Questionnaire)}: {Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)} = {G(r.Pair.MeanDifference)} (n = {r.Pair.N}), t p = {G(r.Pair.TP)}, Wilcoxon p = {G(r.Pair.WP)}, Holm p = {G(r.PHolm)}");
         }
         return 0;
-    });
+    }
 
     static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");
 

@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Plotting;
 using Kosmos.PseudoHaptic.Cli.Traces;
@@ -21,18 +22,32 @@ public static class DemoCommand
     sealed record Scene(string Slug, string Title, WeightProfile Profile, IReadOnlyList<Item> Items, TraceFrame[] Frames);
     sealed record Result(Scene Scene, Item Item, double Gain, double MaxOffset, double EndOffset, double[] ObjectY);
 
-    public static int Run(string[] args)
+    public static CliCommand Define() => new(
+        "demo",
+        "Simulate the paper's scenes without a headset (calibration, Experiment 1's boxes, Experiment 2's bottles, the offset correction, a 3D carry): a CSV per run, a PNG per scene, a summary table",
+        Run,
+        new[]
+        {
+            "pseudohaptic demo",
+            "pseudohaptic demo --out demo-lift --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --svg",
+        },
+        CliCommand.Value("--out", "DIR", $"the folder to write (default {DefaultOut}, whose parents it creates); it appears whole or not at all"),
+        CliCommand.Value("--trace", "FILE", "also replay this recorded hand (replay's CSV format, usable rows spanning at most 300 s), degraded to 30 Hz poses"),
+        CliCommand.Flag("--svg", "write an SVG beside each PNG"));
+
+    static int Run(Options o)
     {
-        var o = new Options(Charts.TakeSvgFlag(args, out bool svg), "--out", "--trace");
+        bool svg = o.Flag("--svg");
         string? given = o.Get("--out");
         string outDir = given ?? DefaultOut;
         string? tracePath = o.Get("--trace");
-        // The folder is checked, and the trace read, before anything is created; the folder then appears whole.
+        // The folder is checked (writable, not the trace) and the trace read before anything is computed or created;
+        // the folder then appears whole.
+        OutputFolder.Check("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
         (List<double> Times, List<double> Heights)? recorded = tracePath != null
             ? TraceSamples.Read("--trace", tracePath, "demo", usePoseTime: false, TraceSamples.DemoMaxSpan) : null;
         if (recorded != null && recorded.Value.Times.Count < 2)
             throw new CliException($"{Messages.OneLine(tracePath!)}: fewer than two usable rows with increasing t");
-        OutputFolder.Check("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
 
         double standardSpeed = Calibrate();
         var scenes = Scenes(recorded, tracePath);
@@ -50,27 +65,29 @@ public static class DemoCommand
                 var sceneResults = new List<Result>();
                 foreach (var item in scene.Items)
                 {
-                    Console.Error.WriteLine($"[{++done}/{total}] {scene.Title}: {item.Name}");
+                    Progress.Writer.WriteLine($"[{++done}/{total}] {scene.Title}: {item.Name}");
                     var solver = new WeightSolver(WeightModel.FromMass(item.MassKg), scene.Profile, standardSpeed);
                     var y = TraceReplay.Run(solver, scene.Frames);
                     var result = Measure(scene, item, solver.Gain, y);
                     sceneResults.Add(result);
                     Temporaries.Guard(() => WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y));
                 }
-                Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg));
+                Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg, standardSpeed));
                 results.AddRange(sceneResults);
             }
-            results3D = DemoThreeDimensions.Run(temp, standardSpeed, svg, Console.Error);
+            results3D = DemoThreeDimensions.Run(temp, standardSpeed, svg, Progress.Writer);
         });
         PrintSummary(results, standardSpeed, outDir);
         PrintSummary3D(results3D);
+        Console.WriteLine();
+        Console.WriteLine($"demo: {results.Count + results3D.Count} objects lifted in {scenes.Count + 1} scenes (v_std = {NumberText.Fixed(standardSpeed, 3)} m/s) -> {Messages.OneLine(outDir)}");
         return 0;
     }
 
     /// <summary>Five golf-ball lifts of a simulated user (30 Hz poses, 1.5 mm jitter) through the core's calibration.</summary>
     static double Calibrate()
     {
-        Console.Error.WriteLine("Calibration: five lifts of a golf ball");
+        Progress.Writer.WriteLine("Calibration: five lifts of a golf ball");
         var times = new List<double[]>();
         var heights = new List<double[]>();
         double[] rises = { 0.32, 0.36, 0.30, 0.38, 0.34 }, durations = { 0.70, 0.78, 0.66, 0.80, 0.74 };
@@ -81,10 +98,10 @@ public static class DemoCommand
             times.Add(frames.Select(f => f.Time).ToArray());
             heights.Add(frames.Select(f => f.HandY).ToArray());
             var lift = StandardSpeedCalibration.MeasureLift(times[k], heights[k]);
-            Console.Error.WriteLine($"  lift {k + 1}: {lift}");
+            Progress.Writer.WriteLine($"  lift {k + 1}: {lift}");
         }
         var result = StandardSpeedCalibration.FromLifts(times, heights);
-        Console.Error.WriteLine($"  {result}");
+        Progress.Writer.WriteLine($"  {result}");
         return result.IsAccepted ? result.StandardSpeed : WeightSolver.DefaultStandardSpeed;
     }
 
@@ -155,14 +172,38 @@ public static class DemoCommand
             w.WriteLine($"{NumberText.Format(frames[i].Time)},{NumberText.Format(frames[i].HandY)},{NumberText.Format(y[i])},{NumberText.Format(frames[i].HandY - y[i])}");
     }
 
-    static void Plot(string path, Scene scene, List<Result> results, bool svg)
+    /// <summary>
+    /// A scene's chart: each object's height (its own colour, line pattern and width), the hand over them (black,
+    /// dashed, drawn last), the legend under the plot. With the offset correction, a second panel shows the offset
+    /// (hand − object) against the correction's threshold, and each object's offset without the correction.
+    /// </summary>
+    static void Plot(string path, Scene scene, List<Result> results, bool svg, double standardSpeed)
     {
-        var plot = Charts.Create(scene.Title, "time (s)", "height (m)");
         var t = scene.Frames.Select(f => f.Time).ToArray();
-        Charts.Line(plot, t, scene.Frames.Select(f => f.HandY).ToArray(), "hand (30 Hz poses)", Charts.Black, dashed: true);
+        var hand = scene.Frames.Select(f => f.Tracked ? f.HandY : double.NaN).ToArray();
+        var plot = Charts.Create(scene.Title, "time (s)", "height (m)");
         for (int i = 0; i < results.Count; i++)
-            Charts.Line(plot, t, results[i].ObjectY, $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg", Charts.Colour(i));
-        Charts.Save(plot, path, 1000, 560, svg);
+            Charts.Series(plot, t, results[i].ObjectY, $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg", i);
+        Charts.Hand(plot, t, hand, "hand (30 Hz poses)");
+        Charts.LegendBelow(plot);
+        var correction = scene.Profile.Find<OffsetCorrection>();
+        if (correction == null)
+        {
+            Charts.Save(plot, path, 1000, 600, svg);
+            return;
+        }
+        // What the correction does: the offset with and without it, and the threshold it acts beyond.
+        var uncorrected = scene.Profile.Without<OffsetCorrection>("paper without the offset correction");
+        var offsets = Charts.Create("Offset, hand − object, with the correction and without it (thin dashed)", "time (s)", "offset (m)");
+        Charts.Threshold(offsets, correction.Threshold, $"threshold {correction.Threshold:0.##} m");
+        for (int i = 0; i < results.Count; i++)
+        {
+            var free = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(results[i].Item.MassKg), uncorrected, standardSpeed), scene.Frames);
+            Charts.Series(offsets, t, hand.Select((h, k) => h - results[i].ObjectY[k]).ToArray(), $"{results[i].Item.Name}", i);
+            Charts.Line(offsets, t, hand.Select((h, k) => h - free[k]).ToArray(), $"{results[i].Item.Name}, uncorrected", Charts.Colour(i), dashed: true);
+        }
+        Charts.LegendBelow(offsets);
+        Charts.SavePanels(new[] { plot, offsets }, path, 1000, new[] { 560, 520 }, svg);
     }
 
     static void PrintSummary(List<Result> results, double standardSpeed, string outDir)

@@ -35,7 +35,7 @@ public static class DemoThreeDimensions
         string dir = Path.Combine(folder, Slug);
         Directory.CreateDirectory(dir);
         var results = new List<Result>();
-        var runs = new List<(string Label, double[] X, double[] Y)>();
+        var runs = new List<(string Label, double[] X, double[] Y, double[] Z)>();
         foreach (var (name, mass) in Items)
         {
             log.WriteLine($"[xyz] {Title}: {name}");
@@ -51,7 +51,7 @@ public static class DemoThreeDimensions
             }
             results.Add(Measure(name, mass, frames, x, y));
             WriteCsv(Path.Combine(dir, name.Replace(' ', '-').Replace('.', '_') + ".csv"), frames, x, y, z, hands);
-            runs.Add((name, x, y));
+            runs.Add((name, x, y, z));
         }
         Plot(Path.Combine(folder, Slug + ".png"), frames, runs, svg);
         return results;
@@ -125,17 +125,27 @@ public static class DemoThreeDimensions
         }
     }
 
-    /// <summary>The scene's chart: the first hand's x and y (black), and each mass's object x (dashed) and y (solid).</summary>
-    static void Plot(string path, Frames f, List<(string Label, double[] X, double[] Y)> runs, bool svg)
+    /// <summary>The scene's chart: x, y and z in their own panels over the same time, each object's path (colour,
+    /// pattern), both hands over them (black dashed: the first; grey dotted: the second, from when it takes hold).</summary>
+    static void Plot(string path, Frames f, List<(string Label, double[] X, double[] Y, double[] Z)> runs, bool svg)
     {
-        var plot = Charts.Create(Title, "time (s)", "position (m): y solid, x dashed");
-        Charts.Line(plot, f.T, f.A.Select(p => p.Y).ToArray(), "hand y (30 Hz poses)", Charts.Black);
-        Charts.Line(plot, f.T, f.A.Select(p => p.X).ToArray(), "hand x", Charts.Black, dashed: true);
-        for (int i = 0; i < runs.Count; i++)
+        var axes = new (string Name, Func<HandPose, double> Hand, Func<(string Label, double[] X, double[] Y, double[] Z), double[]> Object)[]
         {
-            Charts.Line(plot, f.T, runs[i].Y, runs[i].Label + " y", Charts.Colour(i));
-            Charts.Line(plot, f.T, runs[i].X, runs[i].Label + " x", Charts.Colour(i), dashed: true);
+            ("x (sideways)", p => p.X, r => r.X),
+            ("y (height)", p => p.Y, r => r.Y),
+            ("z (forward)", p => p.Z, r => r.Z),
+        };
+        var panels = new List<ScottPlot.Plot>();
+        for (int k = 0; k < axes.Length; k++)
+        {
+            var panel = Charts.Create(k == 0 ? Title : "", k == axes.Length - 1 ? "time (s)" : "", axes[k].Name + " (m)");
+            for (int i = 0; i < runs.Count; i++) Charts.Series(panel, f.T, axes[k].Object(runs[i]), runs[i].Label, i);
+            Charts.Line(panel, f.T, f.B.Select(p => p.IsUsable ? axes[k].Hand(p) : double.NaN).ToArray(), "second hand (from 6.6 s)", Charts.Colour(7), dashed: false);
+            Charts.Hand(panel, f.T, f.A.Select(axes[k].Hand).ToArray(), "first hand (30 Hz poses)");
+            if (k == axes.Length - 1) Charts.LegendBelow(panel);
+            else panel.HideLegend();
+            panels.Add(panel);
         }
-        Charts.Save(plot, path, 1000, 560, svg);
+        Charts.SavePanels(panels, path, 1000, new[] { 330, 330, 400 }, svg);
     }
 }

@@ -5,9 +5,10 @@ namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
 /// One chart per part of the report: each participant's score as a bar rising from the bottom of the scale,
-/// the participants named under their bars (in the report's order), the mean as a dashed black line and its
-/// 95 % CI as a grey band, both with their figures in the legend (outside the plot, so no bar is hidden).
-/// Incomplete participants are grey dots on the scale's bottom, "(incomplete)" under their name.
+/// the participants named under their bars (in the report's order, long names wrapped), the mean as a dashed
+/// black line and its 95 % CI as a grey band behind the bars, both with their figures in the legend (under the
+/// plot, so no bar is hidden). An incomplete participant is an empty outlined bar the height of the scale,
+/// "incomplete" under their name.
 /// </summary>
 static class EvaluationCharts
 {
@@ -32,8 +33,17 @@ static class EvaluationCharts
             $"score ({NumberText.Format(q.ScaleMin)} to {NumberText.Format(q.ScaleMax)})");
 
         var colour = Charts.Colour(part.Number - 1);
+        var st = part.Statistics;
+        // The interval first, so the bars are drawn over it.
+        if (double.IsFinite(st.ConfidenceLow) && double.IsFinite(st.ConfidenceHigh))
+        {
+            var band = plot.Add.VerticalSpan(st.ConfidenceLow, st.ConfidenceHigh);
+            band.FillStyle.Color = Charts.Colour(7).WithAlpha(0.3);
+            band.LineStyle.Width = 0;
+            band.LegendText = $"95% CI {NumberText.Fixed(st.ConfidenceLow, 2)} to {NumberText.Fixed(st.ConfidenceHigh, 2)}";
+        }
         var bars = new List<ScottPlot.Bar>();
-        var missingX = new List<double>();
+        var missing = new List<ScottPlot.Bar>();
         var names = new ScottPlot.TickGenerators.NumericManual();
         for (int i = 0; i < n; i++)
         {
@@ -41,26 +51,25 @@ static class EvaluationCharts
             if (scores[i].Score is double s)
                 bars.Add(new ScottPlot.Bar { Position = x, Value = s, ValueBase = q.ScaleMin, FillColor = colour, LineWidth = 0, Size = 0.7 });
             else
-                missingX.Add(x);
-            if (n <= MaxLabelled) names.AddMajor(x, scores[i].Score is null ? scores[i].Participant + "\n(incomplete)" : scores[i].Participant);
+                missing.Add(new ScottPlot.Bar { Position = x, Value = q.ScaleMax, ValueBase = q.ScaleMin, FillColor = ScottPlot.Color.FromHex("#F2F2F2"), LineColor = Charts.Colour(7), LineWidth = 1.5f, Size = 0.7 });
+            if (n <= MaxLabelled) names.AddMajor(x, Charts.Wrap(scores[i].Participant, 12) + (scores[i].Score is null ? "\nincomplete" : ""));
         }
-        if (n <= MaxLabelled) plot.Axes.Bottom.TickGenerator = names;
+        if (n <= MaxLabelled)
+        {
+            plot.Axes.Bottom.TickGenerator = names;
+            int lines = scores.Select(p => Charts.Wrap(p.Participant, 12).Split('\n').Length + (p.Score is null ? 1 : 0)).DefaultIfEmpty(1).Max();
+            plot.Axes.Bottom.MinimumSize = 30 + 20 * lines;
+        }
 
         if (bars.Count > 0)
         {
             var barPlot = plot.Add.Bars(bars);
             barPlot.LegendText = "score";
         }
-        if (missingX.Count > 0)
-            Charts.Points(plot, missingX, missingX.Select(_ => (double)q.ScaleMin).ToList(), "incomplete", Charts.Colour(7));
-
-        var st = part.Statistics;
-        if (double.IsFinite(st.ConfidenceLow) && double.IsFinite(st.ConfidenceHigh))
+        if (missing.Count > 0)
         {
-            var band = plot.Add.VerticalSpan(st.ConfidenceLow, st.ConfidenceHigh);
-            band.FillStyle.Color = Charts.Colour(7).WithAlpha(0.35);
-            band.LineStyle.Width = 0;
-            band.LegendText = $"95% CI {NumberText.Fixed(st.ConfidenceLow, 2)} to {NumberText.Fixed(st.ConfidenceHigh, 2)}";
+            var empty = plot.Add.Bars(missing);
+            empty.LegendText = "incomplete (no score)";
         }
         if (double.IsFinite(st.Mean))
         {
@@ -71,7 +80,7 @@ static class EvaluationCharts
             mean.LegendText = $"mean {NumberText.Fixed(st.Mean, 2)}";
         }
 
-        plot.ShowLegend(ScottPlot.Edge.Right);
+        Charts.LegendBelow(plot);
         plot.Axes.SetLimits(0.4, Math.Max(1, n) + 0.6, q.ScaleMin, q.ScaleMax + 0.1 * (q.ScaleMax - q.ScaleMin));
         return plot;
     }

@@ -10,6 +10,9 @@ public static class EvaluationInputsLimits
 {
     /// <summary>See <see cref="EvaluationInputs.MaxRows"/>.</summary>
     public const int MaxRows = 100_000;
+
+    /// <summary>See <see cref="EvaluationInputs.MaxParticipants"/>.</summary>
+    public const int MaxParticipants = 100_000;
 }
 
 /// <summary>
@@ -19,9 +22,6 @@ public static class EvaluationInputsLimits
 /// </summary>
 static class EvaluationInputs
 {
-    /// <summary>Exit code of a contract error: malformed input, bad option, unreadable file.</summary>
-    public const int ContractError = 2;
-
     /// <summary>
     /// Most data rows score and report read from one file (100,000: a study of 4,500 participants answering all
     /// 22 items), so their memory is bounded whatever the file (report of 100,000 scores: 110 MB peak); a row
@@ -32,6 +32,22 @@ static class EvaluationInputs
     /// <summary>Most characters the fields of one file may hold together (64 a row on average), so long fields cannot
     /// add up past the memory bound either; the row that passes it is refused naming its line.</summary>
     public const long MaxCharacters = 64L * MaxRows;
+
+    /// <summary>
+    /// Most participants score and report keep from one file (100,000: a 10,000-participant study is a tenth of it).
+    /// score streams its answers, so the rows are not counted: it keeps one sheet per participant, questionnaire and
+    /// condition (about 1 kB each), and the participants' and conditions' names at most <see cref="MaxNameCharacters"/>.
+    /// </summary>
+    public const int MaxParticipants = EvaluationInputsLimits.MaxParticipants;
+
+    /// <summary>Most characters of distinct participant and condition names kept (64 a participant on average).</summary>
+    public const long MaxNameCharacters = 64L * MaxParticipants;
+
+    /// <summary>What score and report keep of an answers file, bounded by participants, not rows.</summary>
+    public static ParticipantLimit Participants() => new(MaxParticipants, MaxNameCharacters);
+
+    /// <summary>Most rows report reads from a scores file: one score per participant and part.</summary>
+    public static int MaxScoreRows(QuestionnaireCatalog catalog) => MaxParticipants * Math.Max(1, catalog.Questionnaires.Count);
 
     /// <summary>The package's definitions as built in, or those of <paramref name="directory"/> when given.</summary>
     public static QuestionnaireCatalog Catalog(string? directory)
@@ -78,36 +94,6 @@ static class EvaluationInputs
     public static void WriteText(string path, string text) => OutputFile.Check("--out", path).Write(w => w.Write(text));
 
     public static void WriteBytes(string path, byte[] bytes) => OutputFile.Check("--out", path).WriteBytes(bytes);
-
-    /// <summary>
-    /// Runs a command body under the error contract: a malformed file prints "FILE:LINE: reason", a usage
-    /// error "pseudohaptic COMMAND: reason (usage: …)", each one line on stderr, exit code 2. Output is only
-    /// written at the end of a body, after everything was read and checked, so an error leaves nothing.
-    /// </summary>
-    public static int Guard(string command, string usage, Func<int> body)
-    {
-        try
-        {
-            return body();
-        }
-        catch (EvaluationFormatException e)
-        {
-            Console.Error.WriteLine(OneLine(e.Message));
-            return ContractError;
-        }
-        catch (CliException e)
-        {
-            string hint = e.Message.StartsWith("option", StringComparison.Ordinal) || e.Message.StartsWith("unknown option", StringComparison.Ordinal)
-                ? $" (usage: {usage})" : "";
-            Console.Error.WriteLine($"pseudohaptic {command}: {OneLine(e.Message)}{hint}");
-            return e.ExitCode;
-        }
-        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
-        {
-            Console.Error.WriteLine($"pseudohaptic {command}: {Messages.Reason(e)}");
-            return 1;
-        }
-    }
 
     public static string OneLine(string text) => Messages.OneLine(text);
 }

@@ -1,5 +1,6 @@
 using System.Globalization;
 using System.Text;
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
@@ -14,15 +15,29 @@ namespace Kosmos.PseudoHaptic.Cli;
 /// </summary>
 public static class PsychometricCommand
 {
-    public const string Usage = "pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S]";
     public const string Header = "participant,condition,standard,n,pse,jnd,weber,sigma,pse_lo,pse_hi,jnd_lo,jnd_hi,deviance,estimable";
     public const int DefaultResamples = 1000;
     public const long DefaultSeed = 1;
     public const int MaxResamples = 100000;
 
-    public static int Run(string[] args) => EvaluationInputs.Guard("psychometric", Usage, () =>
+    public static CliCommand Define() => new(
+        "psychometric",
+        "Fit 2AFC weight-discrimination answers per participant × condition × standard: PSE, JND, Weber fraction with bootstrap 95 % intervals, charts (evaluation.md §8)",
+        Run,
+        new[]
+        {
+            "pseudohaptic psychometric --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --out fits --seed 1",
+        },
+        CliCommand.Value("--trials", "T.csv", "the answers: participant,standard,comparison,response (1 = comparison judged heavier), optional condition; standard and comparison in kg", required: true),
+        CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
+        CliCommand.Value("--lapse", "L", "a fixed guess and lapse rate gamma = lambda, in [0, 0.5) (default 0)"),
+        CliCommand.Value("--bootstrap", "N", $"parametric bootstrap resamples for the 95 % intervals, 0–{MaxResamples} (default {DefaultResamples})"),
+        CliCommand.Value("--seed", "S", $"the bootstrap's seed, a whole number (default {DefaultSeed})"));
+
+    public static int Run(string[] args) => Cli.Run(args.Prepend("psychometric").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(args, "--trials", "--out", "--lapse", "--bootstrap", "--seed");
         string trialsPath = o.Require("--trials");
         string outDir = o.Require("--out");
         double lapse = Lapse(o.Get("--lapse"));
@@ -33,7 +48,8 @@ public static class PsychometricCommand
 
         // Read and check everything, compute, render; only then does the folder appear, whole.
         var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
-        var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed);
+        var progress = Progress.Writer;
+        var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed, (done, all) => progress.Write($"\rpsychometric: fit and bootstrap {done}/{all}{(done == all ? "\n" : "")}"));
         var files = new List<(string Name, byte[] Bytes)>();
         var utf8 = new UTF8Encoding(false);
         files.Add(("fits.csv", utf8.GetBytes(FitsCsv(rows))));
@@ -61,7 +77,7 @@ public static class PsychometricCommand
             Console.Out.WriteLine($"  {Messages.OneLine(r.Participant)}{(r.Condition.Length > 0 ? " " + Messages.OneLine(r.Condition) : "")} standard {NumberText.Format(r.Standard)}: n = {r.Fit.Trials}, {what}");
         }
         return 0;
-    });
+    }
 
     static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");
 

@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Traces;
 using Kosmos.PseudoHaptic.Simulation;
@@ -11,11 +12,27 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// </summary>
 public static class ReplayCommand
 {
-    public const string Usage = "pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile paper|paper-experiment|gain|xyz] [--grab-offset D] [--break-away D]";
+    public static CliCommand Define() => new(
+        "replay",
+        "Replay a recorded hand (CSV) through the weight solver: one output row per input row with the object's position and the offset (ALGORITHM.md §10)",
+        Run,
+        new[]
+        {
+            "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --out replayed.csv --mass-kg 2",
+            "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/walk-and-turn.csv --out - --mass-kg 0.5 --profile xyz --break-away 0.3",
+        },
+        CliCommand.Value("--trace", "IN.csv", "the recorded hand: columns t (s), hand_y (m), optional tracked, pose_t, hand_x, hand_z, a second hand hand2_*, and the rig's world pose rig_x, rig_y, rig_z (m), rig_yaw (degrees)", required: true),
+        CliCommand.Value("--out", "OUT.csv", "where the replay goes ('-': standard output); replaced whole or not at all", required: true),
+        CliCommand.Value("--mass-kg", "M", "the held object's mass, kg (> 0)", required: true),
+        CliCommand.Value("--standard-speed", "V", $"the user's calibrated standard lifting speed, m/s, {WeightSolver.MinStandardSpeed}–{WeightSolver.MaxStandardSpeed} (default {WeightSolver.DefaultStandardSpeed})"),
+        CliCommand.Choice("--profile", $"which effects act (default {NamedProfiles.PaperName})", NamedProfiles.Names.ToArray()),
+        CliCommand.Value("--grab-offset", "D", "the object starts D metres below the first usable hand (default 0; negative: above)"),
+        CliCommand.Value("--break-away", "D", "let go when the object lags more than D metres behind the hand for 0.1 s (default: never)"));
 
-    public static int Run(string[] args)
+    public static int Run(string[] args) => Cli.Run(args.Prepend("replay").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(args, "--trace", "--out", "--mass-kg", "--standard-speed", "--profile", "--grab-offset", "--break-away");
         string trace = o.Require("--trace");
         string output = o.Require("--out");
         var solver = CreateSolver3D(o, out bool breakAway);
@@ -24,9 +41,14 @@ public static class ReplayCommand
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
-        bool anyUsable = true;
-        target.Write(w => anyUsable = Replay(reader, solver, breakAway, grabOffset, w, target.SpareFolder));
-        if (!anyUsable) Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; object_y is 0 throughout");
+        var summary = new ReplaySummary();
+        target.Write(w => summary = Replay(reader, solver, breakAway, grabOffset, w, target.SpareFolder));
+        if (!summary.AnyUsable)
+            Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; the object stays at {(reader.HasRig ? "the rig's origin" : "0")} throughout");
+        // One line saying what was done; on standard error when the rows went to standard output.
+        var say = target.IsStandardOutput ? Console.Error : Console.Out;
+        string largest = summary.LargestOffset > 0 || summary.Holds > 0 ? NumberText.Fixed(summary.LargestOffset * 1000, 1) + " mm" : "none";
+        say.WriteLine($"replay: {summary.Rows} rows, {summary.Holds} hold{(summary.Holds == 1 ? "" : "s")}{(summary.Released ? " (broken away)" : "")}, largest offset {largest} -> {Messages.OneLine(output)}");
         return 0;
     }
 
@@ -79,10 +101,12 @@ public static class ReplayCommand
 
     /// <summary>Streams rows through the solver. Rows before the first usable hand wait until the starting
     /// position is known: the first <see cref="FrameBuffer.InMemory"/> in memory, the rest in a temporary file
-    /// beside the output, so memory stays bounded. Returns false when no row had a usable hand.</summary>
-    static bool Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
+    /// beside the output, so memory stays bounded. With the rig's columns (issue 26) each hand is taken into the
+    /// rig's frame, the solver runs there, and the object is written back through that row's rig; without them
+    /// nothing is transformed. Returns the summary of what was replayed.</summary>
+    static ReplaySummary Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
     {
-        var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway);
+        var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway, reader.HasRig);
         w.Write("t,hand_y,object_y,offset");
         if (columns.Horizontal) w.Write(",hand_x,hand_z,object_x,object_z");
         if (columns.SecondHand) w.Write(",hands");
@@ -91,12 +115,15 @@ public static class ReplayCommand
 
         bool twoHands = solver.Profile.Has<TwoHands>();
         using var waiting = new FrameBuffer(spareFolder);
+        var summary = new ReplaySummary();
         bool holding = false;
+        (double X, double Y, double Z)? letGo = null;
         double lastT = double.NaN;
         while (reader.TryReadRow(out TraceRow r))
         {
-            var a = r.FirstPose;
-            var b = r.SecondPose;
+            summary.Rows++;
+            var a = columns.First(r);
+            var b = columns.Second(r);
             if (!holding)
             {
                 bool one = a.IsUsable, two = twoHands && b.IsUsable;
@@ -108,7 +135,8 @@ public static class ReplayCommand
                 double z = one && two ? 0.5 * (a.Z + b.Z) : (one ? a.Z : b.Z);
                 solver.BeginHoldWithGrabOffset(a, twoHands ? b : HandPose.Lost, x, grabOffset, z);
                 holding = true;
-                waiting.Drain(early => Write(w, columns, early, solver.ObjectX, solver.ObjectY, solver.ObjectZ, true));
+                summary.Holds++;
+                waiting.Drain(early => Write(w, columns, early, columns.Object(early, solver.ObjectX, solver.ObjectY, solver.ObjectZ), true, ref summary));
             }
             else
             {
@@ -116,34 +144,72 @@ public static class ReplayCommand
                 solver.Step(a, b, dt);
             }
             if (double.IsFinite(r.First.Time)) lastT = r.First.Time;
-            Write(w, columns, r, solver.ObjectX, solver.ObjectY, solver.ObjectZ, solver.IsHolding);
+            var world = columns.Object(r, solver.ObjectX, solver.ObjectY, solver.ObjectZ);
+            // Let go (--break-away): the object stays where it was let go in the world, not in a rig that may walk
+            // on; without a rig the solver's frame is the world's and the solver already keeps it there.
+            if (columns.Rig && !solver.IsHolding) world = letGo ??= world;
+            Write(w, columns, r, world, solver.IsHolding, ref summary);
         }
-        bool none = waiting.Count == 0;
-        waiting.Drain(early => Write(w, columns, early, 0, 0, 0, true));
-        return holding || none;
+        summary.Released = holding && !solver.IsHolding;
+        summary.AnyUsable = holding || waiting.Count == 0;
+        waiting.Drain(early => Write(w, columns, early, columns.Object(early, 0, 0, 0), true, ref summary));
+        return summary;
     }
 
-    readonly record struct Columns(bool Horizontal, bool SecondHand, bool Held);
-
-    /// <summary>One output row, formatted on the stack (no allocation per row, as the one-hand replay).</summary>
-    static void Write(TextWriter w, Columns c, in TraceRow r, double objectX, double objectY, double objectZ, bool held)
+    /// <summary>What one replay did, for the line the command prints.</summary>
+    struct ReplaySummary
     {
-        bool usable = r.FirstPose.IsUsable;
-        double offset = usable ? r.First.HandY - objectY : double.NaN;
+        public long Rows;
+        public int Holds;
+        public bool Released;
+        public bool AnyUsable;
+
+        /// <summary>The largest |hand_y − object_y| over held rows with a usable first hand, m; 0 when there is none.</summary>
+        public double LargestOffset;
+
+        public void Offset(double offset)
+        {
+            if (double.IsFinite(offset) && !(Math.Abs(offset) <= LargestOffset)) LargestOffset = Math.Abs(offset);
+        }
+    }
+
+    readonly record struct Columns(bool Horizontal, bool SecondHand, bool Held, bool Rig)
+    {
+        /// <summary>The first hand as the solver takes it: in the rig's frame when the trace gives the rig, else as read.</summary>
+        public HandPose First(in TraceRow r) => Rig ? r.InRig(r.FirstPose, Horizontal) : r.FirstPose;
+
+        public HandPose Second(in TraceRow r) => Rig ? r.InRig(r.SecondPose, Horizontal) : r.SecondPose;
+
+        /// <summary>The solver's object in the world: through the row's rig when the trace gives it, else as it is.</summary>
+        public (double X, double Y, double Z) Object(in TraceRow r, double x, double y, double z)
+        {
+            if (!Rig) return (x, y, z);
+            r.Rig.ToWorld(x, y, z, out double wx, out double wy, out double wz);
+            return (wx, wy, wz);
+        }
+    }
+
+    /// <summary>One output row, formatted on the stack (no allocation per row, as the one-hand replay); the object
+    /// in world coordinates.</summary>
+    static void Write(TextWriter w, Columns c, in TraceRow r, (double X, double Y, double Z) world, bool held, ref ReplaySummary summary)
+    {
+        bool usable = c.First(r).IsUsable;
+        double offset = usable ? r.First.HandY - world.Y : double.NaN;
+        if (held) summary.Offset(offset);
         Span<char> buffer = stackalloc char[32 * 8 + 16];
         int n = 0;
         n += NumberText.Format(r.First.Time, buffer[n..]); buffer[n++] = ',';
         n += NumberText.Format(r.First.HandY, buffer[n..]); buffer[n++] = ',';
-        n += NumberText.Format(objectY, buffer[n..]); buffer[n++] = ',';
+        n += NumberText.Format(world.Y, buffer[n..]); buffer[n++] = ',';
         n += NumberText.Format(offset, buffer[n..]);
         if (c.Horizontal)
         {
             buffer[n++] = ','; n += NumberText.Format(r.HandX, buffer[n..]);
             buffer[n++] = ','; n += NumberText.Format(r.HandZ, buffer[n..]);
-            buffer[n++] = ','; n += NumberText.Format(objectX, buffer[n..]);
-            buffer[n++] = ','; n += NumberText.Format(objectZ, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(world.X, buffer[n..]);
+            buffer[n++] = ','; n += NumberText.Format(world.Z, buffer[n..]);
         }
-        if (c.SecondHand) { buffer[n++] = ','; buffer[n++] = (char)('0' + (usable ? 1 : 0) + (r.SecondPose.IsUsable ? 1 : 0)); }
+        if (c.SecondHand) { buffer[n++] = ','; buffer[n++] = (char)('0' + (usable ? 1 : 0) + (c.Second(r).IsUsable ? 1 : 0)); }
         if (c.Held) { buffer[n++] = ','; buffer[n++] = held ? '1' : '0'; }
         buffer[n++] = '\n';
         w.Write(buffer[..n]);

@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
@@ -12,11 +13,26 @@ namespace Kosmos.PseudoHaptic.Cli;
 /// </summary>
 public static class ReportCommand
 {
-    public const string Usage = "pseudohaptic report --scores S.csv --out DIR [--responses R.csv] [--questionnaires DIR] [--svg]";
 
-    public static int Run(string[] args) => EvaluationInputs.Guard("report", Usage, () =>
+    public static CliCommand Define() => new(
+        "report",
+        "Tables, statistics (n, mean, SD, median, 95 % CI, Cronbach's alpha) and charts of questionnaire scores, as Markdown, CSV and PNG (evaluation.md)",
+        Run,
+        new[]
+        {
+            "pseudohaptic report --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/scores.csv --out report --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv",
+        },
+        CliCommand.Value("--scores", "S.csv", "the scores score wrote (one per participant and part, at most 100,000 participants)", required: true),
+        CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
+        CliCommand.Value("--responses", "R.csv", "the answers, for Cronbach's alpha and a check of the scores (default: none, no alpha)"),
+        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) (default: the paper's, built in)"),
+        CliCommand.Flag("--svg", "write an SVG beside each PNG"));
+
+    public static int Run(string[] args) => Cli.Run(args.Prepend("report").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(Plotting.Charts.TakeSvgFlag(args, out bool svg), "--scores", "--out", "--responses", "--questionnaires");
+        bool svg = o.Flag("--svg");
         string scoresPath = o.Require("--scores");
         string outDir = o.Require("--out");
         string? responsesPath = o.Get("--responses");
@@ -26,9 +42,11 @@ public static class ReportCommand
         var catalog = EvaluationInputs.Catalog(questionnaires);
 
         // Everything is read, checked and rendered before the folder is made; it then appears whole.
-        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        // One score per participant and part: the rows are bounded by the participants, as score's answers are.
+        int maxScores = EvaluationInputs.MaxScoreRows(catalog);
+        var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, maxScores, 64L * maxScores);
         ResponseSet? responses = responsesPath != null
-            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters)
+            ? ResponsesCsv.Parse(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, int.MaxValue, long.MaxValue, EvaluationInputs.Participants())
             : null;
         var report = EvaluationReport.Build(catalog, scores, scoresPath, responses, responsesPath);
 
@@ -58,7 +76,7 @@ public static class ReportCommand
             Console.Out.WriteLine($"  {part.Questionnaire.Id}: n = {st.N}, mean {Fixed(st.Mean)}, SD {Fixed(st.StandardDeviation)}, 95% CI [{Fixed(st.ConfidenceLow)}, {Fixed(st.ConfidenceHigh)}]{(part.Incomplete > 0 ? $", {part.Incomplete} incomplete" : "")}");
         }
         return 0;
-    });
+    }
 
     /// <summary>What an existing --out folder may hold to be replaced: files of an earlier report (no folders).</summary>
     static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");

@@ -1,4 +1,5 @@
 using System.Globalization;
+using Kosmos.PseudoHaptic.Cli.CommandLine;
 using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
@@ -16,11 +17,23 @@ namespace Kosmos.PseudoHaptic.Cli;
 /// </summary>
 public static class ScoreCommand
 {
-    public const string Usage = "pseudohaptic score --responses R.csv --out S.csv [--questionnaires DIR]";
 
-    public static int Run(string[] args) => EvaluationInputs.Guard("score", Usage, () =>
+    public static CliCommand Define() => new(
+        "score",
+        "Score questionnaire answers as the paper does (reverse-coded items, a mean per part, incomplete parts unscored): one row per participant × questionnaire (evaluation.md)",
+        Run,
+        new[]
+        {
+            "pseudohaptic score --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv --out scores.csv",
+        },
+        CliCommand.Value("--responses", "R.csv", "the answers: participant,questionnaire,item,response (optional condition); any number of rows, at most 100,000 participants", required: true),
+        CliCommand.Value("--out", "S.csv", "the scores: participant,[condition,]questionnaire,score ('-': standard output)", required: true),
+        CliCommand.Value("--questionnaires", "DIR", "a folder of questionnaire definitions (JSON) (default: the paper's, built in)"));
+
+    public static int Run(string[] args) => Cli.Run(args.Prepend("score").ToArray());
+
+    static int Run(Options o)
     {
-        var o = new Options(args, "--responses", "--out", "--questionnaires");
         string responsesPath = o.Require("--responses");
         string output = o.Require("--out");
         var target = OutputFile.Check("--out", output,
@@ -29,7 +42,8 @@ public static class ScoreCommand
 
         // R.csv may have a condition column (issue 11); S.csv then carries it after the participant. Without
         // it there is one set and the output is the scores file as before, byte for byte.
-        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition, EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        // Streamed: any number of rows; what is kept is bounded by the participants (EvaluationInputs.MaxParticipants).
+        var sets = ResponsesCsv.ParseByCondition(EvaluationInputs.OpenText("--responses", responsesPath), EvaluationInputs.Name(responsesPath), catalog, out bool hasCondition, int.MaxValue, long.MaxValue, EvaluationInputs.Participants());
         var scores = hasCondition ? ScoreCalculator.ScoreAll(sets) : ScoreCalculator.ScoreAll(sets[0].Value);
         target.Write(w => w.Write(ScoresCsv.Format(scores, hasCondition)));
         var participants = new HashSet<string>(StringComparer.Ordinal);
@@ -48,5 +62,5 @@ public static class ScoreCommand
         foreach (var s in scores.Where(s => !s.IsComplete))
             summary.WriteLine($"  {Messages.OneLine(s.Participant)}{(hasCondition ? " " + Messages.OneLine(s.Condition) : "")} {s.QuestionnaireId}: incomplete, unanswered items {string.Join(", ", s.MissingItems.Select(i => i.ToString(CultureInfo.InvariantCulture)))}");
         return 0;
-    });
+    }
 }

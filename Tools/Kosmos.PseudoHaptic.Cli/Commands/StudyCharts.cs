@@ -15,35 +15,67 @@ static class StudyCharts
 {
     const int Width = 1000, Height = 600;
 
+    /// <summary>Characters per line of a name under an axis (wrapped at spaces, a longer word kept whole).</summary>
+    const int LabelChars = 18;
+
+    /// <summary>
+    /// One participant × condition: the proportion judged heavier at each comparison level with its 95 % Wilson
+    /// interval, the fitted curve, the PSE (50 %) and the JND (to 75 %), the standard marked. The axis spans the
+    /// levels that carry most trials; catch levels far outside are drawn at its edge as open markers, named.
+    /// </summary>
     public static byte[] Psychometric(string participant, string condition, IReadOnlyList<PsychometricRow> rows, IReadOnlyList<TrialAnswer> answers)
     {
-        string title = $"{participant}{(condition.Length > 0 ? " — " + condition : "")}: proportion judged heavier";
-        var plot = Charts.Create(Messages.OneLine(title), "comparison", "proportion 'comparison heavier'");
-        double xmin = double.PositiveInfinity, xmax = double.NegativeInfinity;
-        foreach (var r in rows)
-            foreach (var l in r.Fit.Levels) { xmin = Math.Min(xmin, l.Level); xmax = Math.Max(xmax, l.Level); }
+        string title = Charts.Wrap(Messages.OneLine($"{participant}{(condition.Length > 0 ? " — " + condition : "")}: proportion judged heavier"), 70);
+        var plot = Charts.Create(title, "comparison weight (kg)", "proportion judged heavier");
+        var all = rows.SelectMany(r => r.Fit.Levels.Where(l => l.Trials > 0)).ToList();
+        if (all.Count == 0)
+            return Charts.Png(Charts.Empty(title, "No trials to draw."), Width, Height);
+        // The main levels: those with at least a quarter of the most trials at one level (catch trials have few).
+        int most = all.Max(l => l.Trials);
+        var main = all.Where(l => l.Trials * 4 >= most).ToList();
+        double xmin = main.Min(l => l.Level), xmax = main.Max(l => l.Level);
+        foreach (var r in rows) { xmin = Math.Min(xmin, r.Standard); xmax = Math.Max(xmax, r.Standard); }
         if (!(xmax > xmin)) { xmin -= 0.5; xmax += 0.5; }
-        double pad = 0.05 * (xmax - xmin);
+        double pad = 0.08 * (xmax - xmin);
+        double Clamp(double x) => Math.Clamp(x, xmin - 0.6 * pad, xmax + 0.6 * pad);
+        bool Outside(double x) => x < xmin - 0.6 * pad || x > xmax + 0.6 * pad;
 
+        var standards = rows.Select(r => r.Standard).Distinct().ToList();
+        foreach (var standard in standards)
+        {
+            var line = plot.Add.VerticalLine(standard);
+            line.Color = ScottPlot.Color.FromHex("#505050");
+            line.LineWidth = 1.5f;
+            line.LinePattern = ScottPlot.LinePattern.DenselyDashed;
+            line.LegendText = $"standard {G(standard)} kg";
+        }
+        var catchNotes = new List<string>();
         for (int s = 0; s < rows.Count; s++)
         {
             var r = rows[s];
             var colour = Charts.Colour(s);
-            string std = rows.Count > 1 ? $"standard {NumberText.Format(r.Standard)}: " : "";
+            string std = rows.Count > 1 ? $"standard {G(r.Standard)} kg: " : "";
             var levels = r.Fit.Levels.Where(l => l.Trials > 0).ToList();
+            var inside = levels.Where(l => !Outside(l.Level)).ToList();
             var barX = new List<double>();
             var barY = new List<double>();
-            foreach (var l in levels)
+            foreach (var l in inside)
             {
                 WilsonInterval.Compute(l.Heavier, l.Trials, 0.95, out double lo, out double hi);
                 barX.AddRange(new[] { l.Level, l.Level, double.NaN });
                 barY.AddRange(new[] { lo, hi, double.NaN });
             }
-            Charts.Points(plot, levels.Select(l => l.Level).ToArray(), levels.Select(l => l.Proportion).ToArray(), std + "proportion (95 % Wilson)", colour);
+            Charts.Points(plot, inside.Select(l => l.Level).ToArray(), inside.Select(l => l.Proportion).ToArray(), std + "proportion (95 % Wilson)", colour, shape: s);
             if (barX.Count > 0) Charts.Line(plot, barX, barY, "", colour);
+            var off = levels.Where(l => Outside(l.Level)).ToList();
+            if (off.Count > 0)
+            {
+                var marks = Charts.Points(plot, off.Select(l => Clamp(l.Level)).ToArray(), off.Select(l => l.Proportion).ToArray(), std + "catch trials (off scale, at the edge)", colour, shape: 4);
+                catchNotes.AddRange(off.Select(l => $"catch trials at {G(l.Level)} kg: {l.Heavier} of {l.Trials} heavier"));
+            }
             if (!r.Fit.Estimable)
             {
-                Charts.Note(plot, xmin, 0.95 - 0.07 * s, $"{std}not estimable: {r.Fit.Reason}");
+                catchNotes.Add($"{std}not estimable: {r.Fit.Reason}");
                 continue;
             }
             var f = r.Fit;
@@ -57,33 +89,53 @@ static class StudyCharts
             }
             Charts.Line(plot, cx, cy, std + "fit", colour);
             // PSE: where the curve crosses 50 %; JND: from the PSE to where it reaches 75 %.
-            Charts.Line(plot, new[] { f.Pse, f.Pse }, new[] { 0.0, 0.5 }, $"{std}PSE {G(f.Pse)}", colour, dashed: true);
+            Charts.Line(plot, new[] { f.Pse, f.Pse }, new[] { 0.0, 0.5 }, $"{std}PSE {G(f.Pse)} kg", colour, dashed: true);
             double at75 = f.Pse + f.Jnd;
-            Charts.Line(plot, new[] { f.Pse, at75, at75 }, new[] { 0.75, 0.75, 0.0 }, $"{std}JND {G(f.Jnd)}", Charts.Colour(s + 5), dashed: true);
+            Charts.Line(plot, new[] { f.Pse, at75, at75 }, new[] { 0.75, 0.75, 0.0 }, $"{std}JND {G(f.Jnd)} kg", Charts.Colour(s + 5), dashed: true);
             if (r.Bootstrap.HasIntervals)
-                Charts.Line(plot, new[] { r.Bootstrap.PseLow, r.Bootstrap.PseHigh }, new[] { 0.5, 0.5 }, $"{std}PSE 95 % CI [{G(r.Bootstrap.PseLow)}, {G(r.Bootstrap.PseHigh)}]", Charts.Black);
+                Charts.Line(plot, new[] { r.Bootstrap.PseLow, r.Bootstrap.PseHigh }, new[] { 0.5, 0.5 }, $"{std}PSE 95 % CI [{G(r.Bootstrap.PseLow)}, {G(r.Bootstrap.PseHigh)}] kg", Charts.Black);
         }
-        plot.Legend.Alignment = ScottPlot.Alignment.LowerRight; // an increasing curve leaves that corner empty
+        if (catchNotes.Count > 0) plot.XLabel(Charts.Wrap("comparison weight (kg); " + string.Join("; ", catchNotes), 110));
+        Charts.LegendBelow(plot);
         plot.Axes.SetLimits(xmin - pad, xmax + pad, -0.03, 1.03);
         FixedTicks(plot.Axes.Bottom, xmax - xmin + 2 * pad);
-        return Charts.Png(plot, Width, Height);
+        return Charts.Png(plot, Width, Height + 40 * (rows.Count - 1) + 20 * catchNotes.Count / 4);
     }
 
-    /// <summary>PSE − standard and JND with their 95 % intervals, one column per participant × condition × standard.</summary>
+    /// <summary>
+    /// PSE − standard and JND with their 95 % intervals, one column per participant × condition × standard, grouped
+    /// by condition (a line between groups, the condition under its participants). Without an estimable fit, a
+    /// sentence saying so.
+    /// </summary>
     public static byte[] PsychometricSummary(IReadOnlyList<PsychometricRow> rows)
     {
-        var plot = Charts.Create("PSE − standard and JND per participant (95 % bootstrap intervals)", "participant", "comparison − standard");
+        const string title = "PSE − standard and JND per participant (95 % bootstrap intervals)";
+        if (!rows.Any(r => r.Fit.Estimable))
+            return Charts.Png(Charts.Empty(title, $"No fit is estimable ({rows.Count} participant × condition × standard groups): " +
+                string.Join("; ", rows.Select(r => r.Fit.Reason).Distinct().Take(3)) + ". See fits.csv."), Width, 300);
+        var conditions = rows.Select(r => r.Condition).Distinct().ToList();
+        var ordered = rows.OrderBy(r => conditions.IndexOf(r.Condition)).ThenBy(r => r.Standard).ToList(); // stable: participants keep their order
+        bool manyStandards = rows.Select(q => q.Standard).Distinct().Count() > 1;
+        var plot = Charts.Create(title, conditions.Count > 1 ? "participant, grouped by condition" : "participant", "weight (kg)");
         var px = new List<double>(); var py = new List<double>();
         var jx = new List<double>(); var jy = new List<double>();
         var pbx = new List<double>(); var pby = new List<double>();
         var jbx = new List<double>(); var jby = new List<double>();
         var ticks = new List<double>(); var labels = new List<string>();
-        for (int i = 0; i < rows.Count; i++)
+        for (int i = 0; i < ordered.Count; i++)
         {
-            var r = rows[i];
+            var r = ordered[i];
             double x = i + 1;
             ticks.Add(x);
-            labels.Add(Messages.OneLine(r.Participant + (r.Condition.Length > 0 ? " " + r.Condition : "") + (rows.Select(q => q.Standard).Distinct().Count() > 1 ? " @" + NumberText.Format(r.Standard) : "")));
+            string name = Messages.OneLine(r.Participant) + (manyStandards ? " @" + G(r.Standard) + " kg" : "");
+            bool firstOfGroup = i == 0 || ordered[i - 1].Condition != r.Condition;
+            labels.Add(Charts.Wrap(name, LabelChars) + (conditions.Count > 1 && firstOfGroup ? "\n" + Charts.Wrap("[" + Messages.OneLine(r.Condition) + "]", LabelChars) : ""));
+            if (i > 0 && firstOfGroup)
+            {
+                var separator = plot.Add.VerticalLine(x - 0.5);
+                separator.Color = ScottPlot.Color.FromHex("#909090");
+                separator.LineWidth = 1;
+            }
             if (!r.Fit.Estimable) continue;
             px.Add(x - 0.12); py.Add(r.Fit.Pse - r.Standard);
             jx.Add(x + 0.12); jy.Add(r.Fit.Jnd);
@@ -93,35 +145,35 @@ static class StudyCharts
                 jbx.AddRange(new[] { x + 0.12, x + 0.12, double.NaN }); jby.AddRange(new[] { r.Bootstrap.JndLow, r.Bootstrap.JndHigh, double.NaN });
             }
         }
-        Charts.Line(plot, new[] { 0.5, rows.Count + 0.5 }, new[] { 0.0, 0.0 }, "", Charts.Black);
-        Charts.Points(plot, px, py, "PSE − standard", Charts.Colour(0));
+        Charts.Line(plot, new[] { 0.5, ordered.Count + 0.5 }, new[] { 0.0, 0.0 }, "", Charts.Black);
+        Charts.Points(plot, px, py, "PSE − standard", Charts.Colour(0), shape: 0);
         if (pbx.Count > 0) Charts.Line(plot, pbx, pby, "", Charts.Colour(0));
-        Charts.Points(plot, jx, jy, "JND", Charts.Colour(1));
+        Charts.Points(plot, jx, jy, "JND", Charts.Colour(1), shape: 1);
         if (jbx.Count > 0) Charts.Line(plot, jbx, jby, "", Charts.Colour(1));
-        int longest = labels.Count > 0 ? labels.Max(l => l.Length) : 0;
-        if (rows.Count <= 60)
+        int lines = labels.Count > 0 ? labels.Max(l => l.Split('\n').Length) : 1;
+        if (ordered.Count <= 60)
         {
             plot.Axes.Bottom.SetTicks(ticks.ToArray(), labels.ToArray());
-            if (longest > 4)
-            {
-                // Names turned, so that long ones do not run into each other.
-                plot.Axes.Bottom.TickLabelStyle.Rotation = 35;
-                plot.Axes.Bottom.TickLabelStyle.Alignment = ScottPlot.Alignment.MiddleLeft;
-                plot.Axes.Bottom.MinimumSize = 40 + 8 * Math.Min(longest, 30);
-            }
+            plot.Axes.Bottom.MinimumSize = 30 + 20 * lines;
         }
-        plot.Axes.SetLimitsX(0.5, rows.Count + 0.5);
+        Charts.LegendBelow(plot);
+        plot.Axes.SetLimitsX(0.5, ordered.Count + 0.5);
         var all = py.Concat(jy).Concat(pby).Concat(jby).Where(double.IsFinite).Append(0.0).ToList();
         double low = all.Min(), high = all.Max(), span = Math.Max(high - low, 1e-9);
-        plot.Axes.SetLimitsY(low - 0.05 * span, high + 0.3 * span); // room above for the legend
-        return Charts.Png(plot, Math.Clamp(300 + 45 * rows.Count, 900, 3000), Height + (longest > 4 ? 6 * Math.Min(longest, 30) : 0));
+        plot.Axes.SetLimitsY(low - 0.08 * span, high + 0.08 * span);
+        return Charts.Png(plot, Math.Clamp(300 + 110 * ordered.Count, 900, 4000), Height + 20 * lines);
     }
 
-    /// <summary>One line per participant through their scores in each condition; the conditions' means in black.</summary>
-    public static byte[] PairedLines(string questionnaire, IReadOnlyList<ConditionScore> scores, IReadOnlyList<ComparisonRow> pairs)
+    /// <summary>
+    /// One line per participant through their scores in each condition, the conditions' means in black; under the
+    /// plot, every test with its name: Friedman's (three or more conditions) and, per pair, the mean difference with
+    /// the paired t test's p and the Wilcoxon signed-rank p (Holm-corrected with three or more conditions).
+    /// </summary>
+    public static byte[] PairedLines(string questionnaire, IReadOnlyList<ConditionScore> scores, IReadOnlyList<ComparisonRow> rows)
     {
         var conditions = scores.Select(s => s.Condition).Distinct().ToList();
-        var plot = Charts.Create(Messages.OneLine($"{questionnaire}: score per participant and condition"), "condition", "score");
+        string title = Charts.Wrap(Messages.OneLine($"{questionnaire}: score per participant and condition"), 70);
+        var plot = Charts.Create(title, "condition", "score (in the units of the scores file)");
         var participants = ParticipantOrder.Sort(scores.Select(s => s.Participant).Distinct(), p => p);
         var lookup = scores.Where(s => s.Score.HasValue).ToDictionary(s => (s.Participant, s.Condition), s => s.Score!.Value);
         var lx = new List<double>();
@@ -149,23 +201,48 @@ static class StudyCharts
             my.Add(values.Average());
         }
         Charts.Line(plot, mx, my, "mean", Charts.Black);
-        Charts.Points(plot, mx, my, "", Charts.Black);
-        // The pairs' mean differences and (Holm-corrected) Wilcoxon p in the axis label, where no line runs.
-        var notes = pairs.Where(r => double.IsFinite(r.Pair.MeanDifference))
-            .Select(r => $"{Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)} = {G(r.Pair.MeanDifference)}{(double.IsFinite(r.PHolm) ? $", p = {G(r.PHolm)}" : "")}").ToList();
-        plot.XLabel(notes.Count > 0 && notes.Count <= 3 ? "condition; " + string.Join("; ", notes) : "condition");
+        Charts.Points(plot, mx, my, "", Charts.Black, shape: 1);
         var finite = ly.Where(double.IsFinite).ToList();
         if (finite.Count > 0)
         {
             double low = finite.Min(), high = finite.Max(), span = Math.Max(high - low, 1e-9);
-            plot.Axes.SetLimitsY(low - 0.05 * span, high + 0.3 * span); // room above for the legend
+            plot.Axes.SetLimitsY(low - 0.08 * span, high + 0.08 * span);
         }
-        plot.Axes.Bottom.SetTicks(Enumerable.Range(1, conditions.Count).Select(i => (double)i).ToArray(), conditions.Select(c => Messages.OneLine(c.Length == 0 ? "(none)" : c)).ToArray());
+        // Names that fit under their column are written there; otherwise every condition gets a short code (C1, C2, …)
+        // and the key is listed with the tests, so no name is cut or broken inside a word.
+        int chars = Math.Max(8, 100 / Math.Max(1, conditions.Count));
+        var full = conditions.Select(c => Messages.OneLine(c.Length == 0 ? "(none)" : c)).ToList();
+        bool coded = full.Any(n => n.Split(' ').Any(word => word.Length > chars) || Charts.Wrap(n, chars).Split('\n').Length > 3);
+        string Name(string condition) => coded ? "C" + (conditions.IndexOf(condition) + 1) : Messages.OneLine(condition);
+        var names = coded ? full.Select((_, i) => "C" + (i + 1)).ToArray() : full.Select(n => Charts.Wrap(n, chars)).ToArray();
+        int lines = names.Length > 0 ? names.Max(n => n.Split('\n').Length) : 1;
+        plot.Axes.Bottom.SetTicks(Enumerable.Range(1, conditions.Count).Select(i => (double)i).ToArray(), names);
+        plot.Axes.Bottom.MinimumSize = 30 + 20 * lines;
         plot.Axes.SetLimitsX(0.5, conditions.Count + 0.5);
-        return Charts.Png(plot, Math.Clamp(300 + 200 * conditions.Count, 800, 2000), Height);
+        Charts.LegendBelow(plot);
+        int width = Math.Clamp(300 + 160 * conditions.Count, 900, 2400);
+
+        var tests = new List<string>();
+        if (coded) tests.Add("Conditions: " + string.Join("; ", full.Select((n, i) => $"C{i + 1} = {n}")));
+        var friedman = rows.FirstOrDefault(r => r.Friedman != null)?.Friedman;
+        if (friedman != null)
+            tests.Add($"Friedman test over {friedman.K} conditions: χ²({friedman.DegreesOfFreedom}) = {G(friedman.Statistic)}, p = {G(friedman.P)} (n = {friedman.N} complete participants)");
+        else if (conditions.Count >= 3)
+            tests.Add("Friedman test: not computed (too few participants complete in every condition)");
+        foreach (var r in rows.Where(r => r.Pair != null))
+        {
+            var pr = r.Pair;
+            string pair = $"{Name(r.ConditionB)} − {Name(r.ConditionA)}";
+            if (!double.IsFinite(pr.MeanDifference)) { tests.Add($"{pair}: too few pairs (n = {pr.N})"); continue; }
+            string wilcoxon = conditions.Count >= 3 && double.IsFinite(r.PHolm) ? $"Wilcoxon signed-rank p = {G(pr.WP)}, Holm-corrected p = {G(r.PHolm)}" : $"Wilcoxon signed-rank p = {G(pr.WP)}";
+            tests.Add($"{pair} = {G(pr.MeanDifference)} (n = {pr.N}): paired t test p = {G(pr.TP)}; {wilcoxon}");
+        }
+        if (tests.Count == 0) return Charts.Png(plot, width, Height + 20 * lines);
+        var text = Charts.TextPanel(tests, width);
+        return Charts.PanelsPng(new[] { plot, text.Plot }, width, new[] { Height + 20 * lines, text.Height });
     }
 
-    static string G(double v) => v.ToString("G4", CultureInfo.InvariantCulture);
+    static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "n/a";
 
     /// <summary>Ticks every 1, 2 or 5 × 10^k (about eight across), each labelled with the decimals that step needs.</summary>
     static void FixedTicks(ScottPlot.IAxis axis, double range)

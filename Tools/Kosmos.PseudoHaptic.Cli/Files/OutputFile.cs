@@ -79,6 +79,7 @@ public sealed class OutputFile
             throw new CliException($"{option} {shown}: the folder {Messages.Path(System.IO.Path.GetDirectoryName(path) is { Length: > 0 } d ? d : folder)} does not exist");
         if (folderId.Kind != FileKind.Folder)
             throw new CliException($"{option} {shown}: {Messages.Path(System.IO.Path.GetDirectoryName(path) ?? folder)} is not a folder");
+        WritableFolder.Check(option, path, folder);
         return new OutputFile(option, path, Mode.Replace, target);
     }
 

@@ -79,7 +79,11 @@ public sealed class OutputFolder
             throw new CliException($"{option} {shown}: the folder {Messages.Path(System.IO.Path.GetDirectoryName(System.IO.Path.TrimEndingDirectorySeparator(path)) is { Length: > 0 } d ? d : parent)} does not exist");
         if (parentId.Kind != FileKind.Missing && parentId.Kind != FileKind.Folder)
             throw new CliException($"{option} {shown}: {Messages.Path(parent)} is not a folder");
-        if (!create) return null;
+        if (!create)
+        {
+            WritableFolder.Check(option, path, parent);
+            return null;
+        }
         try
         {
             if (parentId.Kind == FileKind.Missing) Directory.CreateDirectory(parent);

@@ -121,6 +121,131 @@ public static class Charts
 
     /// <summary>A line through (xs[i], ys[i]) in order; a non-finite point breaks the line.</summary>
     public static void Line(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour, bool dashed = false)
+        => Line(plot, xs, ys, label, colour, dashed ? LinePattern.Dashed : LinePattern.Solid, LineWidth);
+
+    /// <summary>Line patterns that stay apart in grey print: series i takes pattern i (solid, dotted, densely dashed, dashed).</summary>
+    static readonly LinePattern[] Patterns = { LinePattern.Solid, LinePattern.Dotted, LinePattern.DenselyDashed, LinePattern.Dashed };
+
+    public static LinePattern Pattern(int i) => Patterns[((i % Patterns.Length) + Patterns.Length) % Patterns.Length];
+
+    /// <summary>
+    /// The i-th object of a chart: colour i, line pattern i and a width that grows a little with i, so every line
+    /// stays visible (and apart in grey print) where objects move together.
+    /// </summary>
+    public static void Series(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, int i)
+        => Line(plot, xs, ys, label, Colour(i), Pattern(i), LineWidth + 0.5f * (i % Patterns.Length));
+
+    /// <summary>
+    /// The hand, drawn last so it lies over the objects: black, dashed, thin. An object that follows the hand exactly
+    /// (gain 1) shows between its dashes, in colour and in grey print.
+    /// </summary>
+    public static void Hand(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label)
+        => Line(plot, xs, ys, label, Black, LinePattern.Dashed, 1.5f);
+
+    /// <summary>The legend outside the data, in rows under the plot: it never covers a line.</summary>
+    public static void LegendBelow(Plot plot)
+    {
+        plot.ShowLegend(Edge.Bottom);
+        plot.Legend.Orientation = Orientation.Horizontal;
+    }
+
+    /// <summary>A horizontal reference line (a threshold) with its name in the legend.</summary>
+    public static void Threshold(Plot plot, double y, string label)
+    {
+        var line = plot.Add.HorizontalLine(y);
+        line.Color = Color.FromHex("#505050");
+        line.LineWidth = 1.5f;
+        line.LinePattern = LinePattern.DenselyDashed;
+        line.LegendText = label;
+    }
+
+    /// <summary>A chart with nothing to draw: its title and one sentence saying why, instead of empty axes.</summary>
+    public static Plot Empty(string title, string sentence)
+    {
+        var plot = Create(title, "", "");
+        plot.Axes.Frameless();
+        plot.HideGrid();
+        plot.Axes.SetLimits(0, 1, 0, 1);
+        var text = plot.Add.Text(Wrap(sentence, 80), 0.5, 0.5);
+        text.LabelFontSize = LabelSize;
+        text.LabelFontName = FontName.Value;
+        text.LabelFontColor = TextColour;
+        text.LabelAlignment = Alignment.MiddleCenter;
+        return plot;
+    }
+
+    /// <summary>
+    /// Lines of text as a panel under a chart (the tests behind its p values), each wrapped to the width; returns the
+    /// plot and the height it needs.
+    /// </summary>
+    public static (Plot Plot, int Height) TextPanel(IReadOnlyList<string> lines, int width)
+    {
+        int chars = Math.Max(40, (int)(width / (NoteSize * 0.62)) - 4);
+        var wrapped = lines.Select(l => Wrap(l, chars)).ToList();
+        int count = wrapped.Sum(l => l.Split('\n').Length);
+        int height = 30 + (int)Math.Ceiling(count * (NoteSize + 2) * 1.35);
+        var plot = Create("", "", "");
+        plot.Axes.Frameless();
+        plot.HideGrid();
+        plot.Axes.SetLimits(0, 1, 0, 1);
+        var text = plot.Add.Text(string.Join("\n", wrapped), 0.01, 0.98);
+        text.LabelFontSize = NoteSize + 2;
+        text.LabelFontName = FontName.Value;
+        text.LabelFontColor = TextColour;
+        text.LabelAlignment = Alignment.UpperLeft;
+        text.LabelLineSpacing = (NoteSize + 2) * 1.3f;
+        return (plot, height);
+    }
+
+    /// <summary>Text broken into lines of at most <paramref name="width"/> characters at spaces (a long word stays whole).</summary>
+    public static string Wrap(string text, int width) => Kosmos.PseudoHaptic.Evaluation.TextWrap.Wrap(text ?? "", width);
+
+    /// <summary>
+    /// Panels stacked top to bottom into one PNG of <paramref name="width"/> pixels: one quantity per panel (x, y, z
+    /// apart), each laid out by ScottPlot on its own, their time axes the same.
+    /// </summary>
+    public static byte[] PanelsPng(IReadOnlyList<Plot> panels, int width, IReadOnlyList<int> heights)
+    {
+        using var surface = SkiaSharp.SKSurface.Create(new SkiaSharp.SKImageInfo(width, heights.Sum()));
+        var canvas = surface.Canvas;
+        canvas.Clear(SkiaSharp.SKColors.White);
+        int top = 0;
+        for (int i = 0; i < panels.Count; i++)
+        {
+            using var bitmap = SkiaSharp.SKBitmap.Decode(Png(panels[i], width, heights[i]));
+            canvas.DrawBitmap(bitmap, 0, top);
+            top += heights[i];
+        }
+        using var image = surface.Snapshot();
+        using var data = image.Encode(SkiaSharp.SKEncodedImageFormat.Png, 100);
+        return data.ToArray();
+    }
+
+    /// <summary>The panels of <see cref="PanelsPng"/> as one SVG document (each panel's SVG nested at its offset).</summary>
+    public static string PanelsSvg(IReadOnlyList<Plot> panels, int width, IReadOnlyList<int> heights)
+    {
+        var sb = new System.Text.StringBuilder($"<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{width}\" height=\"{heights.Sum()}\" viewBox=\"0 0 {width} {heights.Sum()}\">\n");
+        int top = 0;
+        for (int i = 0; i < panels.Count; i++)
+        {
+            string inner = Svg(panels[i], width, heights[i]);
+            int start = inner.IndexOf("<svg", StringComparison.Ordinal);
+            sb.Append($"<g transform=\"translate(0,{top})\">").Append(start >= 0 ? inner[start..] : inner).Append("</g>\n");
+            top += heights[i];
+        }
+        return sb.Append("</svg>\n").ToString();
+    }
+
+    /// <summary><see cref="Save"/> for stacked panels.</summary>
+    public static void SavePanels(IReadOnlyList<Plot> panels, string pngPath, int width, IReadOnlyList<int> heights, bool svg)
+    {
+        byte[] png = PanelsPng(panels, width, heights);
+        string? svgText = svg ? PanelsSvg(panels, width, heights) : null;
+        Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(pngPath, temp => File.WriteAllBytes(temp, png));
+        if (svgText != null) Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteAllText(Path.ChangeExtension(pngPath, ".svg"), svgText);
+    }
+
+    static void Line(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour, LinePattern pattern, float width)
     {
         CheckLengths(xs, ys);
         // ScottPlot joins across NaN; split the series at every non-finite point instead, one legend entry.
@@ -132,8 +257,8 @@ public static class Charts
             if (i > start)
             {
                 var scatter = plot.Add.ScatterLine(Slice(xs, start, i), Slice(ys, start, i), colour);
-                scatter.LineWidth = LineWidth;
-                if (dashed) scatter.LinePattern = LinePattern.Dashed;
+                scatter.LineWidth = width;
+                scatter.LinePattern = pattern;
                 if (!labelled) scatter.LegendText = label;
                 labelled = true;
             }
@@ -143,7 +268,25 @@ public static class Charts
     }
 
     /// <summary>Markers at (xs[i], ys[i]); non-finite points are left out.</summary>
-    public static ScottPlot.Plottables.Scatter Points(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour)
+    /// <summary>Marker shapes that stay apart in grey print: series i takes shape i.</summary>
+    static readonly MarkerShape[] Shapes = { MarkerShape.FilledCircle, MarkerShape.FilledSquare, MarkerShape.FilledTriangleUp, MarkerShape.FilledDiamond, MarkerShape.OpenCircle, MarkerShape.FilledTriangleDown };
+
+    public static MarkerShape Shape(int i) => Shapes[((i % Shapes.Length) + Shapes.Length) % Shapes.Length];
+
+    /// <summary>Vertical error bars (a 95 % interval: <paramref name="low"/> to <paramref name="high"/>) in <paramref name="colour"/>.</summary>
+    public static void ErrorBars(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> low, IReadOnlyList<double> high, Color colour)
+    {
+        for (int i = 0; i < xs.Count; i++)
+        {
+            if (!double.IsFinite(xs[i]) || !double.IsFinite(low[i]) || !double.IsFinite(high[i])) continue;
+            var bar = plot.Add.Line(xs[i], low[i], xs[i], high[i]);
+            bar.Color = colour;
+            bar.LineWidth = 1.5f;
+            bar.MarkerSize = 0;
+        }
+    }
+
+    public static ScottPlot.Plottables.Scatter Points(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, Color colour, int shape = 0)
     {
         CheckLengths(xs, ys);
         var fx = new List<double>();
@@ -157,6 +300,7 @@ public static class Charts
 
         var scatter = plot.Add.ScatterPoints(fx.ToArray(), fy.ToArray(), colour);
         scatter.MarkerSize = MarkerSize;
+        scatter.MarkerShape = Shape(shape);
         scatter.LegendText = label;
         return scatter;
     }
@@ -226,34 +370,6 @@ public static class Charts
         if (svgText != null) Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteAllText(Path.ChangeExtension(pngPath, ".svg"), svgText);
     }
 
-    /// <summary>The command-line flag that asks for an SVG beside each PNG chart.</summary>
-    public const string SvgFlag = "--svg";
-
-    /// <summary>
-    /// A command's arguments without the flag <c>--svg</c> (which takes no value), for <see cref="Options"/>;
-    /// <paramref name="svg"/> tells whether it was given. Only option names are looked at, not their values
-    /// ("--out --svg" keeps "--svg" as the folder name). Given twice, it is an error naming it.
-    /// </summary>
-    public static string[] TakeSvgFlag(string[] args, out bool svg)
-    {
-        ArgumentNullException.ThrowIfNull(args);
-        svg = false;
-        var rest = new List<string>(args.Length);
-        for (int i = 0; i < args.Length; i++)
-        {
-            if (args[i] == SvgFlag)
-            {
-                if (svg) throw new CliException($"option {SvgFlag} is given twice");
-                svg = true;
-                continue;
-            }
-
-            rest.Add(args[i]);
-            if (args[i].StartsWith("--", StringComparison.Ordinal) && i + 1 < args.Length) rest.Add(args[++i]);
-        }
-
-        return rest.ToArray();
-    }
 
     /// <summary>The plot as PNG bytes of exactly <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
     public static byte[] Png(Plot plot, int width, int height)

@@ -5,7 +5,7 @@ namespace Kosmos.PseudoHaptic.Cli.Traces;
 
 /// <summary>
 /// Trace rows waiting in order, in bounded memory: the first <see cref="InMemory"/> in a list, the rest in a
-/// temporary file (".ph" + 8 hex + ".tmp" in the given folder, 66 bytes a row), deleted when drained,
+/// temporary file (".ph" + 8 hex + ".tmp" in the given folder, 98 bytes a row), deleted when drained,
 /// disposed, or the process is stopped by SIGINT/SIGTERM.
 /// </summary>
 public sealed class FrameBuffer(string folder) : IDisposable
@@ -40,6 +40,10 @@ public sealed class FrameBuffer(string folder) : IDisposable
         _writer.Write(r.Hand2Z);
         _writer.Write(r.Tracked2);
         _writer.Write(r.Pose2T);
+        _writer.Write(r.Rig.X);
+        _writer.Write(r.Rig.Y);
+        _writer.Write(r.Rig.Z);
+        _writer.Write(r.Rig.YawDegrees);
         _spilled++;
     }
 
@@ -63,6 +67,7 @@ public sealed class FrameBuffer(string folder) : IDisposable
                     r.Hand2Z = reader.ReadDouble();
                     r.Tracked2 = reader.ReadBoolean();
                     r.Pose2T = reader.ReadDouble();
+                    r.Rig = new RigFrame(reader.ReadDouble(), reader.ReadDouble(), reader.ReadDouble(), reader.ReadDouble());
                     write(r);
                 }
         }

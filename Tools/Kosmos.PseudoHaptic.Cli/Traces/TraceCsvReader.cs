@@ -14,7 +14,9 @@ namespace Kosmos.PseudoHaptic.Cli.Traces;
 /// Issue 10 adds, optionally: <c>hand_x,hand_z</c> (both or neither), a second hand <c>hand2_y</c> (required
 /// by any other <c>hand2_*</c>, <c>tracked2</c> or <c>pose2_t</c>), <c>hand2_x,hand2_z</c> (both or neither, only
 /// with <c>hand_x,hand_z</c>), <c>tracked2</c>, <c>pose2_t</c>, each with the first hand's number rules
-/// (<see cref="TryReadRow"/>).
+/// (<see cref="TryReadRow"/>). Issue 26 adds, optionally, the world pose of the tracking origin in each row:
+/// <c>rig_x,rig_y,rig_z</c> (m) and <c>rig_yaw</c> (degrees about +y), all four or none, each value present,
+/// finite and within ±<see cref="WeightSolver.MaxCoordinate"/> (<see cref="RigFrame"/>).
 /// </summary>
 public sealed class TraceCsvReader : IDisposable
 {
@@ -22,6 +24,10 @@ public sealed class TraceCsvReader : IDisposable
     readonly string _name;
     readonly int _t, _handY, _tracked, _poseT;
     readonly int _handX, _handZ, _hand2X, _hand2Y, _hand2Z, _tracked2, _pose2T;
+    readonly int _rigX, _rigY, _rigZ, _rigYaw;
+
+    /// <summary>The rig's columns, in the order their absence is reported.</summary>
+    public static readonly string[] RigColumns = { "rig_x", "rig_y", "rig_z", "rig_yaw" };
 
     public TraceCsvReader(TextReader reader, string name)
     {
@@ -41,6 +47,10 @@ public sealed class TraceCsvReader : IDisposable
             _hand2Z = _csv.IndexOf("hand2_z");
             _tracked2 = _csv.IndexOf("tracked2");
             _pose2T = _csv.IndexOf("pose2_t");
+            _rigX = _csv.IndexOf("rig_x");
+            _rigY = _csv.IndexOf("rig_y");
+            _rigZ = _csv.IndexOf("rig_z");
+            _rigYaw = _csv.IndexOf("rig_yaw");
         }
         catch (EvaluationFormatException e) { throw new CliException(e.Message); }
         int header = _csv.HeaderLine;
@@ -57,7 +67,17 @@ public sealed class TraceCsvReader : IDisposable
             throw Error(header, _hand2X >= 0 ? "column 'hand2_x' needs column 'hand2_z' (both or neither)" : "column 'hand2_z' needs column 'hand2_x' (both or neither)");
         if (_hand2X >= 0 && _handX < 0)
             throw Error(header, "columns 'hand2_x' and 'hand2_z' need columns 'hand_x' and 'hand_z'");
+        var rig = new[] { _rigX, _rigY, _rigZ, _rigYaw };
+        if (rig.Any(i => i >= 0) && rig.Any(i => i < 0))
+        {
+            var missing = RigColumns.Where((_, k) => rig[k] < 0).Select(c => $"'{c}'");
+            var present = RigColumns.Where((_, k) => rig[k] >= 0).Select(c => $"'{c}'");
+            throw Error(header, $"column {string.Join(", ", present)} needs {string.Join(", ", missing)}: the rig's pose is rig_x, rig_y, rig_z and rig_yaw, all four or none");
+        }
     }
+
+    /// <summary>The trace gives the rig's world pose (<c>rig_x,rig_y,rig_z,rig_yaw</c>) in every row.</summary>
+    public bool HasRig => _rigX >= 0;
 
     /// <summary>The trace has <c>hand_x</c> and <c>hand_z</c>.</summary>
     public bool HasHorizontal => _handX >= 0;
@@ -102,6 +122,9 @@ public sealed class TraceCsvReader : IDisposable
             row.Hand2X = row.Hand2Y = row.Hand2Z = row.Pose2T = double.NaN;
             row.Tracked2 = false;
         }
+        row.Rig = _rigX >= 0
+            ? new RigFrame(RigValue(_rigX, "rig_x", line), RigValue(_rigY, "rig_y", line), RigValue(_rigZ, "rig_z", line), RigValue(_rigYaw, "rig_yaw", line))
+            : RigFrame.Origin;
         return true;
     }
 
@@ -111,6 +134,17 @@ public sealed class TraceCsvReader : IDisposable
         var s = _csv.Span(index);
         double v = double.NaN;
         if (s.Length > 0 && !NumberText.TryParse(s, out v)) throw Error(line, $"column '{column}': cannot parse '{Short(s)}' as a number");
+        return v;
+    }
+
+    /// <summary>A rig column's value: present, a number, finite and within ±1e5 (metres, or degrees for the yaw).</summary>
+    double RigValue(int index, string column, int line)
+    {
+        var s = _csv.Span(index);
+        if (s.Trim().Length == 0) throw Error(line, $"column '{column}' is empty; the rig's pose must be given in every row");
+        if (!NumberText.TryParse(s, out double v)) throw Error(line, $"column '{column}': cannot parse '{Short(s)}' as a number");
+        if (!double.IsFinite(v) || Math.Abs(v) > WeightSolver.MaxCoordinate)
+            throw Error(line, $"column '{column}': {Short(s)} is not a finite number within ±{WeightSolver.MaxCoordinate:0} ({(column == "rig_yaw" ? "degrees" : "m")})");
         return v;
     }
 

@@ -33,8 +33,10 @@ public static class TraceSamples
         var times = new List<double>();
         var heights = new List<double>();
         int firstLine = 0;
-        while (reader.TryRead(out var f))
+        while (reader.TryReadRow(out var row))
         {
+            // The hand's own height: relative to the rig's when the trace gives it (issue 26), as replay weighs it.
+            var f = reader.HasRig ? row.First with { HandY = row.First.HandY - row.Rig.Y } : row.First;
             if (!f.IsUsable) continue;
             double t = usePoseTime && double.IsFinite(f.PoseTime) ? f.PoseTime : f.Time;
             if (!double.IsFinite(t)) continue;

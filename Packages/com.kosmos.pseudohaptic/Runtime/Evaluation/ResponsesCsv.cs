@@ -28,11 +28,21 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Reads <paramref name="reader"/> row by row (RFC 4180, <see cref="CsvReader"/>) and disposes it; more than
         /// <paramref name="maxRows"/> data rows, or more than <paramref name="maxCharacters"/> characters in their fields, is an error naming the row.</summary>
         public static ResponseSet Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
+            => Parse(reader, sourceName, catalog, maxRows, maxCharacters, ParticipantLimit.None);
+
+        /// <summary>As above, keeping at most what <paramref name="limit"/> allows (rows are streamed: their number is not bounded by memory).</summary>
+        public static ResponseSet Parse(TextReader reader, string sourceName, QuestionnaireCatalog catalog, int maxRows, long maxCharacters, ParticipantLimit limit)
         {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
+            if (limit == null) throw new ArgumentNullException(nameof(limit));
             var rows = CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, Columns);
             var set = new ResponseSet(catalog);
-            foreach (var row in rows) Add(set, sourceName, row);
+            foreach (var row in rows)
+            {
+                string why = limit.Admit(row[0]);
+                if (why != null) throw Fail(sourceName, row, why);
+                Add(set, sourceName, row);
+            }
             return set;
         }
 
@@ -42,14 +52,21 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// there is one set, condition "", read exactly as <see cref="Parse(TextReader, string, QuestionnaireCatalog)"/>.
         /// </summary>
         public static IReadOnlyList<KeyValuePair<string, ResponseSet>> ParseByCondition(TextReader reader, string sourceName, QuestionnaireCatalog catalog, out bool hasCondition, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
+            => ParseByCondition(reader, sourceName, catalog, out hasCondition, maxRows, maxCharacters, ParticipantLimit.None);
+
+        /// <summary>As above, keeping at most what <paramref name="limit"/> allows.</summary>
+        public static IReadOnlyList<KeyValuePair<string, ResponseSet>> ParseByCondition(TextReader reader, string sourceName, QuestionnaireCatalog catalog, out bool hasCondition, int maxRows, long maxCharacters, ParticipantLimit limit)
         {
             if (catalog == null) throw new ArgumentNullException(nameof(catalog));
+            if (limit == null) throw new ArgumentNullException(nameof(limit));
             var present = new bool[1];
             var sets = new List<KeyValuePair<string, ResponseSet>>();
             var byCondition = new Dictionary<string, ResponseSet>(StringComparer.Ordinal);
             foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, Columns, new[] { "condition" }, present))
             {
                 string condition = row[4] ?? "";
+                string why = limit.Admit(row[0], condition);
+                if (why != null) throw Fail(sourceName, row, why);
                 ResponseSet set;
                 if (!byCondition.TryGetValue(condition, out set))
                 {

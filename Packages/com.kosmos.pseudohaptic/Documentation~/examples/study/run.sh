@@ -4,7 +4,7 @@
 # --filter StudyExample). Run from this folder: sh run.sh [path/to/pseudohaptic]. Writes out/ (all files) and
 # copies the small ones shown in evaluation.md here.
 set -e
-PH=${1:-"dotnet run --project ../../../../../Tools/Kosmos.PseudoHaptic.Cli --"}
+PH=${1:-pseudohaptic}
 rm -rf out && mkdir out
 $PH psychometric --trials trials.csv --out out/fits --seed 1
 $PH score --responses responses.csv --out out/scores.csv

@@ -13,6 +13,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
     public static class PsychometricAnalysis
     {
         public static IReadOnlyList<PsychometricRow> Fit(IReadOnlyList<TrialAnswer> answers, double lapse, int resamples, long seed)
+            => Fit(answers, lapse, resamples, seed, null);
+
+        /// <param name="progress">Called after each group's fit and bootstrap with (groups done, groups), for long runs.</param>
+        public static IReadOnlyList<PsychometricRow> Fit(IReadOnlyList<TrialAnswer> answers, double lapse, int resamples, long seed, Action<int, int> progress)
         {
             if (answers == null) throw new ArgumentNullException(nameof(answers));
             var conditionOrder = new Dictionary<string, int>(StringComparer.Ordinal);
@@ -49,6 +53,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 long groupSeed = unchecked((long)seeds.NextUInt64());
                 var boot = PsychometricBootstrap.Run(fit, resamples, groupSeed);
                 rows.Add(new PsychometricRow(k.Participant, k.Condition, k.Standard, fit, boot));
+                progress?.Invoke(rows.Count, keys.Count);
             }
             return rows;
         }

@@ -1,0 +1,125 @@
+using System.Diagnostics;
+using System.Text.RegularExpressions;
+using Kosmos.PseudoHaptic.Cli.Accuracy;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tools.Tests;
+
+/// <summary>
+/// Every example is written as a user types it, and runs (issue 25): each ```sh block of README.md and of the
+/// package's Documentation~ that holds a <c>pseudohaptic</c> line is run as a bash script, and so is every example
+/// of every command's --help. They run in a scratch copy of the repository's example files (so nothing in the
+/// clone is written), with <c>pseudohaptic</c> on the PATH as the built tool, from the repository's root or from
+/// the folder a block names in a preceding <c>&lt;!-- examples run in: PATH --&gt;</c>. The one long command, the
+/// accuracy page's, is run by <see cref="AccuracyPageTests"/>.
+/// </summary>
+public class CliExamplesTests
+{
+    string _sandbox = "";
+
+    [OneTimeSetUp]
+    public void CreateSandbox()
+    {
+        if (!OperatingSystem.IsLinux() && !OperatingSystem.IsMacOS()) Assert.Ignore("the examples are sh");
+        _sandbox = Path.Combine(Path.GetTempPath(), "ph-examples-" + Guid.NewGuid().ToString("N"));
+        string examples = Path.Combine("Packages", "com.kosmos.pseudohaptic", "Documentation~", "examples");
+        Copy(Path.Combine(RepositoryRoot.Path, examples), Path.Combine(_sandbox, examples));
+        Directory.CreateDirectory(Path.Combine(_sandbox, "bin"));
+        string shim = Path.Combine(_sandbox, "bin", "pseudohaptic");
+        File.WriteAllText(shim, $"#!/bin/sh\nexec dotnet '{Path.Combine(AppContext.BaseDirectory, "pseudohaptic.dll")}' \"$@\"\n");
+        if (!OperatingSystem.IsWindows()) File.SetUnixFileMode(shim, UnixFileMode.UserRead | UnixFileMode.UserWrite | UnixFileMode.UserExecute);
+    }
+
+    [OneTimeTearDown]
+    public void DeleteSandbox()
+    {
+        if (_sandbox.Length > 0 && Directory.Exists(_sandbox)) Directory.Delete(_sandbox, recursive: true);
+    }
+
+    static void Copy(string from, string to)
+    {
+        Directory.CreateDirectory(to);
+        foreach (var file in Directory.GetFiles(from)) File.Copy(file, Path.Combine(to, Path.GetFileName(file)));
+        foreach (var dir in Directory.GetDirectories(from)) Copy(dir, Path.Combine(to, Path.GetFileName(dir)));
+    }
+
+    public sealed record Block(string Document, int Line, string Folder, string Script)
+    {
+        public override string ToString() => $"{Document}:{Line}";
+    }
+
+    /// <summary>The sh blocks with a pseudohaptic line, in README.md and Documentation~/*.md.</summary>
+    public static IEnumerable<Block> DocumentedBlocks()
+    {
+        string docs = Path.Combine("Packages", "com.kosmos.pseudohaptic", "Documentation~");
+        var files = new[] { "README.md" }.Concat(Directory.GetFiles(Path.Combine(RepositoryRoot.Path, docs), "*.md").Select(f => Path.Combine(docs, Path.GetFileName(f))).OrderBy(f => f, StringComparer.Ordinal));
+        foreach (var file in files)
+        {
+            var lines = File.ReadAllLines(Path.Combine(RepositoryRoot.Path, file));
+            for (int i = 0; i < lines.Length; i++)
+            {
+                if (lines[i] != "```sh") continue;
+                int end = Array.IndexOf(lines, "```", i + 1);
+                var body = lines[(i + 1)..end];
+                if (body.Any(l => l.StartsWith("pseudohaptic ", StringComparison.Ordinal)))
+                {
+                    var marker = i > 0 ? Regex.Match(lines[i - 1], @"^<!-- examples run in: (.+) -->$") : Match.Empty;
+                    yield return new Block(file, i + 1, marker.Success ? marker.Groups[1].Value : ".", string.Join('\n', body) + "\n");
+                }
+                i = end;
+            }
+        }
+    }
+
+    public static IEnumerable<string> HelpExamples() => Cli.Cli.Define().SelectMany(c => c.Examples);
+
+    (int Code, string Output) Bash(string folder, string script)
+    {
+        var info = new ProcessStartInfo("bash") { WorkingDirectory = Path.Combine(_sandbox, folder), RedirectStandardOutput = true, RedirectStandardError = true, RedirectStandardInput = true, UseShellExecute = false };
+        info.ArgumentList.Add("-e");
+        info.ArgumentList.Add("-c");
+        info.ArgumentList.Add(script);
+        info.Environment["PATH"] = Path.Combine(_sandbox, "bin") + ":" + Environment.GetEnvironmentVariable("PATH");
+        info.Environment["DOTNET_CLI_TELEMETRY_OPTOUT"] = "1";
+        using var p = Process.Start(info)!;
+        p.StandardInput.Close();
+        var stdout = p.StandardOutput.ReadToEndAsync();
+        var stderr = p.StandardError.ReadToEndAsync();
+        if (!p.WaitForExit(TimeSpan.FromMinutes(5)))
+        {
+            p.Kill(entireProcessTree: true);
+            Assert.Fail("did not end within 5 minutes: " + script);
+        }
+        p.WaitForExit();
+        return (p.ExitCode, stdout.Result + stderr.Result);
+    }
+
+    [TestCaseSource(nameof(DocumentedBlocks))]
+    public void Every_documented_example_runs(Block block)
+    {
+        string script = block.Script;
+        // The accuracy page's command takes two minutes and is AccuracyPageTests' to run.
+        if (script.Contains(AccuracyMarkdown.Command, StringComparison.Ordinal)) script = script.Replace(AccuracyMarkdown.Command, "");
+        Directory.CreateDirectory(Path.Combine(_sandbox, block.Folder));
+        var (code, output) = Bash(block.Folder, script);
+        Assert.That(code, Is.EqualTo(0), $"{block}:\n{script}\n{output}");
+    }
+
+    [TestCaseSource(nameof(HelpExamples))]
+    public void Every_help_example_runs(string example)
+    {
+        var (code, output) = Bash(".", example);
+        Assert.That(code, Is.EqualTo(0), example + "\n" + output);
+    }
+
+    [Test]
+    public void The_documents_examples_are_found_and_written_as_typed()
+    {
+        var blocks = DocumentedBlocks().ToList();
+        Assert.That(blocks.Count, Is.GreaterThanOrEqualTo(8), string.Join(", ", blocks));
+        Assert.That(blocks.Any(b => b.Script.Contains(AccuracyMarkdown.Command, StringComparison.Ordinal)), "the accuracy page's command is documented as run");
+        // No example asks for 'dotnet run … --' to reach the tool: it is installed (README, "Install the command").
+        foreach (var file in new[] { "README.md" }.Concat(Directory.GetFiles(Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic", "Documentation~"), "*.md")))
+            Assert.That(File.ReadAllText(Path.Combine(RepositoryRoot.Path, file)), Does.Not.Contain("--project Tools/Kosmos.PseudoHaptic.Cli -- "), file);
+    }
+}
