@@ -27,7 +27,7 @@ public static class ReplayCommand
         CliCommand.Value("--standard-speed", "V", $"the user's calibrated standard lifting speed, m/s, {WeightSolver.MinStandardSpeed}–{WeightSolver.MaxStandardSpeed} (default {WeightSolver.DefaultStandardSpeed})"),
         CliCommand.Choice("--profile", $"which effects act (default {NamedProfiles.PaperName})", NamedProfiles.Names.ToArray()),
         CliCommand.Value("--grab-offset", "D", "the object starts D metres below the first usable hand (default 0; negative: above)"),
-        CliCommand.Value("--break-away", "D", "let go when the object lags more than D metres behind the hand for 0.1 s (default: never)"));
+        CliCommand.Value("--break-away", "D", "let go when the hand pulls D metres too far, two poses in a row: under the offset correction (paper, xyz) D is how far the hand pulls beyond what the weight allows (the strain: the lag of an object moving at most the user's capped speed), without it (paper-experiment, gain) the hand-to-object distance beyond the grab's (default: never)"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("replay").ToArray());
 
@@ -71,7 +71,11 @@ public static class ReplayCommand
                 throw new CliException($"option --break-away: must be a finite number greater than 0 (metres), got {NumberText.Format(distance.Value)}");
             profile = profile.With(new BreakAway(distance.Value));
         }
-        return new WeightSolver3D(model, profile, speed);
+        try { return new WeightSolver3D(model, profile, speed); }
+        catch (ArgumentException e) when (distance.HasValue)
+        {
+            throw new CliException("option --break-away: " + e.Message); // a profile where it could never fire
+        }
     }
 
     /// <summary>--grab-offset D: metres, finite, default 0; the object starts D below the first usable hand (or the

@@ -267,17 +267,24 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>
-        /// The first three poses of the hold: the lift is measured from their median, not from the grab's own pose, which
-        /// may be a glitch (a hold that began on a glitched pose would otherwise keep the glitch as weight for good). The
-        /// grab offset stays: the object was placed against the hand as it was seen. A hand that moved through the three
-        /// poses moves the base by a pose's worth of motion; any change of the offset this makes glides.
+        /// The first three poses of the hold: when the grab's own pose lies more than <see cref="AnchorGlitch"/> from their
+        /// median, it may be a glitch, and the lift is measured from the median instead (a hold that began on a glitched pose
+        /// would otherwise keep the glitch as weight for good). Jitter stays within it, so a grab at rest is measured from its
+        /// own pose. The grab offset stays: the object was placed against the hand as it was seen. A hand that moved fast
+        /// through the three poses moves the base by a pose's worth of motion; any change of the offset this makes glides.
         /// </summary>
         void SettleAnchor(double p0, double median)
         {
             _state.AnchorPending = false;
-            _state.Base += median - p0;
-            _state.StartY += median - p0;
+            double shift = median - p0;
+            if (!(Math.Abs(shift) > AnchorGlitch)) return;
+            _state.Base += shift;
+            _state.StartY += shift;
         }
+
+        /// <summary>How far the grab's pose may lie from the median of the first three before the lift is measured from the
+        /// median, m: more than Quest's jitter at rest.</summary>
+        const double AnchorGlitch = 0.005;
 
         /// <summary>
         /// The weight's offset changes with the hand, at most as fast as the hand moves (times a light object's lead). A change
