@@ -1,4 +1,5 @@
-// Compile-only. Transcribed from Unity's C# reference source, branch 2022.3: Modules/Subsystems/ISubsystem.cs,
+// Test double: SubsystemManager lists the subsystem instances a driver registered; Start/Stop set running.
+// Transcribed from Unity's C# reference source, branch 2022.3: Modules/Subsystems/ISubsystem.cs,
 // ISubsystemDescriptor.cs, SubsystemManager.cs, SubsystemWithProvider.cs, SubsystemDescriptorWithProvider.cs,
 // SubsystemProvider.cs (module com.unity.modules.subsystems). Only the public members the XR Hands declarations
 // derive from or the package calls; the internal plumbing is left out.
@@ -22,7 +23,14 @@ namespace UnityEngine
 
     public static partial class SubsystemManager
     {
-        public static void GetSubsystems<T>(List<T> subsystems) where T : ISubsystem => throw null;
+        internal static readonly List<ISubsystem> Instances = new List<ISubsystem>();
+
+        public static void GetSubsystems<T>(List<T> subsystems) where T : ISubsystem
+        {
+            subsystems.Clear();
+            foreach (ISubsystem s in Instances)
+                if (s is T t) subsystems.Add(t);
+        }
     }
 }
 
@@ -30,13 +38,33 @@ namespace UnityEngine.SubsystemsImplementation
 {
     public abstract class SubsystemWithProvider : ISubsystem
     {
-        public void Start() => throw null;
+        public void Start()
+        {
+            if (running) return;
+            running = true;
+            OnStart();
+        }
+
         protected abstract void OnStart();
-        public void Stop() => throw null;
+
+        public void Stop()
+        {
+            if (!running) return;
+            running = false;
+            OnStop();
+        }
+
         protected abstract void OnStop();
-        public void Destroy() => throw null;
+
+        public void Destroy()
+        {
+            Stop();
+            SubsystemManager.Instances.Remove(this);
+            OnDestroy();
+        }
+
         protected abstract void OnDestroy();
-        public bool running => throw null;
+        public bool running { get; private set; }
     }
 
     public abstract class SubsystemWithProvider<TSubsystem, TSubsystemDescriptor, TProvider> : SubsystemWithProvider
@@ -44,28 +72,36 @@ namespace UnityEngine.SubsystemsImplementation
         where TSubsystemDescriptor : SubsystemDescriptorWithProvider
         where TProvider : SubsystemProvider<TSubsystem>
     {
-        public TSubsystemDescriptor subsystemDescriptor => throw null;
-        protected override void OnStart() => throw null;
-        protected override void OnStop() => throw null;
-        protected override void OnDestroy() => throw null;
+        public TSubsystemDescriptor subsystemDescriptor { get; internal set; }
+        protected override void OnStart() { }
+        protected override void OnStop() { }
+        protected override void OnDestroy() { }
     }
 
     public abstract class SubsystemDescriptorWithProvider : ISubsystemDescriptor
     {
-        public string id { get => throw null; set => throw null; }
-        ISubsystem ISubsystemDescriptor.Create() => throw null;
+        public string id { get; set; }
+        ISubsystem ISubsystemDescriptor.Create() => CreateImpl();
+        internal abstract ISubsystem CreateImpl();
     }
 
     public class SubsystemDescriptorWithProvider<TSubsystem, TProvider> : SubsystemDescriptorWithProvider
         where TSubsystem : SubsystemWithProvider, new()
         where TProvider : SubsystemProvider<TSubsystem>
     {
-        public TSubsystem Create() => throw null;
+        public TSubsystem Create()
+        {
+            var s = new TSubsystem();
+            SubsystemManager.Instances.Add(s);
+            return s;
+        }
+
+        internal override ISubsystem CreateImpl() => Create();
     }
 
     public abstract class SubsystemProvider
     {
-        public bool running => throw null;
+        public bool running { get; internal set; }
     }
 
     public abstract class SubsystemProvider<TSubsystem> : SubsystemProvider

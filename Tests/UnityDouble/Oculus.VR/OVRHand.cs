@@ -30,18 +30,3 @@ public class OVRHand : MonoBehaviour
     public bool GetFingerIsPinching(HandFinger finger) => throw null;
     public TrackingConfidence GetFingerConfidence(HandFinger finger) => throw null;
 }
-
-public class OVRProjectConfig : ScriptableObject
-{
-    public enum HandTrackingSupport
-    {
-        ControllersOnly = 0,
-        ControllersAndHands = 1,
-        HandsOnly = 2,
-    }
-
-    public HandTrackingSupport handTrackingSupport;
-
-    public static OVRProjectConfig CachedProjectConfig => throw null;
-    public static void CommitProjectConfig(OVRProjectConfig projectConfig) => throw null;
-}

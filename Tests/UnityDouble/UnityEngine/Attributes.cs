@@ -1,4 +1,4 @@
-// Compile-only. Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
+// Test double (attributes carry their arguments). Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Runtime/Export/Serialization/Serialization.cs (SerializeField), Runtime/Export/PropertyDrawer/PropertyAttribute.cs
 //   (PropertyAttribute, TooltipAttribute, HeaderAttribute), Runtime/Export/Scripting/Attributes.cs (AddComponentMenu,
 //   DisallowMultipleComponent, CreateAssetMenuAttribute, ContextMenu, HideInInspector), Runtime/Export/Scripting/RuntimeInitializeOnLoadAttribute.cs
@@ -19,18 +19,21 @@ namespace UnityEngine
     [AttributeUsage(AttributeTargets.All, Inherited = true, AllowMultiple = false)]
     public class TooltipAttribute : PropertyAttribute
     {
-        public TooltipAttribute(string tooltip) => throw null;
+        public readonly string tooltip;
+        public TooltipAttribute(string tooltip) => this.tooltip = tooltip;
     }
 
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = true)]
     public class HeaderAttribute : PropertyAttribute
     {
-        public HeaderAttribute(string header) => throw null;
+        public readonly string header;
+        public HeaderAttribute(string header) => this.header = header;
     }
 
     public sealed class AddComponentMenu : Attribute
     {
-        public AddComponentMenu(string menuName) => throw null;
+        public AddComponentMenu(string menuName) => componentMenu = menuName;
+        public string componentMenu { get; }
     }
 
     public sealed class HideInInspector : Attribute
@@ -45,21 +48,31 @@ namespace UnityEngine
     [AttributeUsage(AttributeTargets.Class, AllowMultiple = false, Inherited = false)]
     public sealed class CreateAssetMenuAttribute : Attribute
     {
-        public string menuName { get => throw null; set => throw null; }
-        public string fileName { get => throw null; set => throw null; }
-        public int order { get => throw null; set => throw null; }
+        public string menuName { get; set; }
+        public string fileName { get; set; }
+        public int order { get; set; }
     }
 
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
     public sealed class ContextMenu : Attribute
     {
-        public ContextMenu(string itemName) => throw null;
+        public ContextMenu(string itemName) => menuItem = itemName;
+        public readonly string menuItem;
     }
 
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = false)]
     public class RuntimeInitializeOnLoadMethodAttribute : Attribute
     {
-        public RuntimeInitializeOnLoadMethodAttribute(RuntimeInitializeLoadType loadType) => throw null;
+        public RuntimeInitializeOnLoadMethodAttribute(RuntimeInitializeLoadType loadType) => this.loadType = loadType;
+        public RuntimeInitializeLoadType loadType { get; }
+    }
+
+    /// <summary>Scripts of a class with this attribute run before (negative) or after (positive) those without, in every phase.</summary>
+    [AttributeUsage(AttributeTargets.Class)]
+    public class DefaultExecutionOrder : Attribute
+    {
+        public DefaultExecutionOrder(int order) => this.order = order;
+        public int order { get; }
     }
 
     public enum RuntimeInitializeLoadType
