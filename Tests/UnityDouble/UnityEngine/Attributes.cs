@@ -67,6 +67,15 @@ namespace UnityEngine
         public RuntimeInitializeLoadType loadType { get; }
     }
 
+    /// <summary>AddComponent adds the required components first (when the GameObject lacks them).</summary>
+    [AttributeUsage(AttributeTargets.Class, AllowMultiple = true, Inherited = true)]
+    public sealed class RequireComponent : Attribute
+    {
+        public Type m_Type0;
+
+        public RequireComponent(Type requiredComponent) => m_Type0 = requiredComponent;
+    }
+
     /// <summary>Scripts of a class with this attribute run before (negative) or after (positive) those without, in every phase.</summary>
     [AttributeUsage(AttributeTargets.Class)]
     public class DefaultExecutionOrder : Attribute

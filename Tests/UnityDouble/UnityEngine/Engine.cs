@@ -7,6 +7,7 @@
 // as Unity does, and the loop goes on. Internal: the test driver (Driver/) runs it.
 using System;
 using System.Collections.Generic;
+using System.Linq;
 using System.Reflection;
 
 namespace UnityEngine
@@ -39,6 +40,9 @@ namespace UnityEngine
                             Debug.LogError("Can't add component '" + type.Name + "' to " + go.name + " because such a component is already added to the game object!");
                             return null;
                         }
+            foreach (RequireComponent required in type.GetCustomAttributes(typeof(RequireComponent), true))
+                if (required.m_Type0 != null && go.GetComponents<Component>().All(c => !required.m_Type0.IsInstanceOfType(c)))
+                    AddComponent(go, required.m_Type0);
             var component = (Component)Activator.CreateInstance(type, true);
             component.Owner = go;
             go.Components.Add(component);

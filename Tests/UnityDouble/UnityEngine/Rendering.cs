@@ -107,6 +107,7 @@ namespace UnityEngine
         public Material material { get; set; }
     }
 
+    [RequireComponent(typeof(MeshRenderer))]
     public sealed class TextMesh : Component
     {
         public string text { get; set; } = "";

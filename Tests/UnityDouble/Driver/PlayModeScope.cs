@@ -1,0 +1,77 @@
+// The tests' handle on the double (never part of the per-asmdef compile check, so package code cannot use it).
+using System;
+using NUnit.Framework;
+using NUnit.Framework.Interfaces;
+using UnityEngine;
+using UnityEngine.TestTools.Logging;
+
+namespace UnityDouble
+{
+    /// <summary>
+    /// Put on a test assembly (<c>[assembly: PlayModeScope]</c>): each test starts in an empty scene with the clock at
+    /// zero, inside a log scope (an unexpected error, assertion or exception logged fails it, and so does an expected
+    /// message that never came, as in Unity's Test Framework), and its objects are destroyed after it. Unity keeps one
+    /// scene for a whole play-mode run; here no test can disturb another through objects it left behind.
+    /// </summary>
+    [AttributeUsage(AttributeTargets.Assembly | AttributeTargets.Class | AttributeTargets.Method)]
+    public sealed class PlayModeScopeAttribute : Attribute, ITestAction
+    {
+        [ThreadStatic] static LogScope s_scope;
+
+        public ActionTargets Targets => ActionTargets.Test;
+
+        public void BeforeTest(ITest test)
+        {
+            Engine.Reset();
+            s_scope = new LogScope();
+        }
+
+        public void AfterTest(ITest test)
+        {
+            LogScope scope = s_scope;
+            s_scope = null;
+            try
+            {
+                if (TestContext.CurrentContext.Result.Outcome.Status != TestStatus.Failed) scope?.Check(true);
+            }
+            finally
+            {
+                scope?.Dispose();
+                Engine.Reset();
+            }
+        }
+    }
+
+    /// <summary>Runs the double's player loop.</summary>
+    public static class Frames
+    {
+        /// <summary>90 Hz, the Quest 2's default refresh rate: a frame's duration when Time.captureDeltaTime is not set.</summary>
+        public const float DefaultDuration = Engine.DefaultFrameTime;
+
+        /// <summary><paramref name="count"/> frames of <paramref name="dt"/> seconds each (Time.captureDeltaTime wins when set).</summary>
+        public static void Run(int count, float dt = Engine.DefaultFrameTime)
+        {
+            for (int i = 0; i < count; i++) Engine.Frame(dt);
+        }
+
+        /// <summary>Frames until <paramref name="seconds"/> of game time have passed.</summary>
+        public static void For(double seconds, float dt = Engine.DefaultFrameTime)
+        {
+            double until = Time.timeAsDouble + seconds;
+            while (Time.timeAsDouble < until - 1e-9) Engine.Frame(dt);
+        }
+    }
+
+    /// <summary>Contacts a test supplies (the double has no physics engine beyond spheres and boxes overlapping).</summary>
+    public static class Contacts
+    {
+        /// <summary>From the next fixed step on, the two colliders touch (or, with false, stop touching unless they overlap).</summary>
+        public static void Declare(Collider a, Collider b, bool touching) => PhysicsScene.Declare(a, b, touching);
+    }
+
+    /// <summary>Settings of the editor the tests run "in".</summary>
+    public static class Editor
+    {
+        public static bool IsBatchMode { get => Application.IsBatchModeState; set => Application.IsBatchModeState = value; }
+    }
+}
