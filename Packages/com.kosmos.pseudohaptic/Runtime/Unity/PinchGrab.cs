@@ -98,12 +98,11 @@ namespace Kosmos.PseudoHaptic
         bool IGrabDriver.IsStillHeld => _held != null && _held.Hold.Holds(Id);
         bool IGrabDriver.BrokeAway => _held != null && _held.Hold.BrokeAway;
 
+        // x/z: the hold's, from every hand on the object (HeldObject.GrabTarget), so two hands agree whichever ticks last.
         void IGrabDriver.Follow(bool tracked)
         {
-            Transform t = _held.transform;
-            t.position = GrabFollow.Horizontal(t.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble(), tracked, GrabFollow.GrabMovesHorizontal(_followHorizontal, _held.Hold)).ToUnity();
             IPinchHandPoseSource hand = Hand;
-            _held.Step(Id, _position, tracked, hand.IsHighConfidence, hand.PoseTime, _dt);
+            _held.Step(Id, _position, tracked, hand.IsHighConfidence, hand.PoseTime, _dt, GrabFollow.GrabMovesHorizontal(_followHorizontal, _held.Hold));
         }
 
         void IGrabDriver.Release()

@@ -151,12 +151,16 @@ namespace Kosmos.PseudoHaptic
             return began;
         }
 
-        /// <summary>One frame of hand <paramref name="hand"/>; writes the object's local y (and x/z with lateral inertia) and returns y. Never throws, never allocates.</summary>
-        public float Step(int hand, Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt)
+        /// <summary>
+        /// One frame of hand <paramref name="hand"/>; writes the object's local y (and x/z: the solver's with lateral inertia,
+        /// else, when <paramref name="grabMovesHorizontal"/>, the mean of the hands on it plus the offset it had from them:
+        /// <see cref="HeldObject.GrabTarget"/>) and returns y. Never throws, never allocates.
+        /// </summary>
+        public float Step(int hand, Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt, bool grabMovesHorizontal = false)
         {
             if (IsHeld && NeedsConfiguration) Configure(); // only after a setting changed
             double y = Hold.Step(hand, handWorld.ToDouble(), isTracked, isHighConfidence, poseTime, dt);
-            transform.position = Hold.Horizontal(transform.position.ToDouble()).ToUnity();
+            transform.position = Hold.Horizontal(transform.position.ToDouble(), grabMovesHorizontal).ToUnity();
             SetLocalY(y);
             Hold.TrackObject(transform.position.ToDouble());
             return transform.localPosition.y;
