@@ -69,6 +69,13 @@ namespace UnityDouble
         public static void Declare(Collider a, Collider b, bool touching) => PhysicsScene.Declare(a, b, touching);
     }
 
+    /// <summary>What the double counts, for tests of per-frame work.</summary>
+    public static class Diagnostics
+    {
+        /// <summary>Component searches (GetComponent, GetComponents, GetComponentInParent, GetComponentsInChildren) so far.</summary>
+        public static long ComponentSearches => GameObject.Searches;
+    }
+
     /// <summary>Settings of the editor the tests run "in".</summary>
     public static class Editor
     {

@@ -41,7 +41,7 @@ namespace UnityEngine
                             return null;
                         }
             foreach (RequireComponent required in type.GetCustomAttributes(typeof(RequireComponent), true))
-                if (required.m_Type0 != null && go.GetComponents<Component>().All(c => !required.m_Type0.IsInstanceOfType(c)))
+                if (required.m_Type0 != null && go.Components.All(c => c.IsDestroyed || !required.m_Type0.IsInstanceOfType(c)))
                     AddComponent(go, required.m_Type0);
             var component = (Component)Activator.CreateInstance(type, true);
             component.Owner = go;
@@ -98,7 +98,7 @@ namespace UnityEngine
         internal static void ChangeActive(GameObject root, Action change)
         {
             var scripts = new List<(MonoBehaviour, bool)>();
-            foreach (MonoBehaviour mb in root.GetComponentsInChildren<MonoBehaviour>(true))
+            foreach (MonoBehaviour mb in root.InChildren<MonoBehaviour>(true))
                 scripts.Add((mb, mb.gameObject.activeInHierarchy));
             change();
             foreach ((MonoBehaviour mb, bool was) in scripts)
@@ -157,7 +157,7 @@ namespace UnityEngine
 
         static void DestroyGameObject(GameObject go)
         {
-            MonoBehaviour[] scripts = go.GetComponentsInChildren<MonoBehaviour>(true);
+            MonoBehaviour[] scripts = go.InChildren<MonoBehaviour>(true);
             foreach (MonoBehaviour mb in scripts)
                 if (!mb.IsDestroyed && mb.IsEnabledState) Disable(mb);
             foreach (MonoBehaviour mb in scripts)

@@ -138,6 +138,14 @@ namespace UnityEngine
 
         public static GameObject CreatePrimitive(PrimitiveType type) => Primitives.Create(type);
 
+        /// <summary>The first active GameObject of that name (Unity's GameObject.Find, without paths).</summary>
+        public static GameObject Find(string name)
+        {
+            foreach (GameObject go in Engine.GameObjects)
+                if (go.activeInHierarchy && go.name == name) return go;
+            return null;
+        }
+
         public Transform transform => (Transform)Components[0];
         public bool activeSelf => _activeSelf;
         public bool activeInHierarchy => !IsDestroyed && _activeSelf && (transform.parent == null || transform.parent.gameObject.activeInHierarchy);
@@ -150,8 +158,12 @@ namespace UnityEngine
             Engine.ChangeActive(this, () => _activeSelf = value);
         }
 
+        /// <summary>How many component searches ran (GetComponent and its kin), for tests of per-frame work.</summary>
+        internal static long Searches;
+
         public T GetComponent<T>()
         {
+            Searches++;
             foreach (Component c in Components)
                 if (!c.IsDestroyed && c is T t) return t;
             return default;
@@ -159,6 +171,7 @@ namespace UnityEngine
 
         public T[] GetComponents<T>()
         {
+            Searches++;
             var list = new List<T>();
             foreach (Component c in Components)
                 if (!c.IsDestroyed && c is T t) list.Add(t);
@@ -168,6 +181,7 @@ namespace UnityEngine
         /// <summary>On this GameObject or its parents, active ones only (as Unity's default).</summary>
         public T GetComponentInParent<T>()
         {
+            Searches++;
             for (Transform t = transform; t != null; t = t.parent)
             {
                 if (!t.gameObject.activeInHierarchy) continue;
@@ -188,9 +202,25 @@ namespace UnityEngine
         /// <summary>Depth first, this GameObject first; inactive GameObjects only when asked.</summary>
         public T[] GetComponentsInChildren<T>(bool includeInactive)
         {
+            Searches++;
+            return InChildren<T>(includeInactive);
+        }
+
+        /// <summary>The engine's own search, not counted in <see cref="Searches"/>.</summary>
+        internal T[] InChildren<T>(bool includeInactive)
+        {
             var list = new List<T>();
             Collect(transform, includeInactive, list);
             return list.ToArray();
+        }
+
+        /// <summary>The engine's own search on this GameObject and its parents, not counted.</summary>
+        internal T InParent<T>() where T : class
+        {
+            for (Transform t = transform; t != null; t = t.parent)
+                foreach (Component c in t.gameObject.Components)
+                    if (!c.IsDestroyed && c is T found) return found;
+            return null;
         }
 
         static void Collect<T>(Transform t, bool includeInactive, List<T> into)

@@ -8,6 +8,7 @@
 // (Driver.Contacts). Public members are those of UnityCsReference 2022.3 Modules/Physics/ScriptBindings/Dynamics.bindings.cs.
 using System;
 using System.Collections.Generic;
+using System.Linq;
 
 namespace UnityEngine
 {
@@ -34,7 +35,7 @@ namespace UnityEngine
         public bool enabled { get; set; } = true;
         public bool isTrigger { get; set; }
 
-        public Rigidbody attachedRigidbody => GetComponentInParent<Rigidbody>();
+        public Rigidbody attachedRigidbody => Owner.InParent<Rigidbody>();
 
         /// <summary>The point of the collider nearest <paramref name="position"/>; the position itself when inside.</summary>
         public Vector3 ClosestPoint(Vector3 position)
@@ -168,8 +169,8 @@ namespace UnityEngine
         {
             var colliders = new List<Collider>();
             foreach (GameObject go in Engine.GameObjects)
-                foreach (Collider c in go.GetComponents<Collider>())
-                    if (Live(c)) colliders.Add(c);
+                foreach (Component c in go.Components)
+                    if (c is Collider collider && Live(collider)) colliders.Add(collider);
             var now = new HashSet<(Collider, Collider)>();
             for (int i = 0; i < colliders.Count; i++)
                 for (int j = i + 1; j < colliders.Count; j++)
@@ -197,8 +198,8 @@ namespace UnityEngine
         static void Send(Collider self, Collider other, string message)
         {
             if (self == null || other == null) return;
-            foreach (MonoBehaviour mb in self.gameObject.GetComponents<MonoBehaviour>())
-                if (!mb.IsDestroyed) Engine.Send(mb, message, other);
+            foreach (Component c in self.gameObject.Components.ToArray())
+                if (c is MonoBehaviour mb && !mb.IsDestroyed) Engine.Send(mb, message, other);
         }
 
         static bool Overlap(Collider a, Collider b)

@@ -95,7 +95,7 @@ namespace UnityEngine
         {
             get
             {
-                foreach (Camera c in FindObjectsByType<Camera>(FindObjectsSortMode.InstanceID))
+                foreach (Camera c in Engine.FindObjects<Camera>(FindObjectsSortMode.InstanceID))
                     if (c.isActiveAndEnabled && c.gameObject.tag == "MainCamera") return c;
                 return null;
             }

@@ -39,7 +39,16 @@ namespace Kosmos.PseudoHaptic
         public HandGrab Grab => _grab;
         public HandDrawing Drawing => _drawing;
         public IPinchHandPoseSource Hand => _source ?? (_source = HandSourceField.Resolve<IPinchHandPoseSource>(_hand));
-        public float Reach { get => _reach; set => _reach = value; }
+        /// <summary>How near the hand must be to an object's collider to grab it, m (finite, ≥ 0).</summary>
+        public float Reach
+        {
+            get => _reach;
+            set
+            {
+                FieldRules.Require(FieldRules.NonNegative(nameof(Reach), value), nameof(Reach), value);
+                _reach = value;
+            }
+        }
         public float ReleaseAfterLost { get => _releaseAfterLost; set => _grab.ReleaseAfterLost = _releaseAfterLost = value; }
         public Transform HandVisual { get => _handVisual; set { _handVisual = value; _visualRest = value != null ? value.localPosition : default; } }
         int Id => _id != 0 ? _id : (_id = ++s_nextId);
@@ -62,6 +71,12 @@ namespace Kosmos.PseudoHaptic
         {
             HandVisual = _handVisual;
             _grab.ReleaseAfterLost = _releaseAfterLost; // throws on an invalid setting, naming it
+            string reach = FieldRules.NonNegative("Reach", _reach);
+            if (reach != null)
+            {
+                Debug.LogError("Pinch Grab on '" + name + "': " + reach, this);
+                enabled = false; // grabbing nothing beats grabbing with a NaN reach every frame
+            }
             if (_hand != null && Hand == null) Debug.LogError("Pinch Grab on '" + name + "': '" + _hand.name + "' has no IPinchHandPoseSource.", this);
         }
 
