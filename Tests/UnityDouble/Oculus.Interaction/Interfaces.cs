@@ -1,4 +1,5 @@
-// Compile-only. Transcribed from the Meta XR Interaction SDK (com.meta.xr.sdk.interaction 68.0.0), as mirrored in
+// Test double (a PointerEvent carries its values; GetHandGrabPose composes the wrist pose and the grab offset, as the
+// SDK's HandGrabInteraction and PoseUtils.Multiply do). Transcribed from the Meta XR Interaction SDK (com.meta.xr.sdk.interaction 68.0.0), as mirrored in
 // darktable-mirror/com.meta.xr.sdk.interaction at tag v68.0.0: Runtime/Scripts/Interaction/Grabbable/ITransformer.cs,
 // Runtime/Scripts/Interaction/Grabbable/IGrabbable.cs, Runtime/Scripts/Interaction/Pointable/IPointable.cs
 // (PointerEventType, PointerEvent, IPointable), Runtime/Scripts/Interaction/Core/IEvent.cs,
@@ -42,11 +43,18 @@ namespace Oculus.Interaction
 
     public struct PointerEvent : IEvent
     {
-        public int Identifier => throw null;
-        public PointerEventType Type => throw null;
-        public Pose Pose => throw null;
-        public object Data => throw null;
-        public PointerEvent(int identifier, PointerEventType type, Pose pose, object data = null) => throw null;
+        public int Identifier { get; }
+        public PointerEventType Type { get; }
+        public Pose Pose { get; }
+        public object Data { get; }
+
+        public PointerEvent(int identifier, PointerEventType type, Pose pose, object data = null)
+        {
+            Identifier = identifier;
+            Type = type;
+            Pose = pose;
+            Data = data;
+        }
     }
 
     public interface IPointable
@@ -66,6 +74,7 @@ namespace Oculus.Interaction.Input
     {
         bool IsHighConfidence { get; }
         bool IsTrackedDataValid { get; }
+        bool GetRootPose(out Pose pose);
     }
 }
 
@@ -85,6 +94,12 @@ namespace Oculus.Interaction.HandGrab
 
     public static class HandGrabInteraction
     {
-        public static Pose GetHandGrabPose(this IHandGrabInteractor handGrabInteractor) => throw null;
+        /// <summary>The tracked wrist (the hand's root pose) times the wrist-to-grab offset; a null Hand throws, as in the SDK.</summary>
+        public static Pose GetHandGrabPose(this IHandGrabInteractor handGrabInteractor)
+        {
+            handGrabInteractor.Hand.GetRootPose(out Pose wrist);
+            Pose offset = handGrabInteractor.WristToGrabPoseOffset;
+            return new Pose(wrist.position + wrist.rotation * offset.position, wrist.rotation * offset.rotation);
+        }
     }
 }

@@ -1,7 +1,8 @@
-// Compile-only. Transcribed from the Meta XR Core SDK (com.meta.xr.sdk.core 68.0.2), as mirrored in
-// icosa-mirror/com.meta.xr.sdk.core: Scripts/Util/OVRHand.cs (OVRHand; enum values resolved through
-// Scripts/OVRPlugin.cs: OVRPlugin.HandFinger, OVRPlugin.TrackingConfidence) and Editor/OVRProjectConfig.cs.
-// Both are in the global namespace, in the assemblies Oculus.VR and Oculus.VR.Editor.
+// Test double of the Meta XR Core SDK 68.0.2's OVRHand (icosa-mirror/com.meta.xr.sdk.core, Scripts/Util/OVRHand.cs;
+// enum values from Scripts/OVRPlugin.cs), global namespace, assembly Oculus.VR. As the SDK: the hand's state is what
+// the runtime reported this frame (here: what the test set through the driver, UnityDouble.OvrHands); PointerPose is a
+// transform under the pointer-pose root (the tracking space, when set) or else under the hand itself, whose local
+// position and rotation are the pointer pose in tracking space.
 using UnityEngine;
 
 public class OVRHand : MonoBehaviour
@@ -22,11 +23,29 @@ public class OVRHand : MonoBehaviour
         High = 0x3f800000,
     }
 
-    public bool IsDataValid => throw null;
-    public bool IsTracked => throw null;
-    public bool IsPointerPoseValid => throw null;
-    public Transform PointerPose => throw null;
-    public TrackingConfidence HandConfidence => throw null;
-    public bool GetFingerIsPinching(HandFinger finger) => throw null;
-    public TrackingConfidence GetFingerConfidence(HandFinger finger) => throw null;
+    [SerializeField] internal Transform _pointerPoseRoot = null;
+    GameObject _pointerPoseGO;
+    internal readonly bool[] Pinching = new bool[(int)HandFinger.Max];
+    internal readonly TrackingConfidence[] FingerConfidence = new TrackingConfidence[(int)HandFinger.Max];
+
+    public bool IsDataValid { get; internal set; }
+    public bool IsTracked { get; internal set; }
+    public bool IsPointerPoseValid { get; internal set; }
+    public TrackingConfidence HandConfidence { get; internal set; }
+
+    public Transform PointerPose
+    {
+        get
+        {
+            if (_pointerPoseGO == null)
+            {
+                _pointerPoseGO = new GameObject("PointerPose");
+                _pointerPoseGO.transform.SetParent(_pointerPoseRoot != null ? _pointerPoseRoot : transform, false);
+            }
+            return _pointerPoseGO.transform;
+        }
+    }
+
+    public bool GetFingerIsPinching(HandFinger finger) => IsDataValid && Pinching[(int)finger];
+    public TrackingConfidence GetFingerConfidence(HandFinger finger) => IsDataValid ? FingerConfidence[(int)finger] : TrackingConfidence.Low;
 }

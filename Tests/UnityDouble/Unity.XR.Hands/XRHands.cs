@@ -1,4 +1,4 @@
-// Compile-only. Transcribed from Unity XR Hands (com.unity.xr.hands) 1.5.0, as mirrored in needle-mirror/com.unity.xr.hands,
+// Test double (the hands' data is what the test set, UnityDouble.XRHands). Transcribed from Unity XR Hands (com.unity.xr.hands) 1.5.0, as mirrored in needle-mirror/com.unity.xr.hands,
 // tag 1.5.0: Runtime/XRHandSubsystem.cs, Runtime/XRHandSubsystemDescriptor.cs, Runtime/XRHandSubsystemProvider.cs,
 // Runtime/XRHand.cs, Runtime/XRHandJoint.cs, Runtime/Enums.cs. Assembly Unity.XR.Hands. Only what the package uses.
 using System;
@@ -11,9 +11,10 @@ namespace UnityEngine.XR.Hands
     {
         public XRHandSubsystem() { }
 
-        public XRHand leftHand => throw null;
-        public XRHand rightHand => throw null;
-        public UpdateSuccessFlags updateSuccessFlags { get => throw null; protected set => throw null; }
+        public XRHand leftHand => LeftHand;
+        public XRHand rightHand => RightHand;
+        public UpdateSuccessFlags updateSuccessFlags { get; protected set; }
+        internal XRHand LeftHand = new XRHand(Handedness.Left), RightHand = new XRHand(Handedness.Right);
 
         [Flags]
         public enum UpdateSuccessFlags
@@ -39,30 +40,62 @@ namespace UnityEngine.XR.Hands
     {
     }
 
+    /// <summary>A hand's joints; the default value is an untracked hand with no joint (as a hand the subsystem never saw).</summary>
     public struct XRHand : IEquatable<XRHand>
     {
-        public XRHandJoint GetJoint(XRHandJointID id) => throw null;
-        public Pose rootPose => throw null;
-        public Handedness handedness => throw null;
-        public bool isTracked => throw null;
+        internal XRHandJoint[] Joints;
+        internal bool IsTracked;
+        internal Handedness Side;
+        internal Pose RootPose;
 
-        public bool Equals(XRHand other) => throw null;
-        public override bool Equals(object obj) => throw null;
-        public override int GetHashCode() => throw null;
+        internal XRHand(Handedness side)
+        {
+            Side = side;
+            IsTracked = false;
+            RootPose = Pose.identity;
+            Joints = new XRHandJoint[(int)XRHandJointID.EndMarker - 1];
+            for (int i = 0; i < Joints.Length; i++) Joints[i] = new XRHandJoint { Id = (XRHandJointID)(i + 1), Side = side };
+        }
+
+        /// <summary>The joint of that id; an invalid joint (no pose) for an id outside the hand or a default hand.</summary>
+        public XRHandJoint GetJoint(XRHandJointID id)
+        {
+            int i = (int)id - 1;
+            return Joints != null && i >= 0 && i < Joints.Length ? Joints[i] : new XRHandJoint { Id = id, Side = Side };
+        }
+
+        public Pose rootPose => RootPose;
+        public Handedness handedness => Side;
+        public bool isTracked => IsTracked;
+
+        public bool Equals(XRHand other) => ReferenceEquals(Joints, other.Joints) && IsTracked == other.IsTracked && Side == other.Side;
+        public override bool Equals(object obj) => obj is XRHand h && Equals(h);
+        public override int GetHashCode() => (int)Side ^ (IsTracked ? 1 : 0);
     }
 
+    /// <summary>One joint: a pose in the XR origin's space, valid when its tracking state has Pose.</summary>
     public struct XRHandJoint : IEquatable<XRHandJoint>
     {
-        public XRHandJointID id => throw null;
-        public Handedness handedness => throw null;
-        public XRHandJointTrackingState trackingState => throw null;
-        public bool TryGetPose(out Pose pose) => throw null;
+        internal XRHandJointID Id;
+        internal Handedness Side;
+        internal XRHandJointTrackingState State;
+        internal Pose Pose;
 
-        public bool Equals(XRHandJoint other) => throw null;
-        public override bool Equals(object obj) => throw null;
-        public override int GetHashCode() => throw null;
-        public static bool operator ==(XRHandJoint lhs, XRHandJoint rhs) => throw null;
-        public static bool operator !=(XRHandJoint lhs, XRHandJoint rhs) => throw null;
+        public XRHandJointID id => Id;
+        public Handedness handedness => Side;
+        public XRHandJointTrackingState trackingState => State;
+
+        public bool TryGetPose(out Pose pose)
+        {
+            pose = (State & XRHandJointTrackingState.Pose) != 0 ? Pose : Pose.identity;
+            return (State & XRHandJointTrackingState.Pose) != 0;
+        }
+
+        public bool Equals(XRHandJoint other) => Id == other.Id && Side == other.Side && State == other.State && Pose.Equals(other.Pose);
+        public override bool Equals(object obj) => obj is XRHandJoint j && Equals(j);
+        public override int GetHashCode() => (int)Id ^ ((int)Side << 8) ^ ((int)State << 12);
+        public static bool operator ==(XRHandJoint lhs, XRHandJoint rhs) => lhs.Equals(rhs);
+        public static bool operator !=(XRHandJoint lhs, XRHandJoint rhs) => !lhs.Equals(rhs);
     }
 
     [Flags]

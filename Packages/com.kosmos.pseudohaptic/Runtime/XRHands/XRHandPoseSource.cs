@@ -39,6 +39,7 @@ namespace Kosmos.PseudoHaptic.XRHands
         double _nextSearch;
 
         public Handedness HandSide { get => _handedness; set => _handedness = value; }
+        public PositionJoint PositionFrom { get => _position; set => _position = value; }
         public Transform TrackingSpace { get => _trackingSpace; set => _trackingSpace = value; }
 
         /// <summary>The running hand subsystem, looked for at most twice a second until one runs.</summary>
@@ -68,7 +69,19 @@ namespace Kosmos.PseudoHaptic.XRHands
 
         public bool IsTracked => Hand.isTracked && Joint(JointId, out _);
 
-        public bool IsHighConfidence => IsTracked && (Hand.GetJoint(JointId).trackingState & XRHandJointTrackingState.HighFidelityPose) != 0;
+        /// <summary>Every joint the position is made of (the wrist, the palm, or both tips for the pinch point) has a high-fidelity pose.</summary>
+        public bool IsHighConfidence
+        {
+            get
+            {
+                if (!IsTracked) return false;
+                XRHand hand = Hand;
+                if (_position != PositionJoint.PinchPoint) return HighFidelity(hand, JointId);
+                return HighFidelity(hand, XRHandJointID.ThumbTip) && HighFidelity(hand, XRHandJointID.IndexTip);
+            }
+        }
+
+        static bool HighFidelity(XRHand hand, XRHandJointID id) => (hand.GetJoint(id).trackingState & XRHandJointTrackingState.HighFidelityPose) != 0;
 
         public Vector3 Position => Joint(JointId, out Vector3 p) ? p : new Vector3(float.NaN, float.NaN, float.NaN);
 
