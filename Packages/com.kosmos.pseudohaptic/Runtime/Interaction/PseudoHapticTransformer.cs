@@ -40,7 +40,8 @@ namespace Kosmos.PseudoHaptic.Interaction
         readonly List<IHandGrabInteractor> _hands = new List<IHandGrabInteractor>(4);
         Vector3 _grabOffset;
         double _lastTime;
-        bool _holding;
+        bool _holding, _cancelling;
+        int[] _cancelIds = new int[4];
 
         public PseudoHapticWeight Weight => _weight;
 
@@ -76,6 +77,9 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void BeginTransform()
         {
+            // While this transformer cancels the grabs (a break-away), the SDK's interactors unselect, and the Grabbable
+            // begins its one-grab transformer again for the hand not yet cancelled: nothing is to begin then.
+            if (_cancelling) return;
             _holding = false;
             if (_grabbable == null || _weight == null || !TryHandCentre(out Vector3 grab, out _, out _)) return;
             _grabOffset = _weight.transform.position - grab;
@@ -107,8 +111,20 @@ namespace Kosmos.PseudoHaptic.Interaction
         void CancelGrabs()
         {
             var element = _grabbable as IPointableElement;
-            for (int i = _handIds.Count - 1; i >= 0 && element != null; i = Math.Min(i - 1, _handIds.Count - 1))
-                element.ProcessPointerEvent(new PointerEvent(_handIds[i], PointerEventType.Cancel, default(Pose)));
+            int n = _handIds.Count;
+            if (_cancelIds.Length < n) _cancelIds = new int[n];
+            _handIds.CopyTo(_cancelIds); // the Cancel events change _handIds while this loops
+            _cancelling = true;
+            try
+            {
+                for (int i = n - 1; i >= 0 && element != null; i--)
+                    element.ProcessPointerEvent(new PointerEvent(_cancelIds[i], PointerEventType.Cancel, default(Pose)));
+            }
+            finally
+            {
+                _cancelling = false;
+            }
+            _holding = false;
             if (_weight != null) _weight.EndHold(); // whatever the Grabbable did not report
         }
 
@@ -149,9 +165,13 @@ namespace Kosmos.PseudoHaptic.Interaction
         {
             IHandGrabInteractor hand = _hands[i];
             var points = _grabbable.GrabPoints;
-            tracked = hand == null || hand.Hand.IsTrackedDataValid;
-            highConfidence = hand == null || hand.Hand.IsHighConfidence;
-            return hand != null ? hand.GetHandGrabPose().position : points != null && i < points.Count ? points[i].position : _weight.transform.position;
+            // A hand grab interactor without its hand (not wired, or its hand destroyed) reads as lost, never as an exception.
+            Oculus.Interaction.Input.IHand tracking = hand != null ? hand.Hand : null;
+            bool noHand = hand != null && tracking == null;
+            tracked = hand == null || (!noHand && tracking.IsTrackedDataValid);
+            highConfidence = hand == null || (!noHand && tracking.IsHighConfidence);
+            if (hand != null && !noHand) return hand.GetHandGrabPose().position;
+            return points != null && i < points.Count ? points[i].position : _weight.transform.position;
         }
 
         /// <summary>The mean of the grabbing hands (<see cref="GrabCentre"/>); tracked only when every hand is.</summary>
