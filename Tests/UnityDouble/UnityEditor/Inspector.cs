@@ -1,4 +1,5 @@
-// Compile-only. Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
+// Test double: nothing is drawn; what an inspector shows (labels, help boxes) is recorded for tests (EditorGUILayout.Shown).
+// Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Editor/Mono/Inspector/Editor.cs (Editor, CanEditMultipleObjects), Editor/Mono/Inspector/CustomEditor.cs,
 //   Editor/Mono/EditorGUILayout.cs, Editor/Mono/EditorGUI.cs (DrawRect), Editor/Mono/GUI/EditorStyles.cs,
 //   Editor/Mono/EditorGUIUtility.bindings.cs (MessageType), Editor/Mono/Handles.cs, Editor/Mono/DrawGizmo.cs,
@@ -12,16 +13,20 @@ namespace UnityEditor
 {
     public class Editor : ScriptableObject
     {
-        public Object target { get => throw null; set => throw null; }
-        public Object[] targets => throw null;
-        public virtual void OnInspectorGUI() => throw null;
-        public bool DrawDefaultInspector() => throw null;
-        public virtual bool RequiresConstantRepaint() => throw null;
+        Object _target;
+
+        public Object target { get => _target; set { _target = value; Targets = new[] { value }; } }
+        public Object[] targets => Targets ?? new Object[0];
+        internal Object[] Targets;
+        public virtual void OnInspectorGUI() => DrawDefaultInspector();
+        public bool DrawDefaultInspector() => true;
+        public virtual bool RequiresConstantRepaint() => false;
     }
 
     public class CustomEditor : Attribute
     {
-        public CustomEditor(Type inspectedType) => throw null;
+        public CustomEditor(Type inspectedType) => InspectedType = inspectedType;
+        internal readonly Type InspectedType;
     }
 
     public sealed class CanEditMultipleObjects : Attribute
@@ -30,28 +35,31 @@ namespace UnityEditor
 
     public sealed class EditorGUILayout
     {
-        public static void LabelField(string label, params GUILayoutOption[] options) => throw null;
-        public static void LabelField(string label, GUIStyle style, params GUILayoutOption[] options) => throw null;
-        public static void LabelField(string label, string label2, params GUILayoutOption[] options) => throw null;
-        public static void LabelField(string label, string label2, GUIStyle style, params GUILayoutOption[] options) => throw null;
-        public static void HelpBox(string message, MessageType type) => throw null;
-        public static void Space() => throw null;
-        public static Rect GetControlRect(bool hasLabel, float height, params GUILayoutOption[] options) => throw null;
-        public static Rect BeginHorizontal(params GUILayoutOption[] options) => throw null;
-        public static void EndHorizontal() => throw null;
+        internal static readonly System.Collections.Generic.List<string> Shown = new System.Collections.Generic.List<string>();
+
+        public static void LabelField(string label, params GUILayoutOption[] options) => Shown.Add(label);
+        public static void LabelField(string label, GUIStyle style, params GUILayoutOption[] options) => Shown.Add(label);
+        public static void LabelField(string label, string label2, params GUILayoutOption[] options) => Shown.Add(label + ": " + label2);
+        public static void LabelField(string label, string label2, GUIStyle style, params GUILayoutOption[] options) => Shown.Add(label + ": " + label2);
+        public static void HelpBox(string message, MessageType type) => Shown.Add(type + ": " + message);
+        public static void Space() { }
+        public static Rect GetControlRect(bool hasLabel, float height, params GUILayoutOption[] options) => new Rect(0, 0, 300, height);
+        public static Rect BeginHorizontal(params GUILayoutOption[] options) => new Rect(0, 0, 300, 20);
+        public static void EndHorizontal() { }
     }
 
     public sealed class EditorGUI
     {
-        public static void DrawRect(Rect rect, Color color) => throw null;
+        public static void DrawRect(Rect rect, Color color) => Rects++;
+        internal static int Rects;
     }
 
     public sealed class EditorStyles
     {
-        public static GUIStyle miniLabel => throw null;
-        public static GUIStyle boldLabel => throw null;
-        public static GUIStyle miniBoldLabel => throw null;
-        public static GUIStyle wordWrappedMiniLabel => throw null;
+        public static GUIStyle miniLabel { get; } = new GUIStyle();
+        public static GUIStyle boldLabel { get; } = new GUIStyle();
+        public static GUIStyle miniBoldLabel { get; } = new GUIStyle();
+        public static GUIStyle wordWrappedMiniLabel { get; } = new GUIStyle();
     }
 
     public enum MessageType
@@ -64,9 +72,11 @@ namespace UnityEditor
 
     public sealed class Handles
     {
-        public static Color color { get => throw null; set => throw null; }
-        public static void DrawAAPolyLine(float width, params Vector3[] points) => throw null;
-        public static void Label(Vector3 position, string text) => throw null;
+        public static Color color { get; set; }
+        public static void DrawAAPolyLine(float width, params Vector3[] points) => Lines++;
+        public static void Label(Vector3 position, string text) => Labels.Add(text);
+        internal static int Lines;
+        internal static readonly System.Collections.Generic.List<string> Labels = new System.Collections.Generic.List<string>();
     }
 
     [Flags]
@@ -82,23 +92,25 @@ namespace UnityEditor
 
     public sealed class DrawGizmo : Attribute
     {
-        public DrawGizmo(GizmoType gizmo) => throw null;
+        public DrawGizmo(GizmoType gizmo) => drawOptions = gizmo;
+        public GizmoType drawOptions;
     }
 
     public partial class Undo
     {
-        public static void RecordObject(Object objectToUndo, string name) => throw null;
+        public static void RecordObject(Object objectToUndo, string name) { }
     }
 
     public sealed partial class EditorUtility
     {
-        public static void SetDirty(Object target) => throw null;
+        public static void SetDirty(Object target) => Dirty.Add(target);
+        internal static readonly System.Collections.Generic.HashSet<Object> Dirty = new System.Collections.Generic.HashSet<Object>();
     }
 
     [AttributeUsage(AttributeTargets.Method, AllowMultiple = true)]
     public sealed class MenuItem : Attribute
     {
-        public MenuItem(string itemName) => throw null;
+        public MenuItem(string itemName) => menuItem = itemName;
         public string menuItem;
         public bool validate;
         public int priority;
@@ -106,15 +118,42 @@ namespace UnityEditor
 
     public class SerializedObject : IDisposable
     {
-        public SerializedObject(Object obj) => throw null;
-        public SerializedProperty FindProperty(string propertyPath) => throw null;
-        public bool ApplyModifiedPropertiesWithoutUndo() => throw null;
-        public void Dispose() => throw null;
+        readonly Object _target;
+
+        public SerializedObject(Object obj) => _target = obj;
+
+        /// <summary>A serialized field of that name (public, or [SerializeField]) on the object or its base classes; null if none.</summary>
+        public SerializedProperty FindProperty(string propertyPath)
+        {
+            for (Type t = _target.GetType(); t != null; t = t.BaseType)
+            {
+                var f = t.GetField(propertyPath, System.Reflection.BindingFlags.Instance | System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.DeclaredOnly);
+                if (f != null && (f.IsPublic || f.IsDefined(typeof(SerializeField), true))) return new SerializedProperty(_target, f);
+            }
+            return null;
+        }
+
+        public bool ApplyModifiedPropertiesWithoutUndo() => true;
+        public void Dispose() { }
     }
 
     public class SerializedProperty : IDisposable
     {
-        public int intValue { get => throw null; set => throw null; }
-        public void Dispose() => throw null;
+        readonly object _owner;
+        readonly System.Reflection.FieldInfo _field;
+
+        internal SerializedProperty(object owner, System.Reflection.FieldInfo field)
+        {
+            _owner = owner;
+            _field = field;
+        }
+
+        public int intValue
+        {
+            get => Convert.ToInt32(_field.GetValue(_owner));
+            set => _field.SetValue(_owner, _field.FieldType.IsEnum ? Enum.ToObject(_field.FieldType, value) : Convert.ChangeType(value, _field.FieldType));
+        }
+
+        public void Dispose() { }
     }
 }

@@ -10,3 +10,4 @@ using System.Runtime.CompilerServices;
 [assembly: InternalsVisibleTo("Unity.XR.CoreUtils")]
 [assembly: InternalsVisibleTo("Unity.XR.Management")]
 [assembly: InternalsVisibleTo("Unity.XR.Management.Editor")]
+[assembly: InternalsVisibleTo("Oculus.VR.Editor")]

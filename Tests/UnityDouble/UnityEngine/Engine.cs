@@ -312,11 +312,19 @@ namespace UnityEngine
         }
 
         /// <summary>An empty scene and clock: destroys every object (running OnDisable and OnDestroy), as leaving play mode does.</summary>
-        internal static void Reset()
+        internal static void Reset() => Reset(keepAssets: false);
+
+        /// <summary>As <see cref="Reset()"/>; <paramref name="keepAssets"/>: a new scene in the editor, which keeps assets (prefabs, ScriptableObjects) loaded.</summary>
+        internal static void Reset(bool keepAssets)
         {
             s_pendingDestroy.Clear();
             foreach (GameObject go in new List<GameObject>(s_gameObjects))
-                if (!go.IsDestroyed && go.transform.parent == null) DestroyNow(go);
+                if (!go.IsDestroyed && go.transform.parent == null && !(keepAssets && go.IsAsset)) DestroyNow(go);
+            if (keepAssets)
+            {
+                PhysicsScene.Reset();
+                return;
+            }
             foreach (GameObject go in new List<GameObject>(s_gameObjects)) DestroyNow(go);
             foreach (ScriptableObject so in new List<ScriptableObject>(s_scriptables)) DestroyNow(so);
             s_gameObjects.Clear();

@@ -124,6 +124,9 @@ namespace UnityEngine
         internal readonly List<Component> Components = new List<Component>();
         bool _activeSelf = true;
         internal int Layer;
+
+        /// <summary>A prefab asset's root (the editor double's asset database), not an object of the scene.</summary>
+        internal bool IsAsset;
         string _tag = "Untagged";
 
         public GameObject() : this("New Game Object") { }

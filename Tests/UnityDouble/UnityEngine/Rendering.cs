@@ -272,3 +272,13 @@ namespace UnityEngine
         }
     }
 }
+
+namespace UnityEngine
+{
+    public enum ColorSpace
+    {
+        Uninitialized = -1,
+        Gamma = 0,
+        Linear = 1,
+    }
+}
