@@ -121,3 +121,13 @@ namespace UnityDouble
         }
     }
 }
+
+namespace UnityDouble
+{
+    /// <summary>IMGUI: which button the "user" clicks next.</summary>
+    public static class GUILayoutDriver
+    {
+        /// <summary>The next GUILayout.Button drawn with this text returns true, once.</summary>
+        public static void Click(string buttonText) => UnityEngine.GUILayout.Clicked = buttonText;
+    }
+}
