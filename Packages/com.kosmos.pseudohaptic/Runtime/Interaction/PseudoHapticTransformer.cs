@@ -31,6 +31,8 @@ namespace Kosmos.PseudoHaptic.Interaction
     {
         [Tooltip("The weight to drive; found on the Grabbable's target transform when empty.")]
         [SerializeField] PseudoHapticWeight _weight;
+        [Tooltip("The tracking space the hands are tracked in (OVRCameraRig ▸ TrackingSpace): its motion (locomotion, snap turns, teleports) carries the object rigidly. Found from the scene's OVRCameraRig when empty.")]
+        [SerializeField] Transform _rig;
 
         IGrabbable _grabbable;
         IPointable _pointable;
@@ -38,7 +40,6 @@ namespace Kosmos.PseudoHaptic.Interaction
         // interactor of each (null for other interactors).
         readonly List<int> _handIds = new List<int>(4);
         readonly List<IHandGrabInteractor> _hands = new List<IHandGrabInteractor>(4);
-        Vector3 _grabOffset;
         double _lastTime;
         bool _holding, _cancelling;
         int[] _cancelIds = new int[4];
@@ -46,6 +47,9 @@ namespace Kosmos.PseudoHaptic.Interaction
         public PseudoHapticWeight Weight => _weight;
 
         public void InjectWeight(PseudoHapticWeight weight) => _weight = weight;
+
+        /// <summary>The tracking space the hands are tracked in; null: the world.</summary>
+        public Transform Rig { get => _rig; set => _rig = value; }
 
         public void Initialize(IGrabbable grabbable)
         {
@@ -57,6 +61,13 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_weight == null && grabbable.Transform != null) _weight = grabbable.Transform.GetComponent<PseudoHapticWeight>();
             if (_weight == null) _weight = GetComponent<PseudoHapticWeight>();
             if (_weight == null) Debug.LogError("Pseudo-Haptic Transformer on '" + name + "' found no PseudoHapticWeight on the grabbed object.", this);
+#if KOSMOS_META_XR_CORE
+            if (_rig == null)
+            {
+                OVRCameraRig rig = FindFirstObjectByType<OVRCameraRig>();
+                if (rig != null) _rig = rig.trackingSpace;
+            }
+#endif
             ApplyHandDrawing();
         }
 
@@ -81,8 +92,8 @@ namespace Kosmos.PseudoHaptic.Interaction
             // begins its one-grab transformer again for the hand not yet cancelled: nothing is to begin then.
             if (_cancelling) return;
             _holding = false;
-            if (_grabbable == null || _weight == null || !TryHandCentre(out Vector3 grab, out _, out _)) return;
-            _grabOffset = _weight.transform.position - grab;
+            if (_grabbable == null || _weight == null || _handIds.Count == 0) return;
+            if (_rig != null && _weight.Hold.HandCount == 0) _weight.Rig = _rig; // the hold is solved in the rig's frame
             _lastTime = Time.timeAsDouble;
             for (int i = 0; i < _handIds.Count; i++) _weight.BeginHold(_handIds[i], HandPose(i, out _, out _), double.NaN, RigidbodyControl.External);
             _holding = _weight.IsHeld;
@@ -90,16 +101,15 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void UpdateTransform()
         {
-            if (!_holding || !TryHandCentre(out Vector3 grab, out bool tracked, out _)) return;
+            if (!_holding || _handIds.Count == 0) return;
             double now = Time.timeAsDouble;
             float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
             _lastTime = now;
-            Transform target = _weight.transform;
-            target.position = GrabFollow.Horizontal(target.position.ToDouble(), grab.ToDouble(), _grabOffset.ToDouble(), tracked, GrabFollow.GrabMovesHorizontal(true, _weight.Hold)).ToUnity();
+            // x/z: the mean of the grabbing hands and the offset taken when they changed (HeldObject.GrabTarget), or the solver's.
             for (int i = 0; i < _handIds.Count; i++)
             {
                 Vector3 hand = HandPose(i, out bool handTracked, out bool highConfidence);
-                _weight.Step(_handIds[i], hand, handTracked, highConfidence, double.NaN, dt);
+                _weight.Step(_handIds[i], hand, handTracked, highConfidence, double.NaN, dt, grabMovesHorizontal: true);
             }
             if (_weight.Hold.BrokeAway) CancelGrabs();
         }
@@ -172,21 +182,6 @@ namespace Kosmos.PseudoHaptic.Interaction
             highConfidence = hand == null || (!noHand && tracking.IsHighConfidence);
             if (hand != null && !noHand) return hand.GetHandGrabPose().position;
             return points != null && i < points.Count ? points[i].position : _weight.transform.position;
-        }
-
-        /// <summary>The mean of the grabbing hands (<see cref="GrabCentre"/>); tracked only when every hand is.</summary>
-        bool TryHandCentre(out Vector3 centre, out bool tracked, out bool highConfidence)
-        {
-            var mean = new GrabCentre();
-            for (int i = 0; i < _handIds.Count; i++)
-            {
-                Vector3 p = HandPose(i, out bool t, out bool h);
-                mean.Add(p.ToDouble(), t, h);
-            }
-            centre = mean.Point.ToUnity();
-            tracked = mean.IsTracked;
-            highConfidence = mean.IsHighConfidence;
-            return mean.Count > 0;
         }
     }
 }

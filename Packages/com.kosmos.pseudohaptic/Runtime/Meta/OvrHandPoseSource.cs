@@ -11,7 +11,7 @@ namespace Kosmos.PseudoHaptic.Meta
     /// Compiled only when com.meta.xr.sdk.core is installed.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/OVR Hand Pose Source")]
-    public sealed class OvrHandPoseSource : MonoBehaviour, IPinchHandPoseSource
+    public sealed class OvrHandPoseSource : MonoBehaviour, IPinchHandPoseSource, IRigHandPoseSource
     {
         public enum PositionSource
         {

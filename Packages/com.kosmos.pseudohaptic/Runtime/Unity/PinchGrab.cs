@@ -91,7 +91,10 @@ namespace Kosmos.PseudoHaptic
             _position = hand.Position;
             _dt = dt;
             _grab.Tick(hand.IsTracked, PinchSources.Strength(hand), dt, this);
-            Vector3d lag = _held != null ? GrabFollow.Lag(_held.transform.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble()) : Vector3d.Zero;
+            // The lag in the hold's frame (the rig at the grab), turned back into the world with the rig.
+            Vector3d lag = _held != null
+                ? _held.OutOfHoldFrame(GrabFollow.Lag(_held.InHoldFrame(_held.transform.position).ToDouble(), _held.InHoldFrame(_position).ToDouble(), _grabOffset.ToDouble()).ToUnity()).ToDouble()
+                : Vector3d.Zero;
             Vector3d offset = _drawing.Update(_held != null ? _held.HandDrawing : HandDrawingMode.HandTrue, _held != null, lag, dt);
             if (_handVisual != null) _handVisual.localPosition = _visualRest;
             if (_handVisual != null) _handVisual.position += offset.ToUnity();
@@ -104,9 +107,11 @@ namespace Kosmos.PseudoHaptic
         {
             int i = GrabSelection.Nearest(_position.ToDouble(), _reach, HeldObject.MaxHands, this);
             PseudoHapticWeight w = i >= 0 ? PseudoHapticWeight.Enabled[i] : null;
-            if (w == null || !w.BeginHold(Id, _position, Hand.PoseTime)) return false;
+            if (w == null) return false;
+            if (Hand is IRigHandPoseSource rigged && rigged.Rig != null && w.Hold.HandCount == 0) w.Rig = rigged.Rig; // the hold is solved in the hand's rig
+            if (!w.BeginHold(Id, _position, Hand.PoseTime)) return false;
             _held = w;
-            _grabOffset = w.transform.position - _position;
+            _grabOffset = w.InHoldFrame(w.transform.position) - w.InHoldFrame(_position);
             return true;
         }
 
