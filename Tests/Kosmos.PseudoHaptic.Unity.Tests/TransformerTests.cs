@@ -82,5 +82,45 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(began, Is.EqualTo(1), "the hold began once");
             Assert.That(ended, Is.EqualTo(1), "and ended once");
         }
+
+        /// <summary>Issue 26 with the Interaction SDK: the rig (its tracking space) teleports and turns mid-lift; in its frame the path is the standing-still one.</summary>
+        [Test]
+        public void ATeleportMidLiftCarriesTheObjectRigidlyThroughTheTransformersRig()
+        {
+            System.Collections.Generic.List<Vector3> Lift(bool teleport)
+            {
+                var rig = new GameObject("TrackingSpace").transform;
+                var (grabbable, transformer, weight) = Object(2f);
+                transformer.Rig = rig;
+                var hand = new FakeHand();
+                Vector3 start = weight.transform.position + new Vector3(0, 0.05f, 0); // the rig is at the origin at the grab
+                hand.Wrist = start;
+                var interactor = new FakeHandGrabInteractor(grabbable, 4, hand);
+                interactor.Grab();
+                var path = new System.Collections.Generic.List<Vector3>();
+                for (int i = 1; i <= 90; i++)
+                {
+                    Frames.Run(1);
+                    if (teleport && i == 30)
+                    {
+                        rig.position = new Vector3(4, 0.5f, -2);
+                        rig.rotation = Quaternion.Euler(0, 135, 0);
+                    }
+                    // The tracked hand: a lift in the rig's frame, reported in the world through the rig (as the SDK's hands are).
+                    float u = Mathf.Clamp01(i / 60f);
+                    hand.Wrist = rig.TransformPoint(start + new Vector3(0, 0.25f * u * u * (3 - 2 * u), 0));
+                    interactor.Move();
+                    path.Add(rig.InverseTransformPoint(weight.transform.position));
+                }
+                Assert.That(weight.IsHeld, Is.True);
+                UnityDouble.Frames.Reset();
+                return path;
+            }
+            var still = Lift(false);
+            var moved = Lift(true);
+            Assert.That(still[still.Count - 1].y - still[0].y, Is.GreaterThan(0.05f), "the box rose");
+            for (int i = 0; i < still.Count; i++)
+                Assert.That(Vector3.Distance(still[i], moved[i]), Is.LessThanOrEqualTo(0.001f), "frame " + i);
+        }
     }
 }
