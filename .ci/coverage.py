@@ -13,6 +13,16 @@ ASSEMBLIES = ("Kosmos.PseudoHaptic.Core", "Kosmos.PseudoHaptic.Evaluation", "Kos
 UNITY_FOLDERS = ("Runtime/Unity", "Runtime/Meta", "Runtime/Interaction", "Runtime/XRHands", "Editor", "Samples~")
 
 
+def absolute(sources, filename):
+    """The file's full path: under the first <source> root where it exists, else the first root."""
+    import os
+    for root in sources:
+        path = os.path.normpath(os.path.join(root, filename))
+        if os.path.exists(path):
+            return path
+    return os.path.normpath(os.path.join(sources[0], filename)) if sources else filename
+
+
 def main(paths):
     lines = {}     # (assembly, file, line) -> hit
     branches = {}  # (assembly, file, line) -> (covered, total)
@@ -22,12 +32,15 @@ def main(paths):
         except (ET.ParseError, OSError) as e:
             print(f"coverage: cannot read {path}: {e}")
             continue
+        # Each report names files relative to its own <source> roots: join them, so that one file covered by several test
+        # projects (the core is referenced by three) is one file here.
+        sources = [src.text or "" for src in root.iter("source")]
         for package in root.iter("package"):
             name = package.get("name")
             if name not in ASSEMBLIES:
                 continue
             for cls in package.iter("class"):
-                filename = cls.get("filename")
+                filename = absolute(sources, cls.get("filename"))
                 for line in cls.iter("line"):
                     key = (name, filename, int(line.get("number")))
                     lines[key] = lines.get(key, False) or int(line.get("hits", "0")) > 0
