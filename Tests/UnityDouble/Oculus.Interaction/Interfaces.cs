@@ -5,7 +5,7 @@
 // (PointerEventType, PointerEvent, IPointable), Runtime/Scripts/Interaction/Core/IEvent.cs,
 // Runtime/Scripts/Input/Hands/IHand.cs (IHand), Runtime/Scripts/Interaction/Models/HandGrab/IHandGrabState.cs,
 // IHandGrabInteractor.cs and HandGrabInteraction.cs (assembly Oculus.Interaction). Interfaces list only the members
-// the package calls (the real ones have more); nothing here implements them.
+// the package calls and the tests' fakes implement (the real ones have more).
 using System;
 using System.Collections.Generic;
 using UnityEngine;
