@@ -14,7 +14,7 @@ namespace Kosmos.PseudoHaptic.Tests
     /// 0.1°), and the box stays held. The rig is moved in Update (before the hands are read, as OVR locomotion does) or in
     /// LateUpdate after the grab (a late locomotion: the weight re-places the box through the rig before the frame renders).
     /// </summary>
-    public sealed class RigMotionTests
+    public sealed class RigMotionTests : PlayModeFixture
     {
         const double Grab = 0.3, End = 1.8; // s: the rig starts moving after the grab; the run lasts this long
 
@@ -71,9 +71,8 @@ namespace Kosmos.PseudoHaptic.Tests
         };
 
         /// <summary>The box's position and rotation in the rig's frame, frame by frame, and whether it was held to the end.</summary>
-        static (List<Vector3> path, List<Quaternion> turn, bool held) Run(Func<double, Pose> motion, bool late)
+        (List<Vector3> path, List<Quaternion> turn, bool held) Run(Func<double, Pose> motion, bool late)
         {
-            UnityEngine.Object.FindObjectsByType<GameObject>(FindObjectsSortMode.None); // (nothing left from another run: the scope resets)
             var rigGo = new GameObject("OVRCameraRig");
             OVRCameraRig rig = rigGo.AddComponent<OVRCameraRig>();
             var locomotion = rigGo.AddComponent<Locomotion>();
@@ -89,35 +88,23 @@ namespace Kosmos.PseudoHaptic.Tests
             driver.Rig = rig;
             driver.Hand = hand;
 
-            var table = new GameObject("Table").transform;
-            table.position = new Vector3(0, 0.75f, 0.4f);
-            var box = new GameObject("2 kg");
-            box.transform.SetParent(table, false);
-            var collider = box.AddComponent<BoxCollider>();
-            collider.size = Vector3.one * 0.1f;
-            collider.center = new Vector3(0, 0.05f, 0);
-            box.AddComponent<Rigidbody>();
-            var weight = box.AddComponent<PseudoHapticWeight>();
-            weight.Mass = MassSource.Explicit;
-            weight.ExplicitMassKg = 2f;
-            weight.SpeedSource = StandardSpeedSource.Explicit;
             PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.XyzName);
             profile.SetEnabled<BreakAway>(true);
-            weight.Profile = profile;
+            PseudoHapticWeight weight = Box("2 kg", 2f, default, profile);
 
             var path = new List<Vector3>();
             var turn = new List<Quaternion>();
             while (Time.timeAsDouble < End)
             {
                 Frames.Run(1);
-                path.Add(rig.trackingSpace.InverseTransformPoint(box.transform.position));
-                turn.Add(Quaternion.Inverse(rig.trackingSpace.rotation) * box.transform.rotation);
+                path.Add(rig.trackingSpace.InverseTransformPoint(weight.transform.position));
+                turn.Add(Quaternion.Inverse(rig.trackingSpace.rotation) * weight.transform.rotation);
             }
             bool held = weight.IsHeld;
             UnityEngine.Object.DestroyImmediate(rigGo);
-            UnityEngine.Object.DestroyImmediate(table.gameObject);
+            UnityEngine.Object.DestroyImmediate(weight.gameObject);
             UnityEngine.Object.DestroyImmediate(profile);
-            UnityEngine.Object.DestroyImmediate(handGo);
+            UnityDouble.Frames.ResetClock(); // the next run starts at t = 0 too
             return (path, turn, held);
         }
 
@@ -138,7 +125,6 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(still.held, Is.True, "standing still, the lift keeps the box");
             double lift = still.path[still.path.Count - 1].y - still.path[0].y;
             Assert.That(lift, Is.GreaterThan(0.05), "the box was lifted in the standing-still run (" + lift + " m of the hand's 0.3 m: 2 kg lags)");
-            UnityDouble.Frames.Reset();
             var moving = Run(Motions[motion], late);
             Assert.That(moving.held, Is.True, "the rig's motion never breaks the box away");
             Assert.That(moving.path.Count, Is.EqualTo(still.path.Count));

@@ -6,23 +6,13 @@ using UnityEngine;
 namespace Kosmos.PseudoHaptic.Tests
 {
     /// <summary>The Interaction SDK transformer on a Grabbable that behaves as the SDK's (issue 24's transformer defects).</summary>
-    public sealed class TransformerTests
+    public sealed class TransformerTests : PlayModeFixture
     {
-        static (FakeGrabbable grabbable, PseudoHapticTransformer transformer, PseudoHapticWeight weight) Object(float massKg, PseudoHapticProfile profile = null)
+        (FakeGrabbable grabbable, PseudoHapticTransformer transformer, PseudoHapticWeight weight) Object(float massKg, PseudoHapticProfile profile = null)
         {
-            var table = new GameObject("Table").transform;
-            table.position = new Vector3(0, 0.75f, 0.4f);
-            var go = new GameObject("Box");
-            go.transform.SetParent(table, false);
-            go.AddComponent<BoxCollider>().center = new Vector3(0, 0.5f, 0);
-            go.AddComponent<Rigidbody>();
-            var weight = go.AddComponent<PseudoHapticWeight>();
-            weight.Mass = MassSource.Explicit;
-            weight.ExplicitMassKg = massKg;
-            weight.SpeedSource = StandardSpeedSource.Explicit;
-            weight.Profile = profile;
-            var grabbable = go.AddComponent<FakeGrabbable>();
-            var transformer = go.AddComponent<PseudoHapticTransformer>();
+            PseudoHapticWeight weight = Box("Box", massKg, default, profile);
+            var grabbable = weight.gameObject.AddComponent<FakeGrabbable>();
+            var transformer = weight.gameObject.AddComponent<PseudoHapticTransformer>();
             grabbable.Use(transformer, transformer);
             return (grabbable, transformer, weight);
         }
@@ -113,7 +103,9 @@ namespace Kosmos.PseudoHaptic.Tests
                     path.Add(rig.InverseTransformPoint(weight.transform.position));
                 }
                 Assert.That(weight.IsHeld, Is.True);
-                UnityDouble.Frames.Reset();
+                UnityEngine.Object.DestroyImmediate(weight.gameObject);
+                UnityEngine.Object.DestroyImmediate(rig.gameObject);
+                UnityDouble.Frames.ResetClock();
                 return path;
             }
             var still = Lift(false);

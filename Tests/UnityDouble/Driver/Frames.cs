@@ -19,8 +19,8 @@ namespace UnityDouble
             for (int i = 0; i < count; i++) Engine.Frame(dt);
         }
 
-        /// <summary>An empty scene and the clock at zero, within a test (as at its start).</summary>
-        public static void Reset() => Engine.Reset();
+        /// <summary>The clock back at zero (frame count, time, fixed time, captureDeltaTime), within a test; the scene stays.</summary>
+        public static void ResetClock() => Time.Reset();
 
         /// <summary>Frames until <paramref name="seconds"/> of game time have passed.</summary>
         public static void For(double seconds, float dt = Engine.DefaultFrameTime)
