@@ -15,7 +15,7 @@ public class BuiltInModuleTests
     static readonly string Package = Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic");
 
     /// <summary>
-    /// The versions the project pins; the declarations in Tests/UnityStubs are transcribed from these.
+    /// The versions the project pins; the declarations in Tests/UnityDouble are transcribed from these.
     /// </summary>
     static readonly (string Name, string Version)[] Pinned =
     {
@@ -122,9 +122,9 @@ public class BuiltInModuleTests
         var deps = Dependencies(Path.Combine(RepositoryRoot.Path, "Packages", "manifest.json"));
         foreach (var (name, version) in Pinned)
             Assert.That(deps.TryGetValue(name, out string? v) ? v : null, Is.EqualTo(version), name);
-        string readme = File.ReadAllText(Path.Combine(RepositoryRoot.Path, "Tests", "UnityStubs", "README.md"));
+        string readme = File.ReadAllText(Path.Combine(RepositoryRoot.Path, "Tests", "UnityDouble", "README.md"));
         foreach (var (name, version) in Pinned)
-            Assert.That(readme, Does.Contain(version), "Tests/UnityStubs/README.md cites " + name + " " + version);
+            Assert.That(readme, Does.Contain(version), "Tests/UnityDouble/README.md cites " + name + " " + version);
     }
 
     [Test]
@@ -165,6 +165,7 @@ public class BuiltInModuleTests
         ("Unity.XR.Management.Editor", "com.unity.xr.management 4.4.0: Editor/Unity.XR.Management.Editor.asmdef"),
         ("Unity.XR.Oculus", "com.unity.xr.oculus 4.2.0: Runtime/Unity.XR.Oculus.asmdef"),
         ("Unity.XR.Hands", "com.unity.xr.hands 1.5.0: Runtime/Unity.XR.Hands.asmdef"),
+        ("Unity.XR.CoreUtils", "com.unity.xr.core-utils 2.2.0 (com.unity.xr.hands 1.5.0 depends on it; its Runtime/Unity.XR.Hands.asmdef references it): Runtime/Unity.XR.CoreUtils.asmdef"),
         ("UnityEngine.TestRunner", "com.unity.test-framework 1.1.33: UnityEngine.TestRunner/UnityEngine.TestRunner.asmdef"),
         ("UnityEditor.TestRunner", "com.unity.test-framework 1.1.33: UnityEditor.TestRunner/UnityEditor.TestRunner.asmdef"),
     };

@@ -2,19 +2,13 @@ using System;
 using System.Collections.Generic;
 using System.IO;
 using UnityEditor;
-using UnityEditor.Build;
 using UnityEditor.Build.Reporting;
 using UnityEngine;
-#if KOSMOS_XR_MANAGEMENT && KOSMOS_XR_OCULUS
-using UnityEditor.XR.Management;
-using UnityEditor.XR.Management.Metadata;
-using UnityEngine.XR.Management;
-#endif
 
 namespace Kosmos.PseudoHaptic.Editor
 {
     /// <summary>
-    /// Builds a Quest 2 APK: Android, IL2CPP, ARM64, ASTC, XR Plug-in Management with the Oculus loader for
+    /// Builds a Quest 2 APK: Android, colour space Linear, IL2CPP, ARM64, ASTC, XR Plug-in Management with the Oculus loader for
     /// Android (initialised on startup), hand tracking declared through Meta's project settings
     /// (OVRProjectConfig, which Meta's build step writes into the manifest). From the menu, or headless, with
     /// the build target given on the command line (switching it inside <c>-executeMethod</c> would recompile the
@@ -29,7 +23,7 @@ namespace Kosmos.PseudoHaptic.Editor
         public const string ApkPathArgument = "-apkPath";
 
         /// <summary>The XR loader assigned for Android: the Oculus XR Plugin's (com.unity.xr.oculus).</summary>
-        public const string OculusLoaderType = "Unity.XR.Oculus.OculusLoader";
+        public const string OculusLoaderType = QuestProjectSettings.OculusLoaderType;
 
         [MenuItem("Tools/Kosmos Pseudo-Haptic/Build Quest 2 APK", priority = 100)]
         static void BuildFromMenu() => Build();
@@ -91,71 +85,17 @@ namespace Kosmos.PseudoHaptic.Editor
         }
 
         /// <summary>
-        /// IL2CPP, ARM64 only, API level ≥ 29, ASTC textures, the Oculus XR loader for Android initialised on
-        /// startup, hand tracking on. Throws, saying what to do, when the active target is not Android or a
-        /// required package is missing.
+        /// Colour space Linear, IL2CPP, ARM64 only, API level ≥ 29, ASTC textures, the Oculus XR loader for Android (and for
+        /// Standalone, Play over Link) initialised on startup, hand tracking on (<see cref="QuestProjectSettings"/>). Throws,
+        /// saying what to do, when the active target is not Android or a required package is missing.
         /// </summary>
         public static void ConfigureProject()
         {
             if (EditorUserBuildSettings.activeBuildTarget != BuildTarget.Android)
                 throw new InvalidOperationException("The active build target is " + EditorUserBuildSettings.activeBuildTarget
                     + ", not Android. Start Unity with -buildTarget Android, or in the editor choose File > Build Settings > Android > Switch Platform, then build again.");
-            PlayerSettings.SetScriptingBackend(NamedBuildTarget.Android, ScriptingImplementation.IL2CPP);
-            PlayerSettings.Android.targetArchitectures = AndroidArchitecture.ARM64;
-            if (PlayerSettings.Android.minSdkVersion < AndroidSdkVersions.AndroidApiLevel29)
-                PlayerSettings.Android.minSdkVersion = AndroidSdkVersions.AndroidApiLevel29;
-            EditorUserBuildSettings.androidBuildSubtarget = MobileTextureSubtarget.ASTC;
-            ConfigureXRLoader();
-#if KOSMOS_META_XR_CORE
-            // Meta's Android build step declares the hand-tracking permission and feature from this setting.
-            OVRProjectConfig config = OVRProjectConfig.CachedProjectConfig;
-            if (config == null)
-                throw new InvalidOperationException("Meta's project config (OVRProjectConfig.CachedProjectConfig) could not be loaded or created, so hand tracking cannot be declared in the APK. "
-                    + "Open Meta > Tools > Project Setup Tool once (it creates Assets/Oculus/OculusProjectConfig.asset), then build again.");
-            if (config.handTrackingSupport == OVRProjectConfig.HandTrackingSupport.ControllersOnly)
-                config.handTrackingSupport = OVRProjectConfig.HandTrackingSupport.ControllersAndHands;
-            OVRProjectConfig.CommitProjectConfig(config);
-#else
-            Debug.LogWarning("Meta XR Core SDK (com.meta.xr.sdk.core) is not installed: hand tracking is not declared in the APK's manifest.");
-#endif
-            AssetDatabase.SaveAssets();
-        }
-
-        /// <summary>
-        /// XR Plug-in Management for Android: the settings asset (created under Assets/XR and registered when the
-        /// project has none), the Oculus loader assigned, XR initialised on startup. Without it the APK starts
-        /// as a flat Android app.
-        /// </summary>
-        static void ConfigureXRLoader()
-        {
-#if KOSMOS_XR_MANAGEMENT && KOSMOS_XR_OCULUS
-            if (!EditorBuildSettings.TryGetConfigObject(XRGeneralSettings.k_SettingsKey, out XRGeneralSettingsPerBuildTarget perTarget))
-            {
-                perTarget = ScriptableObject.CreateInstance<XRGeneralSettingsPerBuildTarget>();
-                if (!AssetDatabase.IsValidFolder("Assets/XR")) AssetDatabase.CreateFolder("Assets", "XR");
-                AssetDatabase.CreateAsset(perTarget, "Assets/XR/XRGeneralSettingsPerBuildTarget.asset");
-                EditorBuildSettings.AddConfigObject(XRGeneralSettings.k_SettingsKey, perTarget, true);
-            }
-            if (!perTarget.HasManagerSettingsForBuildTarget(BuildTargetGroup.Android))
-                perTarget.CreateDefaultManagerSettingsForBuildTarget(BuildTargetGroup.Android);
-            XRGeneralSettings android = perTarget.SettingsForBuildTarget(BuildTargetGroup.Android);
-            android.InitManagerOnStart = true;
-            if (!XRPackageMetadataStore.AssignLoader(android.Manager, OculusLoaderType, BuildTargetGroup.Android)
-                || !XRPackageMetadataStore.IsLoaderAssigned(OculusLoaderType, BuildTargetGroup.Android))
-                throw new InvalidOperationException("The Oculus XR loader (" + OculusLoaderType + ") could not be assigned for Android in XR Plug-in Management: "
-                    + "the APK would not start in VR. Enable it in Project Settings > XR Plug-in Management > Android > Oculus, then build again.");
-            EditorUtility.SetDirty(android);
-            EditorUtility.SetDirty(perTarget);
-            // The Oculus plug-in's own settings exist once its settings page has been opened; they default to Quest 2.
-            if (EditorBuildSettings.TryGetConfigObject("Unity.XR.Oculus.Settings", out global::Unity.XR.Oculus.OculusSettings oculus) && !oculus.TargetQuest2)
-            {
-                oculus.TargetQuest2 = true;
-                EditorUtility.SetDirty(oculus);
-            }
-#else
-            throw new InvalidOperationException("XR Plug-in Management (com.unity.xr.management 4.4.0 or later) and the Oculus XR Plugin (com.unity.xr.oculus 4.2.0 or later) "
-                + "must be installed to build for Quest: without an XR loader the APK starts as a flat Android app. Add both (the project's Packages/manifest.json pins them).");
-#endif
+            var changes = QuestProjectSettings.Apply(strict: true);
+            Debug.Log("Quest 2 project settings: " + (changes.Count > 0 ? string.Join("; ", changes) : "already set") + ".");
         }
 
         static string[] EnabledScenes()

@@ -88,8 +88,8 @@ namespace Kosmos.PseudoHaptic.Editor
         [MenuItem(Menu + "Discrimination (2AFC weight task)", priority = 24)]
         public static void Discrimination()
         {
-            if (!NewScene(out Scene scene, out Transform root, out _)) return;
-            DiscriminationStation.Build(root, Profile(NamedProfiles.PaperName, NamedProfiles.PaperName), "P1");
+            if (!NewScene(out Scene scene, out Transform root, out List<IPinchHandPoseSource> hands)) return;
+            DiscriminationStation.Build(root, Profile(NamedProfiles.PaperName, NamedProfiles.PaperName), "P1", hands);
             Save(scene, "Discrimination");
         }
 

@@ -31,6 +31,8 @@ namespace Kosmos.PseudoHaptic.Interaction
     {
         [Tooltip("The weight to drive; found on the Grabbable's target transform when empty.")]
         [SerializeField] PseudoHapticWeight _weight;
+        [Tooltip("The tracking space the hands are tracked in (OVRCameraRig ▸ TrackingSpace): its motion (locomotion, snap turns, teleports) carries the object rigidly. Found from the scene's OVRCameraRig when empty.")]
+        [SerializeField] Transform _rig;
 
         IGrabbable _grabbable;
         IPointable _pointable;
@@ -38,13 +40,16 @@ namespace Kosmos.PseudoHaptic.Interaction
         // interactor of each (null for other interactors).
         readonly List<int> _handIds = new List<int>(4);
         readonly List<IHandGrabInteractor> _hands = new List<IHandGrabInteractor>(4);
-        Vector3 _grabOffset;
         double _lastTime;
-        bool _holding;
+        bool _holding, _cancelling;
+        int[] _cancelIds = new int[4];
 
         public PseudoHapticWeight Weight => _weight;
 
         public void InjectWeight(PseudoHapticWeight weight) => _weight = weight;
+
+        /// <summary>The tracking space the hands are tracked in; null: the world.</summary>
+        public Transform Rig { get => _rig; set => _rig = value; }
 
         public void Initialize(IGrabbable grabbable)
         {
@@ -56,6 +61,13 @@ namespace Kosmos.PseudoHaptic.Interaction
             if (_weight == null && grabbable.Transform != null) _weight = grabbable.Transform.GetComponent<PseudoHapticWeight>();
             if (_weight == null) _weight = GetComponent<PseudoHapticWeight>();
             if (_weight == null) Debug.LogError("Pseudo-Haptic Transformer on '" + name + "' found no PseudoHapticWeight on the grabbed object.", this);
+#if KOSMOS_META_XR_CORE
+            if (_rig == null)
+            {
+                OVRCameraRig rig = FindFirstObjectByType<OVRCameraRig>();
+                if (rig != null) _rig = rig.trackingSpace;
+            }
+#endif
             ApplyHandDrawing();
         }
 
@@ -76,9 +88,12 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void BeginTransform()
         {
+            // While this transformer cancels the grabs (a break-away), the SDK's interactors unselect, and the Grabbable
+            // begins its one-grab transformer again for the hand not yet cancelled: nothing is to begin then.
+            if (_cancelling) return;
             _holding = false;
-            if (_grabbable == null || _weight == null || !TryHandCentre(out Vector3 grab, out _, out _)) return;
-            _grabOffset = _weight.transform.position - grab;
+            if (_grabbable == null || _weight == null || _handIds.Count == 0) return;
+            if (_rig != null && _weight.Hold.HandCount == 0) _weight.Rig = _rig; // the hold is solved in the rig's frame
             _lastTime = Time.timeAsDouble;
             for (int i = 0; i < _handIds.Count; i++) _weight.BeginHold(_handIds[i], HandPose(i, out _, out _), double.NaN, RigidbodyControl.External);
             _holding = _weight.IsHeld;
@@ -86,16 +101,15 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void UpdateTransform()
         {
-            if (!_holding || !TryHandCentre(out Vector3 grab, out bool tracked, out _)) return;
+            if (!_holding || _handIds.Count == 0) return;
             double now = Time.timeAsDouble;
             float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
             _lastTime = now;
-            Transform target = _weight.transform;
-            target.position = GrabFollow.Horizontal(target.position.ToDouble(), grab.ToDouble(), _grabOffset.ToDouble(), tracked, GrabFollow.GrabMovesHorizontal(true, _weight.Hold)).ToUnity();
+            // x/z: the mean of the grabbing hands and the offset taken when they changed (HeldObject.GrabTarget), or the solver's.
             for (int i = 0; i < _handIds.Count; i++)
             {
                 Vector3 hand = HandPose(i, out bool handTracked, out bool highConfidence);
-                _weight.Step(_handIds[i], hand, handTracked, highConfidence, double.NaN, dt);
+                _weight.Step(_handIds[i], hand, handTracked, highConfidence, double.NaN, dt, grabMovesHorizontal: true);
             }
             if (_weight.Hold.BrokeAway) CancelGrabs();
         }
@@ -107,8 +121,20 @@ namespace Kosmos.PseudoHaptic.Interaction
         void CancelGrabs()
         {
             var element = _grabbable as IPointableElement;
-            for (int i = _handIds.Count - 1; i >= 0 && element != null; i = Math.Min(i - 1, _handIds.Count - 1))
-                element.ProcessPointerEvent(new PointerEvent(_handIds[i], PointerEventType.Cancel, default(Pose)));
+            int n = _handIds.Count;
+            if (_cancelIds.Length < n) _cancelIds = new int[n];
+            _handIds.CopyTo(_cancelIds); // the Cancel events change _handIds while this loops
+            _cancelling = true;
+            try
+            {
+                for (int i = n - 1; i >= 0 && element != null; i--)
+                    element.ProcessPointerEvent(new PointerEvent(_cancelIds[i], PointerEventType.Cancel, default(Pose)));
+            }
+            finally
+            {
+                _cancelling = false;
+            }
+            _holding = false;
             if (_weight != null) _weight.EndHold(); // whatever the Grabbable did not report
         }
 
@@ -149,24 +175,13 @@ namespace Kosmos.PseudoHaptic.Interaction
         {
             IHandGrabInteractor hand = _hands[i];
             var points = _grabbable.GrabPoints;
-            tracked = hand == null || hand.Hand.IsTrackedDataValid;
-            highConfidence = hand == null || hand.Hand.IsHighConfidence;
-            return hand != null ? hand.GetHandGrabPose().position : points != null && i < points.Count ? points[i].position : _weight.transform.position;
-        }
-
-        /// <summary>The mean of the grabbing hands (<see cref="GrabCentre"/>); tracked only when every hand is.</summary>
-        bool TryHandCentre(out Vector3 centre, out bool tracked, out bool highConfidence)
-        {
-            var mean = new GrabCentre();
-            for (int i = 0; i < _handIds.Count; i++)
-            {
-                Vector3 p = HandPose(i, out bool t, out bool h);
-                mean.Add(p.ToDouble(), t, h);
-            }
-            centre = mean.Point.ToUnity();
-            tracked = mean.IsTracked;
-            highConfidence = mean.IsHighConfidence;
-            return mean.Count > 0;
+            // A hand grab interactor without its hand (not wired, or its hand destroyed) reads as lost, never as an exception.
+            Oculus.Interaction.Input.IHand tracking = hand != null ? hand.Hand : null;
+            bool noHand = hand != null && tracking == null;
+            tracked = hand == null || (!noHand && tracking.IsTrackedDataValid);
+            highConfidence = hand == null || (!noHand && tracking.IsHighConfidence);
+            if (hand != null && !noHand) return hand.GetHandGrabPose().position;
+            return points != null && i < points.Count ? points[i].position : _weight.transform.position;
         }
     }
 }

@@ -40,6 +40,10 @@ namespace Kosmos.PseudoHaptic
         int _count;
         bool _active; // a hold began and its Ended has not been raised
         WeightProfile _given, _used;
+        // The grab's x/z (no lateral inertia): the usable hands' mean plus the object's offset from it, re-anchored
+        // whenever the set of usable hands changes, so neither hand's frame order nor a hand joining moves the object.
+        int _usableMask = -1;
+        Vector3d _centreOffset, _objectNow;
         VelocityTracker _handVelocity, _objectVelocity;
         double _clock;
 
@@ -71,6 +75,13 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>The point the solver follows: world x/z, parent-space y (the last followed one while every hand is lost).</summary>
         public Vector3d HandPoint { get; private set; }
+
+        /// <summary>
+        /// Where the grab puts the object's x/z when the solver does not move them: the mean of the usable hands (world x/z)
+        /// plus the offset the object had from that mean when the set of usable hands last changed; NaN while no hand is usable.
+        /// The same for every hand on the object, whichever steps last.
+        /// </summary>
+        public Vector3d GrabTarget { get; private set; } = Vector3d.NaN;
 
         /// <summary>The hand as the y solver was given it on the hold's last frame.</summary>
         public HandSample LastHand { get; private set; }
@@ -133,6 +144,7 @@ namespace Kosmos.PseudoHaptic
                 int free = _slotHand[0] == Empty ? 0 : 1;
                 Take(free, hand, handWorld, true, true, poseTime);
                 Solver3D.SetGrip(free + 1, true); // joins once steadily tracked; the followed point is re-anchored
+                UpdateGrabTarget(); // the grab's x/z re-anchor on the hands as they are when this one joins
                 return true;
             }
             Take(0, hand, handWorld, true, true, poseTime);
@@ -155,6 +167,9 @@ namespace Kosmos.PseudoHaptic
             HandPoint = Followed(_pose[0]);
             _handVelocity.Reset(HandPoint, 0);
             _objectVelocity.Reset(objectWorld, 0);
+            _objectNow = objectWorld;
+            _usableMask = -1;
+            UpdateGrabTarget();
             bool usable = _pose[0].IsUsable;
             LastHand = new HandSample(usable ? _pose[0].Y : double.NaN, usable, usable, poseTime);
             LastDeltaTime = 0;
@@ -186,16 +201,53 @@ namespace Kosmos.PseudoHaptic
             LastDeltaTime = dt;
             if (dt > 0 && !double.IsInfinity(dt)) _clock += dt;
             if (any) _handVelocity.Add(HandPoint, _clock);
+            UpdateGrabTarget();
             Stepped?.Invoke();
             return s.ObjectY;
         }
 
-        /// <summary>The object's world position with x/z the solver's when it moves them (<see cref="MovesHorizontal"/>), else <paramref name="objectNow"/>.</summary>
-        public Vector3d Horizontal(Vector3d objectNow) =>
-            MovesHorizontal && _active ? new Vector3d(Solver3D.ObjectX, objectNow.Y, Solver3D.ObjectZ) : objectNow;
+        /// <summary>
+        /// The object's world position with x/z the solver's when it moves them (<see cref="MovesHorizontal"/>), else the
+        /// grab's (<see cref="GrabTarget"/>) when <paramref name="grabMoves"/> and a hand is usable, else <paramref name="objectNow"/>.
+        /// </summary>
+        public Vector3d Horizontal(Vector3d objectNow, bool grabMoves = false)
+        {
+            if (!_active) return objectNow;
+            if (MovesHorizontal) return new Vector3d(Solver3D.ObjectX, objectNow.Y, Solver3D.ObjectZ);
+            Vector3d t = GrabTarget;
+            return grabMoves && double.IsFinite(t.X) && double.IsFinite(t.Z) ? new Vector3d(t.X, objectNow.Y, t.Z) : objectNow;
+        }
 
         /// <summary>The object's world position after the step's write, for its release velocity.</summary>
-        public void TrackObject(Vector3d objectWorld) => _objectVelocity.Add(objectWorld, _clock);
+        public void TrackObject(Vector3d objectWorld)
+        {
+            _objectVelocity.Add(objectWorld, _clock);
+            if (objectWorld.IsFinite) _objectNow = objectWorld;
+        }
+
+        void UpdateGrabTarget()
+        {
+            int mask = 0, n = 0;
+            double x = 0, z = 0;
+            for (int i = 0; i < MaxHands; i++)
+            {
+                if (_slotHand[i] == Empty || !_pose[i].IsUsable || double.IsNaN(_pose[i].X) || double.IsNaN(_pose[i].Z)) continue;
+                mask |= 1 << i;
+                n++;
+                x += _pose[i].X;
+                z += _pose[i].Z;
+            }
+            if (n == 0)
+            {
+                GrabTarget = Vector3d.NaN;
+                _usableMask = 0;
+                return;
+            }
+            var centre = new Vector3d(x / n, 0, z / n);
+            if (mask != _usableMask) _centreOffset = new Vector3d(_objectNow.X - centre.X, 0, _objectNow.Z - centre.Z);
+            _usableMask = mask;
+            GrabTarget = new Vector3d(centre.X + _centreOffset.X, double.NaN, centre.Z + _centreOffset.Z);
+        }
 
         /// <summary>Hand <paramref name="hand"/> lets go. True when that ended the hold (it was the last hand).</summary>
         public bool End(int hand)
@@ -209,6 +261,7 @@ namespace Kosmos.PseudoHaptic
             if (_count > 0)
             {
                 if (IsHeld) Solver3D.SetGrip(slot + 1, false); // the other hand continues; its share grows back
+                UpdateGrabTarget();
                 return false;
             }
             if (IsHeld) Solver3D.EndHold();

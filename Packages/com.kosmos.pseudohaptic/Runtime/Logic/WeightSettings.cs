@@ -122,6 +122,13 @@ namespace Kosmos.PseudoHaptic
             return true;
         }
 
+        /// <summary>
+        /// Null when an object whose mass a task sets each trial (through its explicit mass) takes its mass from there;
+        /// otherwise why it cannot be used: with any other source the trial's mass would never reach the solver.
+        /// </summary>
+        public static string ExplicitMassError(string objectRole, MassSource source) => source == MassSource.Explicit ? null
+            : "the " + objectRole + " object's Mass Source is " + source + ", but the task sets each trial's mass through Explicit Mass Kg: set its Mass Source to Explicit";
+
         /// <summary>Whether the resolved mass is written back to the Rigidbody (it came from elsewhere).</summary>
         public static bool WritesRigidbodyMass(MassSource source) => source != MassSource.Rigidbody;
 

@@ -11,13 +11,15 @@ namespace Kosmos.PseudoHaptic.Meta
     /// Compiled only when com.meta.xr.sdk.core is installed.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/OVR Hand Pose Source")]
-    public sealed class OvrHandPoseSource : MonoBehaviour, IPinchHandPoseSource
+    public sealed class OvrHandPoseSource : MonoBehaviour, IPinchHandPoseSource, IRigHandPoseSource
     {
         public enum PositionSource
         {
             /// <summary>The OVRHand's own transform (the hand anchor of OVRCameraRig: the wrist).</summary>
             HandTransform,
-            /// <summary>OVRHand.PointerPose (between thumb and index), when the SDK says it is valid.</summary>
+            /// <summary>OVRHand.PointerPose (between thumb and index), when the SDK says it is valid: its pose in tracking space
+            /// (what the SDK writes into PointerPose's local pose) placed through the tracking space, never through the
+            /// hand's transforms, which a hand drawn on the object offsets.</summary>
             PointerPose,
         }
 
@@ -28,6 +30,8 @@ namespace Kosmos.PseudoHaptic.Meta
         [SerializeField] Transform _tracked;
         [Tooltip("A pinch counts only while the index finger is tracked with high confidence.")]
         [SerializeField] bool _pinchNeedsHighConfidence = true;
+        [Tooltip("The tracking space (OVRCameraRig ▸ TrackingSpace) the hand is tracked in; found from the OVRCameraRig above the hand when empty.")]
+        [SerializeField] Transform _trackingSpace;
 
         public OVRHand OvrHand => _hand;
 
@@ -36,9 +40,27 @@ namespace Kosmos.PseudoHaptic.Meta
         /// <summary>The transform read as the tracked hand (the hand anchor), above any offset visual root.</summary>
         public Transform Tracked { get => _tracked; set => _tracked = value; }
 
+        public PositionSource Source { get => _position; set => _position = value; }
+
+        /// <summary>The tracking space the hand is tracked in: the one set, else the OVRCameraRig's above the hand, else null (world).</summary>
+        public Transform Rig
+        {
+            get
+            {
+                if (_trackingSpace == null && _hand != null)
+                {
+                    OVRCameraRig rig = _hand.GetComponentInParent<OVRCameraRig>();
+                    if (rig != null) _trackingSpace = rig.trackingSpace;
+                }
+                return _trackingSpace;
+            }
+            set => _trackingSpace = value;
+        }
+
         void Awake()
         {
             if (_hand == null) _hand = GetComponentInParent<OVRHand>();
+            _ = Rig; // found once here, never per frame
             if (_hand == null) Debug.LogError("OVR Hand Pose Source on '" + name + "' has no OVRHand to read.", this);
         }
 
@@ -51,7 +73,12 @@ namespace Kosmos.PseudoHaptic.Meta
             get
             {
                 if (_hand == null) return new Vector3(float.NaN, float.NaN, float.NaN);
-                if (_position == PositionSource.PointerPose && _hand.IsPointerPoseValid) return _hand.PointerPose.position;
+                if (_position == PositionSource.PointerPose && _hand.IsPointerPoseValid)
+                {
+                    Transform space = Rig;
+                    Vector3 inSpace = _hand.PointerPose.localPosition; // the SDK writes the tracking-space pose there
+                    return space != null ? space.TransformPoint(inSpace) : inSpace;
+                }
                 return (_tracked != null ? _tracked : _hand.transform).position;
             }
         }

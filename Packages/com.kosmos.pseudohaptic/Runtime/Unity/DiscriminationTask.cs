@@ -136,7 +136,11 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Begins or resumes the session of <see cref="Participant"/> in <see cref="Condition"/>. False (and <see cref="Error"/>) when it cannot.</summary>
-        public bool Begin() => Shown(Model.Begin(_left != null && _right != null, Settings, _participant, _condition, TrialsPath) && Applied());
+        public bool Begin() => Shown(Model.Begin(ObjectsError, Settings, _participant, _condition, TrialsPath) && Applied());
+
+        /// <summary>Why the two objects cannot carry the trials' masses (one missing, or one whose mass does not come from Explicit Mass Kg), or null.</summary>
+        public string ObjectsError => _left == null || _right == null ? "the left and right objects are not set"
+            : WeightSettings.ExplicitMassError("left", _left.Mass) ?? WeightSettings.ExplicitMassError("right", _right.Mass);
 
         void OnHoldBegan(PseudoHapticWeight weight)
         {

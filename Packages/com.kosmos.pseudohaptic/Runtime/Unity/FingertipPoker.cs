@@ -38,6 +38,18 @@ namespace Kosmos.PseudoHaptic
 
         public SphereCollider Collider => _collider;
 
+        /// <summary>Radius of the fingertip sphere, m (finite, &gt; 0).</summary>
+        public float Radius
+        {
+            get => _radius;
+            set
+            {
+                FieldRules.Require(FieldRules.Positive(nameof(Radius), value), nameof(Radius), value);
+                _radius = value;
+                if (_collider != null) _collider.radius = value;
+            }
+        }
+
         /// <summary>The fingertip followed; null when this object is the fingertip (or none is found yet).</summary>
         public Transform Follow
         {
@@ -71,6 +83,12 @@ namespace Kosmos.PseudoHaptic
             _collider = GetComponent<SphereCollider>();
             if (_collider == null) _collider = gameObject.AddComponent<SphereCollider>();
             _collider.isTrigger = true;
+            string radius = FieldRules.Positive("Radius", _radius);
+            if (radius != null)
+            {
+                Debug.LogError("Fingertip Poker on '" + name + "': " + radius + "; it keeps the collider's radius " + _collider.radius, this);
+                _radius = _collider.radius;
+            }
             _collider.radius = _radius;
             var body = GetComponent<Rigidbody>();
             if (body == null) body = gameObject.AddComponent<Rigidbody>();

@@ -28,4 +28,14 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The index finger and thumb are pinching this frame.</summary>
         bool IsPinching { get; }
     }
+
+    /// <summary>
+    /// A hand pose source that knows the tracking space its hand is tracked in (OVRCameraRig's TrackingSpace, the XR
+    /// Origin's Camera Offset): the rig whose motion (walking, turning, teleports, platforms) is not the hand's.
+    /// </summary>
+    public interface IRigHandPoseSource : IHandPoseSource
+    {
+        /// <summary>The tracking space, or null when the hand's positions are plain world positions.</summary>
+        Transform Rig { get; }
+    }
 }

@@ -39,7 +39,16 @@ namespace Kosmos.PseudoHaptic
         public HandGrab Grab => _grab;
         public HandDrawing Drawing => _drawing;
         public IPinchHandPoseSource Hand => _source ?? (_source = HandSourceField.Resolve<IPinchHandPoseSource>(_hand));
-        public float Reach { get => _reach; set => _reach = value; }
+        /// <summary>How near the hand must be to an object's collider to grab it, m (finite, ≥ 0).</summary>
+        public float Reach
+        {
+            get => _reach;
+            set
+            {
+                FieldRules.Require(FieldRules.NonNegative(nameof(Reach), value), nameof(Reach), value);
+                _reach = value;
+            }
+        }
         public float ReleaseAfterLost { get => _releaseAfterLost; set => _grab.ReleaseAfterLost = _releaseAfterLost = value; }
         public Transform HandVisual { get => _handVisual; set { _handVisual = value; _visualRest = value != null ? value.localPosition : default; } }
         int Id => _id != 0 ? _id : (_id = ++s_nextId);
@@ -62,6 +71,12 @@ namespace Kosmos.PseudoHaptic
         {
             HandVisual = _handVisual;
             _grab.ReleaseAfterLost = _releaseAfterLost; // throws on an invalid setting, naming it
+            string reach = FieldRules.NonNegative("Reach", _reach);
+            if (reach != null)
+            {
+                Debug.LogError("Pinch Grab on '" + name + "': " + reach, this);
+                enabled = false; // grabbing nothing beats grabbing with a NaN reach every frame
+            }
             if (_hand != null && Hand == null) Debug.LogError("Pinch Grab on '" + name + "': '" + _hand.name + "' has no IPinchHandPoseSource.", this);
         }
 
@@ -76,7 +91,10 @@ namespace Kosmos.PseudoHaptic
             _position = hand.Position;
             _dt = dt;
             _grab.Tick(hand.IsTracked, PinchSources.Strength(hand), dt, this);
-            Vector3d lag = _held != null ? GrabFollow.Lag(_held.transform.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble()) : Vector3d.Zero;
+            // The lag in the hold's frame (the rig at the grab), turned back into the world with the rig.
+            Vector3d lag = _held != null
+                ? _held.OutOfHoldFrame(GrabFollow.Lag(_held.InHoldFrame(_held.transform.position).ToDouble(), _held.InHoldFrame(_position).ToDouble(), _grabOffset.ToDouble()).ToUnity()).ToDouble()
+                : Vector3d.Zero;
             Vector3d offset = _drawing.Update(_held != null ? _held.HandDrawing : HandDrawingMode.HandTrue, _held != null, lag, dt);
             if (_handVisual != null) _handVisual.localPosition = _visualRest;
             if (_handVisual != null) _handVisual.position += offset.ToUnity();
@@ -89,21 +107,22 @@ namespace Kosmos.PseudoHaptic
         {
             int i = GrabSelection.Nearest(_position.ToDouble(), _reach, HeldObject.MaxHands, this);
             PseudoHapticWeight w = i >= 0 ? PseudoHapticWeight.Enabled[i] : null;
-            if (w == null || !w.BeginHold(Id, _position, Hand.PoseTime)) return false;
+            if (w == null) return false;
+            if (Hand is IRigHandPoseSource rigged && rigged.Rig != null && w.Hold.HandCount == 0) w.Rig = rigged.Rig; // the hold is solved in the hand's rig
+            if (!w.BeginHold(Id, _position, Hand.PoseTime)) return false;
             _held = w;
-            _grabOffset = w.transform.position - _position;
+            _grabOffset = w.InHoldFrame(w.transform.position) - w.InHoldFrame(_position);
             return true;
         }
 
         bool IGrabDriver.IsStillHeld => _held != null && _held.Hold.Holds(Id);
         bool IGrabDriver.BrokeAway => _held != null && _held.Hold.BrokeAway;
 
+        // x/z: the hold's, from every hand on the object (HeldObject.GrabTarget), so two hands agree whichever ticks last.
         void IGrabDriver.Follow(bool tracked)
         {
-            Transform t = _held.transform;
-            t.position = GrabFollow.Horizontal(t.position.ToDouble(), _position.ToDouble(), _grabOffset.ToDouble(), tracked, GrabFollow.GrabMovesHorizontal(_followHorizontal, _held.Hold)).ToUnity();
             IPinchHandPoseSource hand = Hand;
-            _held.Step(Id, _position, tracked, hand.IsHighConfidence, hand.PoseTime, _dt);
+            _held.Step(Id, _position, tracked, hand.IsHighConfidence, hand.PoseTime, _dt, GrabFollow.GrabMovesHorizontal(_followHorizontal, _held.Hold));
         }
 
         void IGrabDriver.Release()

@@ -163,6 +163,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The core's names of the effects a profile asset lists ("weight-gain", …), in build order.</summary>
         public static IReadOnlyList<string> EffectNames => s_effectNames;
 
+        /// <summary>Whether <paramref name="effectName"/> is one of <see cref="EffectNames"/>.</summary>
+        public static bool IsKnownEffect(string effectName) => effectName != null && Array.IndexOf(s_effectNames, effectName) >= 0;
+
         ref bool Switch(int index)
         {
             switch (index)

@@ -40,11 +40,17 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] float _explicitStandardSpeed = (float)WeightSolver.DefaultStandardSpeed;
         [Header("Release")]
         [SerializeField] ReleaseVelocity _releaseVelocity = ReleaseVelocity.Object;
+        [Header("Rig")]
+        [Tooltip("The tracking space the hands are tracked in (OVRCameraRig ▸ TrackingSpace, the XR Origin's Camera Offset): its motion carries a held object rigidly and is never weighed. Grab drivers set it from their hand source; empty: the world.")]
+        [SerializeField] Transform _rig;
 
         static readonly List<PseudoHapticWeight> s_enabled = new List<PseudoHapticWeight>();
         HeldObject _hold;
         HeldBody _body;
         RigidbodyControl _rigidbodyControl;
+        HoldFrame _frame;             // the rig as it stood at the grab: the hold's frame
+        Vector3 _heldPosition;        // the object's position in that frame, as last written
+        Quaternion _heldRotation;     // and its rotation at the grab (in that frame it does not turn)
         readonly ConfigurationWatch _watch = new ConfigurationWatch();
         string _error;
 
@@ -65,7 +71,16 @@ namespace Kosmos.PseudoHaptic
         public HandSample LastHand => Hold.LastHand;
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
         /// <summary>The point the solver follows, world space (its height converted from the parent's).</summary>
-        public Vector3 HandWorldPosition => Hold.HandPoint.ToUnity() + (transform.parent != null ? transform.parent.position.y : 0) * Vector3.up;
+        public Vector3 HandWorldPosition => _frame.Out(Hold.HandPoint.ToUnity() + (transform.parent != null ? transform.parent.position.y : 0) * Vector3.up);
+
+        /// <summary>The tracking space the hands are tracked in (null: the world); a new value applies from the next hold.</summary>
+        public Transform Rig { get => _rig; set => _rig = value; }
+
+        /// <summary>A world point, now, in the frame the hold is solved in (the rig as it stood at the grab; see <see cref="HoldFrame"/>).</summary>
+        public Vector3 InHoldFrame(Vector3 world) => _frame.In(world);
+
+        /// <summary>A direction of the hold's frame (an offset, a velocity) in the world, now.</summary>
+        public Vector3 OutOfHoldFrame(Vector3 direction) => _frame.OutDirection(direction);
         public HandDrawingMode HandDrawing => _profile != null ? _profile.HandDrawing : HandDrawingMode.HandTrue;
         public Collider Collider => _volumeCollider != null ? _volumeCollider : GetComponent<Collider>();
         public Collider VolumeCollider { get => _volumeCollider; set { _volumeCollider = value; _watch.MarkDirty(); } }
@@ -84,12 +99,19 @@ namespace Kosmos.PseudoHaptic
             var hold = new HeldObject(this);
             hold.Began += () => { _body = new HeldBody(_rigidbodyControl == RigidbodyControl.ByThisComponent ? Body : null); _body.Take(); Raise(HoldBegan); };
             hold.Stepped += () => Raise(HoldStepped);
-            hold.Ended += () => { _body.Restore(Hold.ReleaseVelocity(_releaseVelocity).ToUnity()); Raise(HoldEnded); };
+            hold.Ended += () => { _body.Restore(_frame.OutDirection(Hold.ReleaseVelocity(_releaseVelocity).ToUnity())); Raise(HoldEnded); };
             return hold;
         }
 
-        void OnEnable() { s_enabled.Add(this); UserCalibrationStore.Changed += MarkDirty; }
-        void OnDisable() { Hold.EndAll(); s_enabled.Remove(this); UserCalibrationStore.Changed -= MarkDirty; }
+        void OnEnable() { s_enabled.Add(this); UserCalibrationStore.Changed += MarkDirty; Application.onBeforeRender += FollowRig; }
+        void OnDisable() { Hold.EndAll(); s_enabled.Remove(this); UserCalibrationStore.Changed -= MarkDirty; Application.onBeforeRender -= FollowRig; }
+
+        // Just before the frame renders (after every LateUpdate): a rig moved late in the frame carries the held object
+        // along in this very frame. OVR moves its anchors here too; the object's place in the rig's frame stays the step's.
+        void FollowRig()
+        {
+            if (IsHeld && _frame.Rig != null) Place();
+        }
         void MarkDirty() => _watch.MarkDirty();
 
         void OnValidate()
@@ -146,20 +168,30 @@ namespace Kosmos.PseudoHaptic
             Collider c = Collider;
             Hold.BottomBelowPivot = c != null ? Math.Max(0, transform.position.y - c.bounds.min.y) : 0; // the floor keeps the bottom up
             _rigidbodyControl = rigidbody; // the first hand's Began takes the Rigidbody
-            bool began = Hold.Begin(hand, handWorld.ToDouble(), poseTime, transform.position.ToDouble(), transform.localPosition.y);
-            SetLocalY(began ? Solver.ObjectY : double.NaN); // the floor may have lifted the start
+            if (Hold.HandCount == 0)
+            {
+                _frame = HoldFrame.At(_rig);
+                _heldPosition = transform.position;
+                _heldRotation = transform.rotation;
+            }
+            bool began = Hold.Begin(hand, _frame.In(handWorld).ToDouble(), poseTime, _heldPosition.ToDouble(), transform.localPosition.y);
+            if (began && Hold.HandCount == 1) SetHeld(_heldPosition, Solver.ObjectY); // the floor may have lifted the start
             return began;
         }
 
-        /// <summary>One frame of hand <paramref name="hand"/>; writes the object's local y (and x/z with lateral inertia) and returns y. Never throws, never allocates.</summary>
-        public float Step(int hand, Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt)
+        /// <summary>
+        /// One frame of hand <paramref name="hand"/>; writes the object's local y (and x/z: the solver's with lateral inertia,
+        /// else, when <paramref name="grabMovesHorizontal"/>, the mean of the hands on it plus the offset it had from them:
+        /// <see cref="HeldObject.GrabTarget"/>) and returns y. Never throws, never allocates.
+        /// </summary>
+        public float Step(int hand, Vector3 handWorld, bool isTracked, bool isHighConfidence, double poseTime, float dt, bool grabMovesHorizontal = false)
         {
             if (IsHeld && NeedsConfiguration) Configure(); // only after a setting changed
-            double y = Hold.Step(hand, handWorld.ToDouble(), isTracked, isHighConfidence, poseTime, dt);
-            transform.position = Hold.Horizontal(transform.position.ToDouble()).ToUnity();
-            SetLocalY(y);
-            Hold.TrackObject(transform.position.ToDouble());
-            return transform.localPosition.y;
+            if (!Hold.Holds(hand)) return transform.localPosition.y;
+            double y = Hold.Step(hand, _frame.In(handWorld).ToDouble(), isTracked, isHighConfidence, poseTime, dt);
+            SetHeld(Hold.Horizontal(_heldPosition.ToDouble(), grabMovesHorizontal).ToUnity(), y);
+            Hold.TrackObject(_heldPosition.ToDouble());
+            return (float)ParentY(_heldPosition);
         }
 
         /// <summary>Hand <paramref name="hand"/> lets go; the last hand ends the hold and the Rigidbody gets its state and release velocity back.</summary>
@@ -173,11 +205,26 @@ namespace Kosmos.PseudoHaptic
 
         double IParentSpace.HeightOf(Vector3d world) => ParentY(world.ToUnity());
 
-        void SetLocalY(double y)
+        /// <summary>The object at <paramref name="held"/> (the hold's frame) with its parent-space height <paramref name="localY"/> (NaN: kept), placed through the rig.</summary>
+        void SetHeld(Vector3 held, double localY)
         {
-            Vector3 p = transform.localPosition;
-            p.y = (float)y;
-            if (double.IsFinite(p.y)) transform.localPosition = p; // NaN: nothing to write (another hand's step)
+            if (double.IsFinite(localY)) // NaN: nothing to write (another hand's step)
+            {
+                Transform parent = transform.parent;
+                Vector3 local = parent != null ? parent.InverseTransformPoint(held) : held;
+                local.y = (float)localY;
+                held = parent != null ? parent.TransformPoint(local) : local;
+            }
+            if (!held.ToDouble().IsFinite) return; // never NaN on a transform
+            _heldPosition = held;
+            Place();
+        }
+
+        /// <summary>Writes the object's world pose: its place in the hold's frame, through the rig as it is now.</summary>
+        void Place()
+        {
+            transform.position = _frame.Out(_heldPosition);
+            if (_frame.Rig != null) transform.rotation = _frame.Turn * _heldRotation;
         }
 
         void Raise(Action<PseudoHapticWeight> handlers)

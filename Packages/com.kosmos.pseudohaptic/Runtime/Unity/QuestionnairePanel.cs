@@ -70,7 +70,7 @@ namespace Kosmos.PseudoHaptic
         public string MessageText => Parts.Message.text;
         QuestionnairePanelParts Parts => _parts ?? (_parts = new QuestionnairePanelParts(this, new QuestionnairePanelParts.Style
         {
-            Size = _size, TextSize = _textSize, Panel = _panelColor, Text = _textColor, Button = _buttonColor, Chosen = _chosenColor,
+            Size = LookError == null ? _size : DefaultSize, TextSize = LookError == null ? _textSize : DefaultTextSize, Panel = _panelColor, Text = _textColor, Button = _buttonColor, Chosen = _chosenColor,
             ButtonText = _buttonTextColor, Back = _backText, Next = _nextText,
         }));
 
@@ -79,6 +79,31 @@ namespace Kosmos.PseudoHaptic
 
         public void InjectQuestionnaires(params TextAsset[] definitions) => _questionnaires = definitions ?? new TextAsset[0];
         public string[] Ask { get => _ask; set => _ask = value ?? new string[0]; }
+
+        /// <summary>Width and height of the panel, m (each finite, &gt; 0); set before the panel is first shown.</summary>
+        public Vector2 Size
+        {
+            get => _size;
+            set
+            {
+                FieldRules.Require(FieldRules.First(FieldRules.Positive("Size.x", value.x), FieldRules.Positive("Size.y", value.y)), nameof(Size), value.x);
+                _size = value;
+            }
+        }
+
+        /// <summary>Character size of the item text (finite, &gt; 0); set before the panel is first shown.</summary>
+        public float TextSize
+        {
+            get => _textSize;
+            set
+            {
+                FieldRules.Require(FieldRules.Positive(nameof(TextSize), value), nameof(TextSize), value);
+                _textSize = value;
+            }
+        }
+
+        /// <summary>Why the panel's look cannot be built (a size or text size that is not a positive length), or null.</summary>
+        public string LookError => FieldRules.First(FieldRules.Positive("Size.x", _size.x), FieldRules.Positive("Size.y", _size.y), FieldRules.Positive("Text Size", _textSize));
         public string Participant { get => _participant; set => _participant = value ?? ""; }
         public string ResponsesFile { get => _responsesFile; set => _responsesFile = value ?? ""; }
 
@@ -93,6 +118,16 @@ namespace Kosmos.PseudoHaptic
             model.Answered += s => Answered?.Invoke(s);
             model.Failed += e => Debug.LogError("Questionnaire panel '" + name + "': " + e, this);
             return model;
+        }
+
+        void Awake()
+        {
+            if (LookError != null) Debug.LogError("Questionnaire panel '" + name + "': " + LookError + "; the defaults are used", this);
+        }
+
+        void OnValidate()
+        {
+            if (LookError != null) Debug.LogError("Questionnaire panel '" + name + "': " + LookError, this);
         }
 
         void Start()
@@ -148,6 +183,9 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Shows the model's current view.</summary>
-        public void Show() => Parts.Apply(Model.View(_size.x, _textSize));
+        public void Show() => Parts.Apply(LookError == null ? Model.View(_size.x, _textSize) : Model.View(DefaultSize.x, DefaultTextSize));
+
+        static readonly Vector2 DefaultSize = new Vector2(0.6f, 0.42f);
+        const float DefaultTextSize = 0.004f;
     }
 }

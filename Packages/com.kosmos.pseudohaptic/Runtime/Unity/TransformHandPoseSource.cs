@@ -16,7 +16,10 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] bool _isHighConfidence = true;
         [SerializeField] bool _isPinching;
 
-        public Vector3 Position => (_hand != null ? _hand : transform).position;
+        public Vector3 Position => Tracked.position;
+
+        /// <summary>The transform followed: the one given, or this object's own.</summary>
+        public Transform Tracked => _hand != null ? _hand : transform;
         public double PoseTime => double.NaN;
 
         public bool IsTracked { get => _isTracked; set => _isTracked = value; }

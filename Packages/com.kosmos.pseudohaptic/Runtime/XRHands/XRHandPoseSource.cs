@@ -1,4 +1,5 @@
 using System.Collections.Generic;
+using Unity.XR.CoreUtils;
 using UnityEngine;
 using UnityEngine.XR.Hands;
 
@@ -17,7 +18,7 @@ namespace Kosmos.PseudoHaptic.XRHands
     /// Compiled only when com.unity.xr.hands is installed. Reading allocates nothing after the subsystem is found.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/XR Hands Pose Source")]
-    public sealed class XRHandPoseSource : MonoBehaviour, IPinchHandPoseSource, IPinchStrengthSource
+    public sealed class XRHandPoseSource : MonoBehaviour, IPinchHandPoseSource, IPinchStrengthSource, IRigHandPoseSource
     {
         public enum PositionJoint
         {
@@ -30,7 +31,7 @@ namespace Kosmos.PseudoHaptic.XRHands
         }
 
         [SerializeField] Handedness _handedness = Handedness.Right;
-        [Tooltip("The XR origin's tracking space (e.g. XR Origin/Camera Offset); empty: joint poses are world positions.")]
+        [Tooltip("The XR origin's tracking space (XR Origin ▸ Camera Offset); found from the scene's XR Origin when empty; none: joint poses are world positions.")]
         [SerializeField] Transform _trackingSpace;
         [SerializeField] PositionJoint _position = PositionJoint.Wrist;
 
@@ -39,7 +40,18 @@ namespace Kosmos.PseudoHaptic.XRHands
         double _nextSearch;
 
         public Handedness HandSide { get => _handedness; set => _handedness = value; }
+        public PositionJoint PositionFrom { get => _position; set => _position = value; }
         public Transform TrackingSpace { get => _trackingSpace; set => _trackingSpace = value; }
+
+        /// <summary>The tracking space the joints are in: the one set, else the scene's XR Origin's Camera Offset (looked for once, at Awake).</summary>
+        public Transform Rig => _trackingSpace;
+
+        void Awake()
+        {
+            if (_trackingSpace != null) return;
+            XROrigin origin = FindFirstObjectByType<XROrigin>();
+            if (origin != null && origin.CameraFloorOffsetObject != null) _trackingSpace = origin.CameraFloorOffsetObject.transform;
+        }
 
         /// <summary>The running hand subsystem, looked for at most twice a second until one runs.</summary>
         public XRHandSubsystem Subsystem
@@ -68,7 +80,19 @@ namespace Kosmos.PseudoHaptic.XRHands
 
         public bool IsTracked => Hand.isTracked && Joint(JointId, out _);
 
-        public bool IsHighConfidence => IsTracked && (Hand.GetJoint(JointId).trackingState & XRHandJointTrackingState.HighFidelityPose) != 0;
+        /// <summary>Every joint the position is made of (the wrist, the palm, or both tips for the pinch point) has a high-fidelity pose.</summary>
+        public bool IsHighConfidence
+        {
+            get
+            {
+                if (!IsTracked) return false;
+                XRHand hand = Hand;
+                if (_position != PositionJoint.PinchPoint) return HighFidelity(hand, JointId);
+                return HighFidelity(hand, XRHandJointID.ThumbTip) && HighFidelity(hand, XRHandJointID.IndexTip);
+            }
+        }
+
+        static bool HighFidelity(XRHand hand, XRHandJointID id) => (hand.GetJoint(id).trackingState & XRHandJointTrackingState.HighFidelityPose) != 0;
 
         public Vector3 Position => Joint(JointId, out Vector3 p) ? p : new Vector3(float.NaN, float.NaN, float.NaN);
 

@@ -6,8 +6,8 @@ namespace Kosmos.PseudoHaptic.SampleScenes
     /// <summary>
     /// Builds the weight discrimination task (two-alternative forced choice) when the scene starts: two balls of
     /// the same look on a table, a "heavier" button in front of each, and a <see cref="DiscriminationTask"/>
-    /// for the participant given here. Put it on an empty GameObject in a scene that has a hand rig with a
-    /// <see cref="FingertipPoker"/> on the index fingertip.
+    /// for the participant given here, and a <see cref="FingertipPoker"/> per hand of the scene's rig.
+    /// Put it on an empty GameObject in a scene that has a hand rig.
     /// </summary>
     public sealed class DiscriminationSetup : MonoBehaviour
     {
@@ -18,9 +18,9 @@ namespace Kosmos.PseudoHaptic.SampleScenes
 
         void Awake()
         {
-            SampleContent.HandsInScene();
+            var hands = new System.Collections.Generic.List<IHandPoseSource>(SampleContent.HandsInScene());
             PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
-            DiscriminationStation.Build(transform, profile, _participant);
+            DiscriminationStation.Build(transform, profile, _participant, hands); // a fingertip poker per hand answers the buttons
         }
     }
 }

@@ -42,9 +42,13 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// Begins or resumes the session; false, with <see cref="Error"/>, when the objects are not both set or the
         /// settings, participant, condition or file cannot be used (the session is then null).
         /// </summary>
-        public bool Begin(bool objectsSet, DiscriminationSettings settings, string participant, string condition, string trialsPath)
+        public bool Begin(bool objectsSet, DiscriminationSettings settings, string participant, string condition, string trialsPath) =>
+            Begin(objectsSet ? null : "the left and right objects are not set", settings, participant, condition, trialsPath);
+
+        /// <summary>As <see cref="Begin(bool, DiscriminationSettings, string, string, string)"/>, with what is wrong with the objects (null: nothing).</summary>
+        public bool Begin(string objectsError, DiscriminationSettings settings, string participant, string condition, string trialsPath)
         {
-            if (!objectsSet) return Fail("the left and right objects are not set");
+            if (objectsError != null) return Fail(objectsError);
             try
             {
                 Session = settings.CreateSession(participant, condition, trialsPath);

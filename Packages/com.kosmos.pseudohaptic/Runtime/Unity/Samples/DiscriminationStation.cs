@@ -1,18 +1,22 @@
+using System.Collections.Generic;
 using UnityEngine;
 
 namespace Kosmos.PseudoHaptic.Samples
 {
     /// <summary>
     /// The "Discrimination" sample's content: a table with two balls of the same look (explicit masses, set by
-    /// the task for every trial), an answer button in front of each, a text display, and the
-    /// <see cref="DiscriminationTask"/> wired to them.
+    /// the task for every trial), an answer button in front of each, a text display, the
+    /// <see cref="DiscriminationTask"/> wired to them, and a <see cref="FingertipPoker"/> per hand, without which no
+    /// button can be poked (a simulated hand pokes with its own position, a hand with a skeleton with its index tip).
     /// </summary>
     public static class DiscriminationStation
     {
         const float BallRadius = 0.035f;
 
-        public static DiscriminationTask Build(Transform root, PseudoHapticProfile profile, string participant)
+        public static DiscriminationTask Build(Transform root, PseudoHapticProfile profile, string participant, IReadOnlyList<IHandPoseSource> hands = null)
         {
+            if (hands != null)
+                foreach (IHandPoseSource hand in hands) Poker(root, hand);
             Transform surface = SampleContent.Table(root, "Table", new Vector3(0, SampleContent.TableHeight, 0.45f), new Vector2(0.9f, 0.5f));
             // Same look, no names: the labels say only the side.
             var left = SampleContent.Ball(surface, "Left", new Vector3(-0.2f, 0, 0.05f), BallRadius, 0.5f, profile);
@@ -24,10 +28,25 @@ namespace Kosmos.PseudoHaptic.Samples
 
             var go = new GameObject("Discrimination Task");
             go.transform.SetParent(root, false);
+            go.SetActive(false); // its Awake wires the buttons: it must see them, so it wakes after they are set
             var task = go.AddComponent<DiscriminationTask>();
             task.Inject(left, right, leftButton, rightButton, display);
             task.Participant = participant;
+            go.SetActive(true);
             return task;
+        }
+
+        /// <summary>A fingertip poker for <paramref name="hand"/>: following a simulated hand itself, else looking for its index tip under it.</summary>
+        public static FingertipPoker Poker(Transform root, IHandPoseSource hand)
+        {
+            if (!(hand is Component c)) return null;
+            var go = new GameObject("Fingertip Poker (" + c.name + ")");
+            go.transform.SetParent(root, false);
+            var poker = go.AddComponent<FingertipPoker>();
+            poker.InjectHand(hand);
+            if (hand is TransformHandPoseSource simulated) poker.Follow = simulated.Tracked;
+            else poker.FindUnder = c.transform;
+            return poker;
         }
 
         static DiscriminationButton Button(Transform surface, string name, Vector3 localPosition)

@@ -23,6 +23,22 @@ namespace Kosmos.PseudoHaptic.Samples
 
         public string Effect => _effect;
 
+        /// <summary>How near a tracked hand must come to press the switch, m (finite, &gt; 0).</summary>
+        public float Radius
+        {
+            get => _radius;
+            set
+            {
+                FieldRules.Require(FieldRules.Positive(nameof(Radius), value), nameof(Radius), value);
+                _radius = value;
+            }
+        }
+
+        /// <summary>Why this switch cannot work (an effect the profile does not list, a bad radius), or null.</summary>
+        public string ConfigurationError => !PseudoHapticProfile.IsKnownEffect(_effect)
+            ? "effect '" + _effect + "' is unknown; known: " + string.Join(", ", PseudoHapticProfile.EffectNames)
+            : FieldRules.Positive("Radius", _radius);
+
         public static EffectSwitch Create(Transform parent, string effect, Vector3 localPosition, PseudoHapticProfile profile, IReadOnlyList<IHandPoseSource> hands)
         {
             var button = GameObject.CreatePrimitive(PrimitiveType.Cube);
@@ -35,6 +51,8 @@ namespace Kosmos.PseudoHaptic.Samples
             var label = SampleContent.Label(parent, effect, localPosition + new Vector3(0, 0.06f, 0));
             label.characterSize = 0.006f;
 
+            // Inactive while its fields are set, so its Awake sees them (AddComponent on an active object runs Awake at once).
+            button.SetActive(false);
             var s = button.AddComponent<EffectSwitch>();
             s._profile = profile;
             s._effect = effect;
@@ -42,12 +60,30 @@ namespace Kosmos.PseudoHaptic.Samples
             int n = hands != null ? hands.Count : 0;
             s._hands = new MonoBehaviour[n];
             for (int i = 0; i < n; i++) s._hands[i] = hands[i] as MonoBehaviour;
-            s.ResolveHands(); // Awake already ran inside AddComponent, before the hands were set
-            s.ShowState();
+            button.SetActive(true);
+            s.ShowState(); // also when the scene is built in the editor, where Start does not run
             return s;
         }
 
-        void Awake() => ResolveHands();
+        void Awake()
+        {
+            ResolveHands();
+            Validate();
+        }
+
+        void OnValidate()
+        {
+            if (ConfigurationError != null) Debug.LogError("Effect Switch on '" + name + "': " + ConfigurationError, this);
+        }
+
+        /// <summary>A switch that cannot work says why, once, and stays off (it would otherwise throw every frame).</summary>
+        void Validate()
+        {
+            string error = ConfigurationError;
+            if (error == null) return;
+            Debug.LogError("Effect Switch on '" + name + "': " + error, this);
+            enabled = false;
+        }
 
         void ResolveHands()
         {
@@ -75,14 +111,14 @@ namespace Kosmos.PseudoHaptic.Samples
         /// <summary>Flips the effect and shows its new state.</summary>
         public void Toggle()
         {
-            if (_profile == null) return;
+            if (_profile == null || ConfigurationError != null) return;
             _profile.SetEnabled(_effect, !_profile.IsEnabled(_effect));
             ShowState();
         }
 
         void ShowState()
         {
-            if (_label == null || _profile == null) return;
+            if (_label == null || _profile == null || !PseudoHapticProfile.IsKnownEffect(_effect)) return;
             _label.text = _effect + (_profile.IsEnabled(_effect) ? "\non" : "\noff");
         }
     }

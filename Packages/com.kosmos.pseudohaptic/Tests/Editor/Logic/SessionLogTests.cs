@@ -5,6 +5,8 @@ using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 #if UNITY_5_3_OR_NEWER
 using UnityEngine.TestTools.Constraints; // AllocatingGCMemory() is an extension method there
+// That namespace has its own Is (deriving from NUnit's): without this alias every plain Is is ambiguous (CS0104).
+using Is = NUnit.Framework.Is;
 #endif
 
 namespace Kosmos.PseudoHaptic.Tests

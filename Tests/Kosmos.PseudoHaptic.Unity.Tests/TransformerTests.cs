@@ -1,0 +1,118 @@
+using Kosmos.PseudoHaptic.Interaction;
+using NUnit.Framework;
+using UnityDouble;
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>The Interaction SDK transformer on a Grabbable that behaves as the SDK's (issue 24's transformer defects).</summary>
+    public sealed class TransformerTests : PlayModeFixture
+    {
+        (FakeGrabbable grabbable, PseudoHapticTransformer transformer, PseudoHapticWeight weight) Object(float massKg, PseudoHapticProfile profile = null)
+        {
+            PseudoHapticWeight weight = Box("Box", massKg, default, profile);
+            var grabbable = weight.gameObject.AddComponent<FakeGrabbable>();
+            var transformer = weight.gameObject.AddComponent<PseudoHapticTransformer>();
+            grabbable.Use(transformer, transformer);
+            return (grabbable, transformer, weight);
+        }
+
+        [Test]
+        public void AHandGrabWithoutItsHandHoldsTheObjectStillInsteadOfThrowing()
+        {
+            var (grabbable, _, weight) = Object(1f);
+            var hand = new FakeHand { Wrist = weight.transform.position + new Vector3(0, 0.05f, 0) };
+            var interactor = new FakeHandGrabInteractor(grabbable, 7, hand);
+            interactor.Grab();
+            Assert.That(weight.IsHeld, Is.True);
+            interactor.Hand = null; // its hand destroyed, or never wired
+            Vector3 before = weight.transform.position;
+            for (int i = 0; i < 30; i++)
+            {
+                Frames.Run(1);
+                interactor.Move(); // the SDK's Move makes the Grabbable update its transformer
+            }
+            Assert.That(weight.IsHeld, Is.True);
+            Assert.That(weight.transform.position, Is.EqualTo(before), "a lost hand holds the object still");
+        }
+
+        [Test]
+        public void ABreakAwayCancelsBothGrabsOnceAndBeginsNothingAgain()
+        {
+            PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.XyzName);
+            profile.SetEnabled<BreakAway>(true);
+            profile.SetEnabled<OffsetCorrection>(false); // which would keep the lag under the break-away distance
+            var (grabbable, _, weight) = Object(5f, profile);
+            int began = 0, ended = 0;
+            void Began(PseudoHapticWeight w) => began++;
+            void Ended(PseudoHapticWeight w) => ended++;
+            PseudoHapticWeight.HoldBegan += Began;
+            PseudoHapticWeight.HoldEnded += Ended;
+            Vector3 centre = weight.transform.position + new Vector3(0, 0.05f, 0);
+            var left = new FakeHand { Wrist = centre + new Vector3(-0.04f, 0, 0) };
+            var right = new FakeHand { Wrist = centre + new Vector3(0.04f, 0, 0) };
+            var l = new FakeHandGrabInteractor(grabbable, 1, left);
+            var r = new FakeHandGrabInteractor(grabbable, 2, right);
+            l.Grab();
+            r.Grab();
+            Assert.That(weight.Hold.HandCount, Is.EqualTo(2));
+            for (int i = 1; i <= 60 && grabbable.Selecting > 0; i++)
+            {
+                Frames.Run(1);
+                Vector3 up = new Vector3(0, 0.8f * Mathf.Clamp01(i / 36f), 0);
+                left.Wrist = centre + new Vector3(-0.04f, 0, 0) + up;
+                right.Wrist = centre + new Vector3(0.04f, 0, 0) + up;
+                l.Move();
+                r.Move();
+            }
+            PseudoHapticWeight.HoldBegan -= Began;
+            PseudoHapticWeight.HoldEnded -= Ended;
+            Assert.That(grabbable.Selecting, Is.EqualTo(0), "every grab point cancelled");
+            Assert.That(weight.IsHeld, Is.False);
+            Assert.That(began, Is.EqualTo(1), "the hold began once");
+            Assert.That(ended, Is.EqualTo(1), "and ended once");
+        }
+
+        /// <summary>Issue 26 with the Interaction SDK: the rig (its tracking space) teleports and turns mid-lift; in its frame the path is the standing-still one.</summary>
+        [Test]
+        public void ATeleportMidLiftCarriesTheObjectRigidlyThroughTheTransformersRig()
+        {
+            System.Collections.Generic.List<Vector3> Lift(bool teleport)
+            {
+                var rig = new GameObject("TrackingSpace").transform;
+                var (grabbable, transformer, weight) = Object(2f);
+                transformer.Rig = rig;
+                var hand = new FakeHand();
+                Vector3 start = weight.transform.position + new Vector3(0, 0.05f, 0); // the rig is at the origin at the grab
+                hand.Wrist = start;
+                var interactor = new FakeHandGrabInteractor(grabbable, 4, hand);
+                interactor.Grab();
+                var path = new System.Collections.Generic.List<Vector3>();
+                for (int i = 1; i <= 90; i++)
+                {
+                    Frames.Run(1);
+                    if (teleport && i == 30)
+                    {
+                        rig.position = new Vector3(4, 0.5f, -2);
+                        rig.rotation = Quaternion.Euler(0, 135, 0);
+                    }
+                    // The tracked hand: a lift in the rig's frame, reported in the world through the rig (as the SDK's hands are).
+                    float u = Mathf.Clamp01(i / 60f);
+                    hand.Wrist = rig.TransformPoint(start + new Vector3(0, 0.25f * u * u * (3 - 2 * u), 0));
+                    interactor.Move();
+                    path.Add(rig.InverseTransformPoint(weight.transform.position));
+                }
+                Assert.That(weight.IsHeld, Is.True);
+                UnityEngine.Object.DestroyImmediate(weight.gameObject);
+                UnityEngine.Object.DestroyImmediate(rig.gameObject);
+                UnityDouble.Frames.ResetClock();
+                return path;
+            }
+            var still = Lift(false);
+            var moved = Lift(true);
+            Assert.That(still[still.Count - 1].y - still[0].y, Is.GreaterThan(0.05f), "the box rose");
+            for (int i = 0; i < still.Count; i++)
+                Assert.That(Vector3.Distance(still[i], moved[i]), Is.LessThanOrEqualTo(0.001f), "frame " + i);
+        }
+    }
+}

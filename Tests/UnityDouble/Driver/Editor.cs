@@ -1,0 +1,58 @@
+// The tests' handle on the double (never part of the per-asmdef compile check, so package code cannot use it).
+using System;
+using NUnit.Framework;
+using NUnit.Framework.Interfaces;
+using UnityEngine;
+using UnityEngine.TestTools.Logging;
+
+namespace UnityDouble
+{
+    /// <summary>The editor the tests run "in": batch mode, the active build target, pending delayed calls, what was built.</summary>
+    public static class Editor
+    {
+        public static bool IsBatchMode { get => Application.IsBatchModeState; set => Application.IsBatchModeState = value; }
+
+        public static UnityEditor.BuildTarget ActiveBuildTarget
+        {
+            get => UnityEditor.EditorUserBuildSettings.ActiveBuildTarget;
+            set => UnityEditor.EditorUserBuildSettings.ActiveBuildTarget = value;
+        }
+
+        /// <summary>Runs the static constructors of the [InitializeOnLoad] classes of <paramref name="assembly"/>, as the editor does when scripts load.</summary>
+        public static void LoadScripts(System.Reflection.Assembly assembly)
+        {
+            foreach (Type t in assembly.GetTypes())
+                if (t.IsDefined(typeof(UnityEditor.InitializeOnLoadAttribute), false))
+                    System.Runtime.CompilerServices.RuntimeHelpers.RunClassConstructor(t.TypeHandle);
+        }
+
+        /// <summary>Runs and clears EditorApplication.delayCall, as the editor does after its current work.</summary>
+        public static void RunDelayCalls()
+        {
+            UnityEditor.EditorApplication.CallbackFunction calls = UnityEditor.EditorApplication.delayCall;
+            UnityEditor.EditorApplication.delayCall = null;
+            calls?.Invoke();
+        }
+
+        public static int? ExitCode => UnityEditor.EditorApplication.ExitCode;
+        public static System.Collections.Generic.IReadOnlyList<UnityEditor.BuildPlayerOptions> Builds => UnityEditor.BuildPipeline.Builds;
+        public static System.Collections.Generic.IReadOnlyCollection<string> SavedScenes => UnityEditor.SceneManagement.EditorSceneManager.Saved.Keys;
+        public static System.Collections.Generic.IReadOnlyList<string> InspectorShown => UnityEditor.EditorGUILayout.Shown;
+
+        /// <summary>Registers a prefab asset at <paramref name="path"/>: PrefabUtility.InstantiatePrefab of it builds an instance with <paramref name="make"/>.</summary>
+        public static void Prefab(string path, Func<GameObject> make)
+        {
+            var placeholder = new GameObject(System.IO.Path.GetFileNameWithoutExtension(path)) { IsAsset = true };
+            placeholder.SetActive(false);
+            UnityEditor.AssetDatabase.Assets[path] = placeholder;
+            UnityEditor.PrefabUtility.Prefabs[placeholder] = make;
+        }
+    }
+
+    /// <summary>IMGUI: which button the "user" clicks next.</summary>
+    public static class GUILayoutDriver
+    {
+        /// <summary>The next GUILayout.Button drawn with this text returns true, once.</summary>
+        public static void Click(string buttonText) => UnityEngine.GUILayout.Clicked = buttonText;
+    }
+}

@@ -1,0 +1,65 @@
+// The tests' handles on the hand-tracking SDKs' doubles: what the runtime would report this frame.
+using UnityEngine;
+using UnityEngine.XR.Hands;
+
+namespace UnityDouble
+{
+    /// <summary>Meta XR Core SDK: an OVRHand's reported state, and an OVRCameraRig's tracked poses.</summary>
+    public static class OvrHands
+    {
+        /// <summary>The hand's state as OVRHand reads it from the runtime: tracking, confidence, the index pinch.</summary>
+        public static void Report(OVRHand hand, bool tracked, bool highConfidence = true, bool pinching = false, bool indexHighConfidence = true)
+        {
+            hand.IsDataValid = tracked;
+            hand.IsTracked = tracked;
+            hand.HandConfidence = tracked && highConfidence ? OVRHand.TrackingConfidence.High : OVRHand.TrackingConfidence.Low;
+            hand.Pinching[(int)OVRHand.HandFinger.Index] = pinching;
+            hand.FingerConfidence[(int)OVRHand.HandFinger.Index] = indexHighConfidence ? OVRHand.TrackingConfidence.High : OVRHand.TrackingConfidence.Low;
+        }
+
+        /// <summary>The pointer pose the runtime reports, in tracking space (written into PointerPose's local pose, as the SDK does).</summary>
+        public static void ReportPointer(OVRHand hand, Vector3 trackingSpacePosition, bool valid = true)
+        {
+            hand.IsPointerPoseValid = valid;
+            hand.PointerPose.localPosition = trackingSpacePosition;
+        }
+
+        /// <summary>Where the pointer pose's root is (OVRHand's serialized _pointerPoseRoot).</summary>
+        public static void SetPointerPoseRoot(OVRHand hand, Transform root) => hand._pointerPoseRoot = root;
+
+        /// <summary>The tracked hand and head poses, in tracking space, that the rig writes into its anchors on its next update.</summary>
+        public static void Track(OVRCameraRig rig, Vector3 left, Vector3 right, Vector3 head = default)
+        {
+            rig.LeftHandLocal = new Pose(left, Quaternion.identity);
+            rig.RightHandLocal = new Pose(right, Quaternion.identity);
+            rig.HeadLocal = new Pose(head, Quaternion.identity);
+        }
+    }
+
+    /// <summary>Unity XR Hands: a running hand subsystem and its joints.</summary>
+    public static class XRHandsRuntime
+    {
+        /// <summary>A running XRHandSubsystem that SubsystemManager lists.</summary>
+        public static XRHandSubsystem Start()
+        {
+            var subsystem = new XRHandSubsystemDescriptor().Create();
+            subsystem.Start();
+            return subsystem;
+        }
+
+        /// <summary>Sets a joint of a hand: its pose in the XR origin's space, and its tracking state.</summary>
+        public static void Joint(XRHandSubsystem subsystem, Handedness side, XRHandJointID id, Vector3 position, XRHandJointTrackingState state)
+        {
+            ref XRHand hand = ref side == Handedness.Left ? ref subsystem.LeftHand : ref subsystem.RightHand;
+            hand.IsTracked = true;
+            hand.Joints[(int)id - 1].Pose = new Pose(position, Quaternion.identity);
+            hand.Joints[(int)id - 1].State = state;
+        }
+
+        public static void Untrack(XRHandSubsystem subsystem, Handedness side)
+        {
+            if (side == Handedness.Left) subsystem.LeftHand.IsTracked = false;
+            else subsystem.RightHand.IsTracked = false;
+        }
+    }
+}
