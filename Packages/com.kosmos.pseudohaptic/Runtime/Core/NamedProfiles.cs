@@ -22,8 +22,12 @@ namespace Kosmos.PseudoHaptic
             new FasterMovesFurther(), new SpeedCap(), new LoweringGuard(), new OffsetCorrection(), new FloorClamp(),
         });
 
-        /// <summary>As the paper's Experiments 1 and 2 ran: everything in <see cref="Paper"/> but the offset correction.</summary>
-        public static readonly WeightProfile PaperExperiment = Paper.Without<OffsetCorrection>(PaperExperimentName);
+        /// <summary>
+        /// As the paper's Experiments 1 and 2 ran: everything in <see cref="Paper"/> but the offset correction ("no correction
+        /// was made according to the … distance"), and both hands sharing the weight as the participants lifted Experiment 2's
+        /// bottles (<see cref="TwoHands"/>, which acts in <see cref="WeightSolver3D"/>; the y solver holds one hand).
+        /// </summary>
+        public static readonly WeightProfile PaperExperiment = Paper.Without<OffsetCorrection>(PaperExperimentName).With(new TwoHands(), PaperExperimentName);
 
         /// <summary>
         /// Eq. 4 alone, within what every reading must keep: the floor (P5) and the deadband that keeps tracking

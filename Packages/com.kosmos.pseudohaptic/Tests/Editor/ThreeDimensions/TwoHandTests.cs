@@ -16,6 +16,27 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         };
 
         [Test]
+        public void PaperExperimentHoldsBothHandsAsExperimentTwoDid()
+        {
+            // Issue 23: a 2 kg bottle lifted with both hands under paper-experiment moves as 1 kg in one hand at the midpoint.
+            var both = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.PaperExperiment);
+            var one = new WeightSolver3D(WeightModel.FromMass(1), NamedProfiles.PaperExperiment);
+            double t = 0;
+            both.BeginHold(Run3D.At(-0.1, 1, 0, t), Run3D.At(0.1, 1, 0, t), 0, 1, 0);
+            one.BeginHold(Run3D.At(0, 1, 0, t), 0, 1, 0);
+            for (int i = 1; i <= 60; i++)
+            {
+                t = i / 30.0;
+                double y = 1 + 0.3 * Headset3D.MinJerk(t, 0.3, 1, 0, 1);
+                both.Step(Run3D.At(-0.1, y, 0, t), Run3D.At(0.1, y, 0, t), 1 / 30.0);
+                one.Step(Run3D.At(0, y, 0, t), 1 / 30.0);
+                Assert.That(both.ObjectY, Is.EqualTo(one.ObjectY), "frame " + i);
+            }
+            Assert.That(both.HoldingHands, Is.EqualTo(2));
+            Assert.That(both.PerHandMassKg, Is.EqualTo(1.0));
+        }
+
+        [Test]
         public void TwoHandLiftOfMMovesExactlyAsOneHandLiftOfHalfMAtTheMidpoint([Values(0.045, 0.3, 2, 8)] double massKg, [Range(1, 6)] int seed)
         {
             var headset = new Headset3D { JitterSd = 0.003, Seed = seed, Wobble = 0.2 };
