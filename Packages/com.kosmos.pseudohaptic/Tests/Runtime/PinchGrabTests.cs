@@ -147,10 +147,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void ABreakAwayReleasesBothHandsAndTheBoxFalls()
         {
             PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.XyzName);
-            profile.SetEnabled<BreakAway>(true); // 0.25 m for 0.1 s
-            // The offset correction draws the lag back from 0.2 m on, so with it a 0.25 m break-away never fires
-            // (first run of this test, under the double: the lag peaked at 0.18 m beyond the grab offset).
-            profile.SetEnabled<OffsetCorrection>(false);
+            profile.SetEnabled<BreakAway>(true); // 0.25 m: under xyz's offset correction, of strain (a yank, not a distance)
             PseudoHapticWeight box = Box("5 kg", 5f, default, profile);
             Vector3 l0 = box.transform.position + new Vector3(-0.04f, 0.05f, 0), r0 = box.transform.position + new Vector3(0.04f, 0.05f, 0);
             var left = new ScriptedHand(l0) { IsPinching = true };
@@ -159,12 +156,13 @@ namespace Kosmos.PseudoHaptic.Tests
             l.Tick(FrameTime);
             r.Tick(FrameTime);
             Assert.That(box.Hold.HandCount, Is.EqualTo(2));
+            // A yank: 1 m in 0.3 s, both hands.
             int n = Mathf.CeilToInt(0.6f / FrameTime);
             for (int i = 1; i <= n && box.IsHeld; i++)
             {
-                float u = (float)ScriptedHand.MinimumJerk(i / (0.4 / FrameTime));
-                left.Track(l0 + new Vector3(0, 0.8f * u, 0), FrameTime);
-                right.Track(r0 + new Vector3(0, 0.8f * u, 0), FrameTime);
+                float u = (float)ScriptedHand.MinimumJerk(i / (0.3 / FrameTime));
+                left.Track(l0 + new Vector3(0, 1.0f * u, 0), FrameTime);
+                right.Track(r0 + new Vector3(0, 1.0f * u, 0), FrameTime);
                 l.Tick(FrameTime);
                 r.Tick(FrameTime);
             }
