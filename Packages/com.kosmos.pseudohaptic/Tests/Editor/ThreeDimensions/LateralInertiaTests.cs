@@ -183,6 +183,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                         if (frames.T[i] >= 2.0 + 0.045 + 1 / 30.0 + 1) Assert.That(l, Is.LessThan(0.01), $"{m} kg at {speed} m/s: under 1 cm within 1 s");
                     }
                     Assert.That(lag, Is.GreaterThan(previous + (speed == 0.5 ? 0.003 : 0)), $"{m} kg at {speed} m/s trails more than the lighter one");
+                    TestContext.Progress.WriteLine($"lateral lag at {speed} m/s, {m} kg: {lag * 1000:F1} mm");
                     previous = lag;
                 }
             }
