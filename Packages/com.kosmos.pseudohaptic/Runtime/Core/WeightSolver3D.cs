@@ -137,7 +137,10 @@ namespace Kosmos.PseudoHaptic
                     "pulls beyond what the weight allows (the speed cap's lag, or the lateral inertia's beyond its bound); with neither " +
                     "in the profile it could never fire.", nameof(profile));
             var twoHands = profile.Find<TwoHands>();
-            var perHand = twoHands != null ? WeightModel.FromMass(model.MassKg * twoHands.Share, model.Curve) : model;
+            // Each hand carries its share, but sharing never makes an object lighter than the standard weight: the golf ball
+            // in two hands is still rigid, and an object just heavier than it does not start to lead the hands.
+            double share = twoHands != null ? Math.Max(model.MassKg * twoHands.Share, Math.Min(model.MassKg, PhysicalConstants.StandardMassKg)) : model.MassKg;
+            var perHand = twoHands != null ? WeightModel.FromMass(share, model.Curve) : model;
             _y.Configure(model, profile, standardSpeed);
             var inertia = profile.Find<LateralInertia>();
             double tauOne = inertia != null ? inertia.TimeConstantFor(_y.Gain) : 0;

@@ -2,8 +2,9 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// A hold in <see cref="WeightSolver3D"/> may have a second hand. The object follows the followed hands'
-    /// midpoint, and while both hands hold, each carries <see cref="Share"/> of the mass: every effect sees the
-    /// per-hand mass, so a two-hand lift of m moves as a one-hand lift of m·share at the midpoint. When one
+    /// midpoint, and while both hands hold, each carries <see cref="Share"/> of the mass (but never less than the
+    /// standard weight, or the whole mass when it is lighter): every effect sees the per-hand mass, so a two-hand lift
+    /// of m moves as a one-hand lift of max(m·share, min(m, 45 g)) at the midpoint. When one
     /// hand is lost or lets go the hold goes on with the other, the followed point re-anchored so nothing
     /// steps; a returning hand rejoins after the profile's tracking-loss settle time.
     /// Without this effect the second hand is ignored.

@@ -16,6 +16,25 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         };
 
         [Test]
+        public void TheStandardWeightInTwoHandsIsRigid([Values(0.02, 0.045, 0.06, 0.09)] double massKg)
+        {
+            // Shared between two hands, no object gets lighter than the standard weight: the golf ball stays rigid in both
+            // hands, and an object up to twice the standard weight does not lead them (a share of 22.5 g left a golf ball
+            // 44 mm above the hands after a 10 cm lift). Lighter than the standard it leads, as in one hand.
+            var s = new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz);
+            s.BeginHold(Run3D.At(-0.1, 1.0, 0.3, 0), Run3D.At(0.1, 1.0, 0.3, 0), 0, 1.0, 0.3);
+            for (int i = 1; i <= 180; i++)
+            {
+                double t = i / 90.0, y = Headset3D.MinJerk(t, 0.3, 1.0, 1.0, 1.1);
+                s.Step(Run3D.At(-0.1, y, 0.3, t), Run3D.At(0.1, y, 0.3, t), 1 / 90.0);
+            }
+            Assert.That(s.HoldingHands, Is.EqualTo(2));
+            if (massKg < PhysicalConstants.StandardMassKg) Assert.That(s.ObjectY, Is.GreaterThan(1.1), "lighter than the standard: it leads");
+            else if (massKg <= 2 * PhysicalConstants.StandardMassKg) Assert.That(s.ObjectY, Is.EqualTo(1.1).Within(1e-9), "the standard weight per hand: rigid");
+            Assert.That(s.PerHandMassKg, Is.EqualTo(Math.Max(massKg / 2, Math.Min(massKg, PhysicalConstants.StandardMassKg))));
+        }
+
+        [Test]
         public void PaperExperimentHoldsBothHandsAsExperimentTwoDid()
         {
             // Issue 23: a 2 kg bottle lifted with both hands under paper-experiment moves as 1 kg in one hand at the midpoint.
@@ -37,7 +56,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
-        public void TwoHandLiftOfMMovesExactlyAsOneHandLiftOfHalfMAtTheMidpoint([Values(0.045, 0.3, 2, 8)] double massKg, [Range(1, 6)] int seed)
+        public void TwoHandLiftOfMMovesExactlyAsOneHandLiftOfHalfMAtTheMidpoint([Values(0.045, 0.06, 0.3, 2, 8)] double massKg, [Range(1, 6)] int seed)
         {
             var headset = new Headset3D { JitterSd = 0.003, Seed = seed, Wobble = 0.2 };
             var two = headset.Render(Side(-1), Side(1), 3.5);
@@ -50,7 +69,9 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 mid.B[i] = HandPose.Lost;
             }
             var rTwo = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), two);
-            var rOne = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg / 2), NamedProfiles.Xyz), mid);
+            // Each hand's share, never below the standard weight (or the whole mass when lighter).
+            double perHand = Math.Max(massKg / 2, Math.Min(massKg, PhysicalConstants.StandardMassKg));
+            var rOne = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(perHand), NamedProfiles.Xyz), mid);
             Assert.That(rTwo.Y, Is.EqualTo(rOne.Y), "y");
             Assert.That(rTwo.X, Is.EqualTo(rOne.X), "x");
             Assert.That(rTwo.Z, Is.EqualTo(rOne.Z), "z");
