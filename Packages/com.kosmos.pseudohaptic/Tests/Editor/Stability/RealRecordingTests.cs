@@ -28,9 +28,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
     /// The hold is one-handed, with the recorded hand: a recording's second hand (<c>hand2_*</c>) is replayed as a
     /// tracked hand that does not grip (<see cref="WeightSolver3D.SetGrip"/>), since no recording says its two hands held
     /// one object; the <c>xyz</c> profile would otherwise carry the object at the midpoint of two hands that move
-    /// independently, each carrying half the mass (<see cref="TwoHands"/>: the standard weight then moves as a 22.5 g
-    /// object, at a gain of about 1.5, so it is not meant to stay at the hand; as the replay command replays such a file
-    /// under <c>xyz</c> it is 5 mm or less off the first hand on 13 % of the Quest 3 file's tracked frames).
+    /// independently (<see cref="TwoHands"/>), which no rule about "the hand" could judge.
     /// <para>
     /// The recordings: the project's shared motion capture (<c>../shared/data/mocap-hand-100hz.csv</c>, real human
     /// motion but optical capture), degraded as a Quest delivers hands (<see cref="Degraded"/>), which needs ../shared
