@@ -10,7 +10,9 @@ namespace Kosmos.PseudoHaptic
     /// hand is, not of the path it took: a motion that comes back, and anything tracking does, leaves no trace.
     /// Per frame: pose → input effects → estimator (→ hand filter, if the profile has one) → hand-motion effects →
     /// base effects → lift effects → offset = lift − gain × carried lift → object-motion effects → object height →
-    /// position effects. Configuration validates and throws; <see cref="Step"/> never throws, never allocates, and
+    /// position effects; a frame that repeats the last one's hand reuses the weight the last frame computed
+    /// (<see cref="LastWeight"/>), where every effect between the estimator and the offset is a function of the hand.
+    /// Configuration validates and throws; <see cref="Step"/> never throws, never allocates, and
     /// always returns a finite height.
     /// </summary>
     public sealed class WeightSolver
@@ -26,6 +28,7 @@ namespace Kosmos.PseudoHaptic
         HoldState _state;
         SolverConstants _constants;
         IHandFilter _filter;
+        LastWeight _last;
 
         public WeightModel Model { get; private set; }
         public WeightProfile Profile { get; private set; }
@@ -68,6 +71,7 @@ namespace Kosmos.PseudoHaptic
                 ConfigurationGuard.InRange(value, 0, MaxCoordinate, nameof(BottomBelowPivot));
                 _bottomBelowPivot = value;
                 _constants = _constants.WithBottomBelowPivot(value);
+                _last.Forget();
             }
         }
 
@@ -94,6 +98,7 @@ namespace Kosmos.PseudoHaptic
                 _filter?.Reset(_state.HandY);
             }
             Profile = profile;
+            _last.Forget();
             _constants = new SolverConstants(gain, standardSpeed,
                 cap != null ? cap.CapFor(model, standardSpeed) : double.PositiveInfinity,
                 deadband != null ? deadband.WidthFor(standardSpeed, gain) : 0, limits, _bottomBelowPivot,
@@ -154,6 +159,7 @@ namespace Kosmos.PseudoHaptic
             _state.LastHand = handY;
             _filter?.Reset(handY);
             ResetEffects(handY);
+            _last.Forget();
         }
 
         /// <summary>Ends the hold; further steps return the object's last height.</summary>
@@ -212,23 +218,9 @@ namespace Kosmos.PseudoHaptic
             if (f.NewPose && !f.Reanchored) Remember(ref f);
             f.SteadyHand = _state.SteadyY;
             f.WeightHand = f.HandAfter;
-
-            effects = Profile.HandEffects;
-            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
-
-            f.Lift = f.WeightHand - _state.Base;
-            effects = Profile.BaseEffects;
-            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
-
-            f.Gain = _constants.Gain;
-            f.CarriedLift = f.Lift;
-            effects = Profile.LiftEffects;
-            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
-
-            // The weight: the object rises Gain times the lift it carries; the rest of the lift is the offset.
-            f.Offset = f.Lift - f.Gain * f.CarriedLift;
-            effects = Profile.ObjectEffects;
-            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+            // A frame that repeats the last one's hand (a pose held over several frames) repeats its weight.
+            if (_last.Holds(in f, _state.Base)) _last.CopyTo(ref f);
+            else Weigh(ref f);
 
             double shown = f.Offset + GlideOffset(in f, dt);
             _state.LastOffset = f.Offset;
@@ -246,6 +238,31 @@ namespace Kosmos.PseudoHaptic
                 _state.ObjectY = f.NewObjectY - _state.GrabOffset;
             }
             return _state.ObjectY;
+        }
+
+        /// <summary>The weight for this frame's hand: hand-motion → base → lift → offset → object-motion effects.</summary>
+        void Weigh(ref MotionFrame f)
+        {
+            double hand = f.HandAfter;
+            var effects = Profile.HandEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            f.Lift = f.WeightHand - _state.Base;
+            effects = Profile.BaseEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            f.Gain = _constants.Gain;
+            f.CarriedLift = f.Lift;
+            effects = Profile.LiftEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            // The weight: the object rises Gain times the lift it carries; the rest of the lift is the offset.
+            f.Offset = f.Lift - f.Gain * f.CarriedLift;
+            effects = Profile.ObjectEffects;
+            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            // Kept only where every effect here is a function of the hand; otherwise every frame weighs.
+            if (Profile.WeightIsFunctionOfHand) _last.Keep(in f, hand, _state.Base);
         }
 
         /// <summary>The hand as the hold remembers it: the median of the last three poses since tracking came back
@@ -295,6 +312,8 @@ namespace Kosmos.PseudoHaptic
         double GlideOffset(in MotionFrame f, double dt)
         {
             double change = f.Offset - _state.LastOffset;
+            // Nothing to explain and nothing gliding (most frames): what the lines below would return, without them.
+            if (change == 0 && _state.Glide == 0) return 0;
             // The most the weight's offset moves per metre of lift: 1 − G (a lead of G − 1 for a light object), or up to 1
             // where the height deceleration shapes the lift it carries.
             double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
