@@ -230,7 +230,10 @@ namespace Kosmos.PseudoHaptic
             f.NewObjectY = f.WeightHand - shown; // the hand the weight reads: a light object does not shimmer with jitter the deadband swallowed
 
             effects = Profile.PositionEffects;
-            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+            // The first from a call site of its own: with two position effects (the speed cap, then the floor) each call
+            // site sees one type, which the JIT's profile-guided devirtualization can inline.
+            if (effects.Length > 0) effects[0].Apply(ref f, ref _state, in _constants);
+            for (int i = 1; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
             if (double.IsFinite(f.NewObjectY))
             {
@@ -311,15 +314,16 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         double GlideOffset(in MotionFrame f, double dt)
         {
-            double change = f.Offset - _state.LastOffset;
-            // Nothing to explain and nothing gliding (most frames): what the lines below would return, without them.
-            if (change == 0 && _state.Glide == 0) return 0;
+            double change = f.Offset - _state.LastOffset, glide = _state.Glide;
+            // Nothing gliding, and no change (most frames) or one the hand explains: 0, what the lines below would return.
+            if (glide == 0 && change == 0) return 0;
             // The most the weight's offset moves per metre of lift: 1 − G (a lead of G − 1 for a light object), or up to 1
             // where the height deceleration shapes the lift it carries.
             double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
             double explained = Math.Abs(f.WeightHand - _state.LastHand) * slope; // the hand's motion, not the base's
             double excess = change > explained ? change - explained : (change < -explained ? change + explained : 0);
-            double g = _state.Glide - excess;
+            if (glide == 0 && excess == 0) return 0;
+            double g = glide - excess;
             double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);
             g = g > step ? g - step : (g < -step ? g + step : 0);
             _state.Glide = double.IsFinite(g) ? g : 0;
