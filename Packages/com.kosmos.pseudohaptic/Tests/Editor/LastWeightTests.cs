@@ -10,6 +10,9 @@ namespace Kosmos.PseudoHaptic.Tests
     /// profile is and once with an extra effect that says it is not a function of the hand (so every frame weighs), and
     /// the two must agree bit for bit on every frame, on Quest-like input with glitches, losses, low confidence, hitches,
     /// a change of mass mid-hold, a hand filter, and poses on a coarse grid (new poses at the last one's height).
+    /// The grid is what catches a key that ignores new poses: with <c>!f.NewPose</c> taken out of
+    /// <c>LastWeight.Holds</c>, 51 of the 90 grid cases fail and none of the others (a pose on a continuous scale never
+    /// repeats the last one's bits).
     /// </summary>
     public class LastWeightTests
     {
