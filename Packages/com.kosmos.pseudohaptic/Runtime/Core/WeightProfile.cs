@@ -25,6 +25,11 @@ namespace Kosmos.PseudoHaptic
         internal readonly WeightEffect[] ObjectEffects;
         internal readonly WeightEffect[] PositionEffects;
 
+        /// <summary>Every effect of the hand-motion, base, lift and object-motion stages is a function of where the hand is
+        /// (<see cref="WeightEffect.IsFunctionOfHand"/>): a frame that repeats the last one's hand reuses the last frame's
+        /// weight instead of calling them.</summary>
+        public bool WeightIsFunctionOfHand { get; }
+
         public WeightProfile(string name, IEnumerable<WeightEffect> effects, SolverLimits limits = null, IHandFilter handFilter = null)
         {
             if (string.IsNullOrWhiteSpace(name)) throw new ArgumentException("name must not be empty.", nameof(name));
@@ -54,6 +59,10 @@ namespace Kosmos.PseudoHaptic
             LiftEffects = OfStage(EffectStage.Lift);
             ObjectEffects = OfStage(EffectStage.ObjectMotion);
             PositionEffects = OfStage(EffectStage.Position);
+            WeightIsFunctionOfHand = true;
+            foreach (var e in _all)
+                if (e.Stage >= EffectStage.HandMotion && e.Stage <= EffectStage.ObjectMotion && e.Stage != EffectStage.Gain && !e.IsFunctionOfHand)
+                    WeightIsFunctionOfHand = false;
         }
 
         WeightEffect[] OfStage(EffectStage stage) => Array.FindAll(_all, e => e.Stage == stage);

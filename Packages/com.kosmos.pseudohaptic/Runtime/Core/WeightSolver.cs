@@ -10,7 +10,9 @@ namespace Kosmos.PseudoHaptic
     /// hand is, not of the path it took: a motion that comes back, and anything tracking does, leaves no trace.
     /// Per frame: pose → input effects → estimator (→ hand filter, if the profile has one) → hand-motion effects →
     /// base effects → lift effects → offset = lift − gain × carried lift → object-motion effects → object height →
-    /// position effects. Configuration validates and throws; <see cref="Step"/> never throws, never allocates, and
+    /// position effects; a frame that repeats the last one's hand reuses the weight the last frame computed
+    /// (<see cref="LastWeight"/>), where every effect between the estimator and the offset is a function of the hand.
+    /// Configuration validates and throws; <see cref="Step"/> never throws, never allocates, and
     /// always returns a finite height.
     /// </summary>
     public sealed class WeightSolver
@@ -26,6 +28,7 @@ namespace Kosmos.PseudoHaptic
         HoldState _state;
         SolverConstants _constants;
         IHandFilter _filter;
+        LastWeight _last;
 
         public WeightModel Model { get; private set; }
         public WeightProfile Profile { get; private set; }
@@ -68,6 +71,7 @@ namespace Kosmos.PseudoHaptic
                 ConfigurationGuard.InRange(value, 0, MaxCoordinate, nameof(BottomBelowPivot));
                 _bottomBelowPivot = value;
                 _constants = _constants.WithBottomBelowPivot(value);
+                _last.Forget();
             }
         }
 
@@ -94,6 +98,7 @@ namespace Kosmos.PseudoHaptic
                 _filter?.Reset(_state.HandY);
             }
             Profile = profile;
+            _last.Forget();
             _constants = new SolverConstants(gain, standardSpeed,
                 cap != null ? cap.CapFor(model, standardSpeed) : double.PositiveInfinity,
                 deadband != null ? deadband.WidthFor(standardSpeed, gain) : 0, limits, _bottomBelowPivot,
@@ -154,6 +159,7 @@ namespace Kosmos.PseudoHaptic
             _state.LastHand = handY;
             _filter?.Reset(handY);
             ResetEffects(handY);
+            _last.Forget();
         }
 
         /// <summary>Ends the hold; further steps return the object's last height.</summary>
@@ -212,8 +218,36 @@ namespace Kosmos.PseudoHaptic
             if (f.NewPose && !f.Reanchored) Remember(ref f);
             f.SteadyHand = _state.SteadyY;
             f.WeightHand = f.HandAfter;
+            // A frame that repeats the last one's hand (a pose held over several frames) repeats its weight.
+            if (_last.Holds(in f, _state.Base)) _last.CopyTo(ref f);
+            else Weigh(ref f);
 
-            effects = Profile.HandEffects;
+            double shown = f.Offset + GlideOffset(in f, dt);
+            _state.LastOffset = f.Offset;
+            _state.LastHand = f.WeightHand;
+            if (shown > f.OffsetCeiling) shown = f.OffsetCeiling;
+            else if (shown < -f.OffsetCeiling) shown = -f.OffsetCeiling;
+            f.NewObjectY = f.WeightHand - shown; // the hand the weight reads: a light object does not shimmer with jitter the deadband swallowed
+
+            effects = Profile.PositionEffects;
+            // The first from a call site of its own: with two position effects (the speed cap, then the floor) each call
+            // site sees one type, which the JIT's profile-guided devirtualization can inline.
+            if (effects.Length > 0) effects[0].Apply(ref f, ref _state, in _constants);
+            for (int i = 1; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
+
+            if (double.IsFinite(f.NewObjectY))
+            {
+                _state.HeldY = f.NewObjectY;
+                _state.ObjectY = f.NewObjectY - _state.GrabOffset;
+            }
+            return _state.ObjectY;
+        }
+
+        /// <summary>The weight for this frame's hand: hand-motion → base → lift → offset → object-motion effects.</summary>
+        void Weigh(ref MotionFrame f)
+        {
+            double hand = f.HandAfter;
+            var effects = Profile.HandEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
             f.Lift = f.WeightHand - _state.Base;
@@ -230,22 +264,8 @@ namespace Kosmos.PseudoHaptic
             effects = Profile.ObjectEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            double shown = f.Offset + GlideOffset(in f, dt);
-            _state.LastOffset = f.Offset;
-            _state.LastHand = f.WeightHand;
-            if (shown > f.OffsetCeiling) shown = f.OffsetCeiling;
-            else if (shown < -f.OffsetCeiling) shown = -f.OffsetCeiling;
-            f.NewObjectY = f.WeightHand - shown; // the hand the weight reads: a light object does not shimmer with jitter the deadband swallowed
-
-            effects = Profile.PositionEffects;
-            for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
-
-            if (double.IsFinite(f.NewObjectY))
-            {
-                _state.HeldY = f.NewObjectY;
-                _state.ObjectY = f.NewObjectY - _state.GrabOffset;
-            }
-            return _state.ObjectY;
+            // Kept only where every effect here is a function of the hand; otherwise every frame weighs.
+            if (Profile.WeightIsFunctionOfHand) _last.Keep(in f, hand, _state.Base);
         }
 
         /// <summary>The hand as the hold remembers it: the median of the last three poses since tracking came back
@@ -294,13 +314,16 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         double GlideOffset(in MotionFrame f, double dt)
         {
-            double change = f.Offset - _state.LastOffset;
+            double change = f.Offset - _state.LastOffset, glide = _state.Glide;
+            // Nothing gliding, and no change (most frames) or one the hand explains: 0, what the lines below would return.
+            if (glide == 0 && change == 0) return 0;
             // The most the weight's offset moves per metre of lift: 1 − G (a lead of G − 1 for a light object), or up to 1
             // where the height deceleration shapes the lift it carries.
             double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
             double explained = Math.Abs(f.WeightHand - _state.LastHand) * slope; // the hand's motion, not the base's
             double excess = change > explained ? change - explained : (change < -explained ? change + explained : 0);
-            double g = _state.Glide - excess;
+            if (glide == 0 && excess == 0) return 0;
+            double g = glide - excess;
             double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);
             g = g > step ? g - step : (g < -step ? g + step : 0);
             _state.Glide = double.IsFinite(g) ? g : 0;

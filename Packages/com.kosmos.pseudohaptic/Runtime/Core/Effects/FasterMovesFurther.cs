@@ -22,6 +22,8 @@ namespace Kosmos.PseudoHaptic
     {
         public override string Name => "faster-moves-further";
         public override EffectStage Stage => EffectStage.Lift;
+        /// <summary>The pace changes only on a new steady pose, and the gain is a function of the pace.</summary>
+        protected internal override bool IsFunctionOfHand => true;
 
         /// <summary>
         /// Mean speed of a standard lift's 10–90 % span (how <see cref="StandardSpeedCalibration"/> measures v_std) over

@@ -19,6 +19,8 @@ namespace Kosmos.PseudoHaptic
     {
         public override string Name => "height-deceleration";
         public override EffectStage Stage => EffectStage.Lift;
+        /// <summary>F is a function of the lift.</summary>
+        protected internal override bool IsFunctionOfHand => true;
 
         /// <summary>Height scale, m: at a lift of this much a very heavy object (w → 1) moves at the midpoint between
         /// full speed and the floor fraction.</summary>

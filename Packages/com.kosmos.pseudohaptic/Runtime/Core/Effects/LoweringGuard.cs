@@ -13,6 +13,8 @@ namespace Kosmos.PseudoHaptic
     {
         public override string Name => "lowering-guard";
         public override EffectStage Stage => EffectStage.Base;
+        /// <summary>The base follows the steady hand, which only a new pose moves.</summary>
+        protected internal override bool IsFunctionOfHand => true;
 
         /// <summary>How far below the base the steady hand may go before the base follows, m (tracking jitter at rest is
         /// not lowering).</summary>

@@ -16,6 +16,8 @@ namespace Kosmos.PseudoHaptic
     {
         public override string Name => "motion-deadband";
         public override EffectStage Stage => EffectStage.HandMotion;
+        /// <summary>The same hand leaves the band's reference where the last frame put it.</summary>
+        protected internal override bool IsFunctionOfHand => true;
 
         /// <summary>Lag the band may cost at the user's standard speed, s (a fast user's jitter span grows with their speed).</summary>
         public double LagTime { get; }

@@ -19,6 +19,8 @@ namespace Kosmos.PseudoHaptic
     {
         public override string Name => "offset-correction";
         public override EffectStage Stage => EffectStage.ObjectMotion;
+        /// <summary>C is a function of the offset.</summary>
+        protected internal override bool IsFunctionOfHand => true;
 
         /// <summary>The threshold for a 1 kg object, m.</summary>
         public double Threshold { get; }

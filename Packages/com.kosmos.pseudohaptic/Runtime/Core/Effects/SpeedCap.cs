@@ -46,10 +46,20 @@ namespace Kosmos.PseudoHaptic
                 state.CapStarted = cap < double.PositiveInfinity;
                 return;
             }
+            double burst = cap * BurstTime;
+            if (target == state.CappedY && state.CapBudget == burst && !frame.Bridged)
+            {
+                // Caught up with the budget full (most frames): exactly what the lines below would leave, the move being
+                // the ±0 the follower wants (added as they add it: a −0 becomes +0).
+                state.CappedY += target - state.CappedY;
+                state.CapTarget = target;
+                state.Strain = 0;
+                return;
+            }
             // What tracking hid moves the follower as it moves the object: the strain stays as it was.
             if (frame.Bridged) state.CappedY += target - state.CapTarget;
             state.CapTarget = target;
-            double budget = Math.Min(state.CapBudget + cap * Math.Min(frame.Dt, constants.Limits.MaxFrameTime), cap * BurstTime);
+            double budget = Math.Min(state.CapBudget + cap * Math.Min(frame.Dt, constants.Limits.MaxFrameTime), burst);
             double want = target - state.CappedY;
             double move = want > budget ? budget : (want < -budget ? -budget : want);
             state.CappedY += move;

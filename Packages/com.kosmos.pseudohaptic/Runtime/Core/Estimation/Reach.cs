@@ -49,7 +49,8 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Accepts the pose when a hand moving at most <paramref name="maxSpeed"/> m/s could have got there.</summary>
         public bool TryAccept(double x, double y, double z, double maxSpeed)
         {
-            if (!_has || Within(x, y, z, _x, _y, _z, _since, _lost, maxSpeed))
+            // The same pose again (a 30 Hz pose over faster frames) is within any reach: Within would say so.
+            if (!_has || (x == _x && y == _y && z == _z) || Within(x, y, z, _x, _y, _z, _since, _lost, maxSpeed))
             {
                 _px = _x; _py = _y; _pz = _z; _sincePrior = _since; _lostPrior = _lost; _hasPrior = _has;
                 Take(x, y, z);
