@@ -1,7 +1,8 @@
 namespace Kosmos.PseudoHaptic.Benchmarks;
 
 /// <summary>
-/// <c>--steps CASE ROUNDS</c>: steps one held object (profile CASE, or <c>literal</c> for the paper-literal baseline)
+/// <c>--steps CASE ROUNDS</c>: steps one held object (profile CASE, <c>literal</c> for the paper-literal baseline, or
+/// <c>3d:</c> and a <see cref="ThreeDimensionBenchmarks"/> case)
 /// through <see cref="HandFrames"/> ROUNDS × 8192 times and prints the last height (and the wall time per update, a rough figure). For a deterministic instruction
 /// count, run it under callgrind at two round counts: (difference of totals) / (difference of updates) is the
 /// instructions per update, free of the start-up and JIT that both runs share.
@@ -12,7 +13,17 @@ public static class StepCount
     {
         double y = 0;
         var clock = new System.Diagnostics.Stopwatch();
-        if (name == "literal")
+        if (name.StartsWith("3d:", StringComparison.Ordinal))
+        {
+            // A ThreeDimensionBenchmarks case (3d:xyz, 3d:paper-3d, …): Frames updates per call.
+            var bench = new ThreeDimensionBenchmarks { Case = name.Substring(3) };
+            bench.Setup();
+            int calls = HandFrames.Count / ThreeDimensionBenchmarks.Frames;
+            clock.Start();
+            for (int r = 0; r < rounds; r++)
+                for (int c = 0; c < calls; c++) y = bench.Update();
+        }
+        else if (name == "literal")
         {
             var literal = new Cli.Accuracy.PaperLiteralSolver(HandFrames.MassKg);
             literal.BeginHold(HandFrames.Samples[0].Y, HandFrames.Samples[0].Y);
