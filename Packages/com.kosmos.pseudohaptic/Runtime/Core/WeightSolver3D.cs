@@ -422,11 +422,11 @@ namespace Kosmos.PseudoHaptic
             if (_tau > 0)
             {
                 double step = dt < LateralInertia.MaxDecayStep ? dt : LateralInertia.MaxDecayStep;
-                double ex = _ex + dx, ez = _ez + dz, m = _inertia.MaxOffset;
+                double ex = _ex + dx, ez = _ez + dz, perM = 1 / _inertia.MaxOffset; // a constant: off the frame-to-frame chain
                 double n = Math.Sqrt(ex * ex + ez * ez);
                 // Implicit decay, faster the further the lag is past the bound: the factor lies in [0, 1), so the lag
                 // never changes sign by itself (no overshoot, no oscillation).
-                double k = _tau / (_tau + step * (1 + n / m));
+                double k = _tau / (_tau + step * (1 + n * perM));
                 ex *= k;
                 ez *= k;
                 n *= k;
@@ -441,7 +441,7 @@ namespace Kosmos.PseudoHaptic
                 // bound. When the steady point catches up, what it adds to the lag it takes from the hand's lead: nothing
                 // steps back; a one-pose glitch comes and goes with the hand and leaves the lag as it was.
                 double tx = _ex + _vx - _steadyX, tz = _ez + _vz - _steadyZ, tn = Math.Sqrt(tx * tx + tz * tz);
-                double shown = tn > 0 ? m * Math.Tanh(tn / m) / tn : 0;
+                double shown = LateralInertia.ShownShare(tn * perM);
                 if (double.IsFinite(shown)) { _sx = tx * shown; _sz = tz * shown; }
             }
             else _ex = _ez = _sx = _sz = 0;

@@ -208,5 +208,27 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(() => new LateralInertia(maxOffset: 0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("maxOffset"));
             Assert.That(() => new LateralInertia(maxOffset: double.PositiveInfinity), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("maxOffset"));
         }
+
+        [Test]
+        public void TheShownShareIsTanhOverX()
+        {
+            // Against the C library's tanh, from a picometre of lag to fifty bounds, on both sides of the series' edge;
+            // within 10⁻¹² of it (a femtometre of a 0.1 m bound).
+            var xs = new System.Collections.Generic.List<double> { 0, 1e-12, 1e-8, 1e-4, 9.99e-4, 1e-3, 1.001e-3, 0.005, 1, 3, 18, 50 };
+            for (int i = 0; i <= 1000; i++) xs.Add(i * 0.01);
+            foreach (double x in xs)
+            {
+                double expected = x == 0 ? 1 : Math.Tanh(x) / x;
+                Assert.That(LateralInertia.ShownShare(x), Is.EqualTo(expected).Within(1e-12 * expected), "x = " + x);
+            }
+            // The shown lag x·share grows with the lag, through the series' edge too.
+            double previous = 0;
+            for (int i = 1; i <= 20000; i++)
+            {
+                double x = i * 1e-6 + (i > 10000 ? (i - 10000) * 1e-3 : 0), shown = x * LateralInertia.ShownShare(x);
+                Assert.That(shown, Is.GreaterThan(previous), "x = " + x);
+                previous = shown;
+            }
+        }
     }
 }
