@@ -179,16 +179,15 @@ namespace Kosmos.PseudoHaptic
             _state.TimeCompensation = (sum - _state.Time) - add;
             _state.Time = sum;
 
-            var f = new MotionFrame
-            {
-                Dt = dt,
-                PoseY = sample.Y,
-                PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN,
-                IsHighConfidence = sample.IsHighConfidence,
-                Usable = sample.IsUsable,
-                ObjectY = _state.HeldY,
-                OffsetCeiling = double.PositiveInfinity,
-            };
+            // Set in place: an object initializer builds a temporary and copies the whole frame into f.
+            MotionFrame f = default;
+            f.Dt = dt;
+            f.PoseY = sample.Y;
+            f.PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN;
+            f.IsHighConfidence = sample.IsHighConfidence;
+            f.Usable = sample.IsUsable;
+            f.ObjectY = _state.HeldY;
+            f.OffsetCeiling = double.PositiveInfinity;
 
             var effects = Profile.InputEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
