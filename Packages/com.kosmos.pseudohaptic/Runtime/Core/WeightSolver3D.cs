@@ -19,6 +19,7 @@ namespace Kosmos.PseudoHaptic
         WeightModel _model, _perHand;
         TwoHands _twoHands;
         LateralInertia _inertia;
+        double _perMaxOffset; // 1 / the lateral bound: no division by it per frame
         BreakAway _breakAway;
         double _settleTime, _tauOne, _tauTwo, _tau;
         bool _corrected;
@@ -152,6 +153,7 @@ namespace Kosmos.PseudoHaptic
             _perHand = perHand;
             _twoHands = twoHands;
             _inertia = inertia;
+            _perMaxOffset = inertia != null ? 1 / inertia.MaxOffset : 0;
             _breakAway = profile.Find<BreakAway>();
             _tauOne = tauOne;
             _tauTwo = tauTwo;
@@ -422,7 +424,7 @@ namespace Kosmos.PseudoHaptic
             if (_tau > 0)
             {
                 double step = dt < LateralInertia.MaxDecayStep ? dt : LateralInertia.MaxDecayStep;
-                double ex = _ex + dx, ez = _ez + dz, perM = 1 / _inertia.MaxOffset; // a constant: off the frame-to-frame chain
+                double ex = _ex + dx, ez = _ez + dz, perM = _perMaxOffset;
                 double n = Math.Sqrt(ex * ex + ez * ez);
                 // Implicit decay, faster the further the lag is past the bound: the factor lies in [0, 1), so the lag
                 // never changes sign by itself (no overshoot, no oscillation).
