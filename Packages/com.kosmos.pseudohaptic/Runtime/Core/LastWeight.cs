@@ -20,6 +20,10 @@ namespace Kosmos.PseudoHaptic
                && System.BitConverter.DoubleToInt64Bits(baseY) == _base;
 
         /// <summary>The stages' results into this frame.</summary>
+        /// <summary>The results kept are for this followed hand and base (a frame repeating them would get them).</summary>
+        public bool IsFor(double hand, double baseY)
+            => _valid && System.BitConverter.DoubleToInt64Bits(hand) == _hand && System.BitConverter.DoubleToInt64Bits(baseY) == _base;
+
         public void CopyTo(ref MotionFrame f)
         {
             f.WeightHand = _weightHand;

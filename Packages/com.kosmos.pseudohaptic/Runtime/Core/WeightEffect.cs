@@ -25,6 +25,26 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         protected internal virtual bool IsFunctionOfHand => false;
 
+        /// <summary>
+        /// For the input and position stages, asked after a frame that ran the pipeline: true when, on any number of frames
+        /// that follow whose sample repeats that frame's bit for bit (a 30 Hz pose over 72–120 Hz frames), whatever their
+        /// frame times, <see cref="Apply"/> would write exactly what it wrote on that frame and change nothing in
+        /// <paramref name="state"/> but what <see cref="AdvanceStill"/> changes. When every input and position effect says so
+        /// and nothing else in the hold is moving, such frames are still: the solver advances its clocks and calls
+        /// <see cref="AdvanceStill"/> (where <see cref="AdvancesWhenStill"/>) instead of running the pipeline, and the object
+        /// stays where it is (<see cref="WeightSolver"/>, ALGORITHM.md §3). False by default: a scene's own effect is called
+        /// every frame unless it overrides this.
+        /// </summary>
+        protected internal virtual bool IsStill(in HoldState state, in SolverConstants constants) => false;
+
+        /// <summary>True when a still frame changes something of this effect's in the hold (a budget that refills with
+        /// time): the solver then calls <see cref="AdvanceStill"/> on each. False by default.</summary>
+        protected internal virtual bool AdvancesWhenStill => false;
+
+        /// <summary>A still frame of <paramref name="dt"/> s (sanitised, as <see cref="Apply"/> would see it): changes in
+        /// <paramref name="state"/> exactly what <see cref="Apply"/> would. Called only when <see cref="AdvancesWhenStill"/>.</summary>
+        protected internal virtual void AdvanceStill(ref HoldState state, in SolverConstants constants, double dt) { }
+
         /// <summary>Called when a hold begins or the estimator re-anchors, to reset this effect's memory.</summary>
         protected internal virtual void Reset(ref HoldState state, double handY) { }
 

@@ -25,6 +25,9 @@ namespace Kosmos.PseudoHaptic
         internal readonly WeightEffect[] ObjectEffects;
         internal readonly WeightEffect[] PositionEffects;
 
+        /// <summary>The input and position effects a still frame advances (<see cref="WeightEffect.AdvancesWhenStill"/>).</summary>
+        internal readonly WeightEffect[] AdvancingWhenStill;
+
         /// <summary>Every effect of the hand-motion, base, lift and object-motion stages is a function of where the hand is
         /// (<see cref="WeightEffect.IsFunctionOfHand"/>): a frame that repeats the last one's hand reuses the last frame's
         /// weight instead of calling them.</summary>
@@ -59,6 +62,7 @@ namespace Kosmos.PseudoHaptic
             LiftEffects = OfStage(EffectStage.Lift);
             ObjectEffects = OfStage(EffectStage.ObjectMotion);
             PositionEffects = OfStage(EffectStage.Position);
+            AdvancingWhenStill = Array.FindAll(_all, e => (e.Stage == EffectStage.Input || e.Stage == EffectStage.Position) && e.AdvancesWhenStill);
             WeightIsFunctionOfHand = true;
             foreach (var e in _all)
                 if (e.Stage >= EffectStage.HandMotion && e.Stage <= EffectStage.ObjectMotion && e.Stage != EffectStage.Gain && !e.IsFunctionOfHand)

@@ -11,7 +11,9 @@ namespace Kosmos.PseudoHaptic
     /// Per frame: pose → input effects → estimator (→ hand filter, if the profile has one) → hand-motion effects →
     /// base effects → lift effects → offset = lift − gain × carried lift → object-motion effects → object height →
     /// position effects; a frame that repeats the last one's hand reuses the weight the last frame computed
-    /// (<see cref="LastWeight"/>), where every effect between the estimator and the offset is a function of the hand.
+    /// (<see cref="LastWeight"/>), where every effect between the estimator and the offset is a function of the hand,
+    /// and a frame that repeats the last one's sample while nothing moves on its own is still: only the clocks advance
+    /// (<see cref="WeightEffect.IsStill"/>).
     /// Configuration validates and throws; <see cref="Step"/> never throws, never allocates, and
     /// always returns a finite height.
     /// </summary>
@@ -29,6 +31,8 @@ namespace Kosmos.PseudoHaptic
         SolverConstants _constants;
         IHandFilter _filter;
         LastWeight _last;
+        HandSample _lastSample;  // the last sample a frame ran the pipeline for
+        bool _canBeStill;        // after that frame nothing moves: the same sample again may be a still frame
 
         public WeightModel Model { get; private set; }
         public WeightProfile Profile { get; private set; }
@@ -71,7 +75,7 @@ namespace Kosmos.PseudoHaptic
                 ConfigurationGuard.InRange(value, 0, MaxCoordinate, nameof(BottomBelowPivot));
                 _bottomBelowPivot = value;
                 _constants = _constants.WithBottomBelowPivot(value);
-                _last.Forget();
+                ForgetLastFrame();
             }
         }
 
@@ -98,7 +102,7 @@ namespace Kosmos.PseudoHaptic
                 _filter?.Reset(_state.HandY);
             }
             Profile = profile;
-            _last.Forget();
+            ForgetLastFrame();
             _constants = new SolverConstants(gain, standardSpeed,
                 cap != null ? cap.CapFor(model, standardSpeed) : double.PositiveInfinity,
                 deadband != null ? deadband.WidthFor(standardSpeed, gain) : 0, limits, _bottomBelowPivot,
@@ -159,7 +163,14 @@ namespace Kosmos.PseudoHaptic
             _state.LastHand = handY;
             _filter?.Reset(handY);
             ResetEffects(handY);
+            ForgetLastFrame();
+        }
+
+        /// <summary>Nothing of the last frame is reused: the next one weighs and runs every effect.</summary>
+        void ForgetLastFrame()
+        {
             _last.Forget();
+            _canBeStill = false;
         }
 
         /// <summary>Ends the hold; further steps return the object's last height.</summary>
@@ -169,7 +180,6 @@ namespace Kosmos.PseudoHaptic
         public double Step(in HandSample sample, double dt)
         {
             if (!_state.IsHolding) return _state.ObjectY;
-            var limits = _constants.Limits;
 
             // Bad frame times are absorbed: NaN or negative count as no time, infinity as a very long hitch.
             if (double.IsPositiveInfinity(dt)) dt = 3600;
@@ -179,6 +189,24 @@ namespace Kosmos.PseudoHaptic
             _state.TimeCompensation = (sum - _state.Time) - add;
             _state.Time = sum;
 
+            // A still frame: the sample repeats the last one's bit for bit (a 30 Hz pose over 72–120 Hz frames) and
+            // nothing in the hold moves on its own, so the pipeline would leave everything as it is: only the time since
+            // the pose passes, and the object stays (bit for bit what the pipeline returns: StillFrameTests).
+            if (_canBeStill && SameSample(in sample, in _lastSample))
+            {
+                _state.Estimator.Advance(dt, _constants.Limits.MaxFrameTime);
+                var advancing = Profile.AdvancingWhenStill;
+                for (int i = 0; i < advancing.Length; i++) advancing[i].AdvanceStill(ref _state, in _constants, dt);
+                return _state.ObjectY;
+            }
+            return RunPipeline(in sample, dt);
+        }
+
+        /// <summary>The frame's pipeline (kept apart from <see cref="Step"/> so that a still frame does not pay for its
+        /// frame record).</summary>
+        double RunPipeline(in HandSample sample, double dt)
+        {
+            var limits = _constants.Limits;
             // Set in place: an object initializer builds a temporary and copies the whole frame into f.
             MotionFrame f = default;
             f.Dt = dt;
@@ -239,8 +267,30 @@ namespace Kosmos.PseudoHaptic
                 _state.HeldY = f.NewObjectY;
                 _state.ObjectY = f.NewObjectY - _state.GrabOffset;
             }
+            // The same sample again would read the same pose (no new one: the estimator follows it), reuse this weight (the
+            // same hand and base), find no change of the offset to glide, and give the position effects the same height.
+            // Whether the input and position effects would change anything (settling, a speed cap catching up) is theirs to
+            // say (WeightEffect.IsStill); a hand filter may move with time alone.
+            _lastSample = sample;
+            _canBeStill = f.Usable && _filter == null && _state.Glide == 0 && _last.IsFor(f.HandAfter, _state.Base) && EffectsStill();
             return _state.ObjectY;
         }
+
+        static bool SameSample(in HandSample a, in HandSample b)
+            => BitConverter.DoubleToInt64Bits(a.Y) == BitConverter.DoubleToInt64Bits(b.Y)
+               && BitConverter.DoubleToInt64Bits(a.PoseTime) == BitConverter.DoubleToInt64Bits(b.PoseTime)
+               && a.IsTracked == b.IsTracked && a.IsHighConfidence == b.IsHighConfidence;
+
+        /// <summary>Every input and position effect would leave the hold as it is on the same sample again.</summary>
+        bool EffectsStill()
+        {
+            var effects = Profile.InputEffects;
+            for (int i = 0; i < effects.Length; i++) if (!effects[i].IsStill(in _state, in _constants)) return false;
+            effects = Profile.PositionEffects;
+            for (int i = 0; i < effects.Length; i++) if (!effects[i].IsStill(in _state, in _constants)) return false;
+            return true;
+        }
+
 
         /// <summary>The weight for this frame's hand: hand-motion → base → lift → offset → object-motion effects.</summary>
         void Weigh(ref MotionFrame f)

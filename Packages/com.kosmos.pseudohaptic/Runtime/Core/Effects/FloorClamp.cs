@@ -26,5 +26,8 @@ namespace Kosmos.PseudoHaptic
             double lowest = Floor + constants.BottomBelowPivot + state.GrabOffset;
             if (frame.NewObjectY < lowest) frame.NewObjectY = lowest;
         }
+
+        /// <summary>A function of the height it is given and the grab: the same height gets the same answer.</summary>
+        protected internal override bool IsStill(in HoldState state, in SolverConstants constants) => true;
     }
 }

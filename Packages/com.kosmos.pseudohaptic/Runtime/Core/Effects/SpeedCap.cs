@@ -67,6 +67,20 @@ namespace Kosmos.PseudoHaptic
             state.Strain = Math.Abs(target - state.CappedY);
         }
 
+        /// <summary>Caught up (an uncapped follower always is): the same target again wants a move of 0, and only the
+        /// budget refills (<see cref="AdvanceStill"/>; a follower at −0 would turn +0 there, which nothing reads).</summary>
+        protected internal override bool IsStill(in HoldState state, in SolverConstants constants) => state.CappedY == state.CapTarget;
+
+        protected internal override bool AdvancesWhenStill => true;
+
+        /// <summary>Caught up, the budget refills as <see cref="Apply"/> refills it (a full one stays full).</summary>
+        protected internal override void AdvanceStill(ref HoldState state, in SolverConstants constants, double dt)
+        {
+            double cap = constants.CapSpeed;
+            if (cap < double.PositiveInfinity)
+                state.CapBudget = Math.Min(state.CapBudget + cap * Math.Min(dt, constants.Limits.MaxFrameTime), cap * BurstTime);
+        }
+
         protected internal override void Reset(ref HoldState state, double handY)
         {
             state.CapStarted = false;

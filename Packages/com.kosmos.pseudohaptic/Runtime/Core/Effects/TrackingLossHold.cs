@@ -48,6 +48,10 @@ namespace Kosmos.PseudoHaptic
             else state.SettleElapsed = -1;
         }
 
+        /// <summary>Settled (which a usable frame leaves not lost): the same sample again changes nothing. While settling,
+        /// each frame counts toward it.</summary>
+        protected internal override bool IsStill(in HoldState state, in SolverConstants constants) => state.SettleElapsed < 0;
+
         protected internal override void Reset(ref HoldState state, double handY)
         {
             state.SettleElapsed = -1;

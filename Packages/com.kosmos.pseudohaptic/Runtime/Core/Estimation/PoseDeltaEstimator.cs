@@ -54,8 +54,7 @@ namespace Kosmos.PseudoHaptic
         /// Usable for a pose no hand could have reached.</summary>
         public void Update(ref MotionFrame f, SolverLimits limits)
         {
-            _sincePose += f.Dt;
-            _reach.Tick(f.Dt, limits.MaxFrameTime);
+            Advance(f.Dt, limits.MaxFrameTime);
             f.HandBefore = f.HandAfter = _poseY;
             f.HandDelta = f.HandSpeed = f.MotionInterval = 0;
 
@@ -96,6 +95,14 @@ namespace Kosmos.PseudoHaptic
             f.HandSpeed = _speed = delta / interval;
             f.MotionInterval = interval;
             Accept(ref f);
+        }
+
+        /// <summary>A frame of <paramref name="dt"/> s passed: all that a frame repeating the last one's pose changes here
+        /// (the solver calls it alone for a still frame).</summary>
+        public void Advance(double dt, double longestFrame)
+        {
+            _sincePose += dt;
+            _reach.Tick(dt, longestFrame);
         }
 
         void Lose()

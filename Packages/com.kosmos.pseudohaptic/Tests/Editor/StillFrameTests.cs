@@ -1,0 +1,164 @@
+using System.Collections.Generic;
+using Kosmos.PseudoHaptic.Simulation;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// A frame whose sample repeats the last one's bit for bit, while nothing in the hold moves on its own, is a still frame:
+    /// the solver advances its clocks and returns the object where it is, without running the pipeline. It is a saving, not
+    /// a behaviour: each hold here runs twice, once as the profile is and once with an extra input effect that never says
+    /// it is still (so every frame runs the pipeline), and the two must agree bit for bit on every frame, the whole hold
+    /// state included, on Quest-like input with glitches, losses, low confidence, hitches, a change of mass mid-hold (which
+    /// glides), a hand filter, and poses on a coarse grid.
+    /// </summary>
+    public class StillFrameTests
+    {
+        /// <summary>Does nothing, and never says it is still: a profile with it runs the pipeline every frame.</summary>
+        sealed class NeverStill : WeightEffect
+        {
+            public override string Name => "never-still";
+            public override EffectStage Stage => EffectStage.Input;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
+        }
+
+        /// <summary>Counts the frames that run the pipeline, and is still whenever asked.</summary>
+        sealed class CountsFrames : WeightEffect
+        {
+            public int Calls;
+            public override string Name => "counts-frames";
+            public override EffectStage Stage => EffectStage.Input;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Calls++;
+            protected override bool IsStill(in HoldState state, in SolverConstants constants) => true;
+        }
+
+        static IEnumerable<TestCaseData> Cases()
+        {
+            var profiles = new[]
+            {
+                NamedProfiles.Paper, NamedProfiles.PaperExperiment, NamedProfiles.Gain,
+                NamedProfiles.Paper.With(new HeightDeceleration()), NamedProfiles.Paper.WithHandFilter(new OneEuroFilter()),
+                NamedProfiles.Paper.WithHandFilter(new ExponentialSmoothing()),
+                NamedProfiles.Paper.With(new TrackingLossHold(requireHighConfidence: false), "paper, any confidence"),
+                NamedProfiles.Paper.With(new OffsetRelaxation()),
+            };
+            foreach (var profile in profiles)
+                foreach (double mass in new[] { 0.02, PhysicalConstants.StandardMassKg, 0.5, 1, 2, 5 })
+                    foreach (int rate in new[] { 72, 90, 120 })
+                        foreach (bool quantized in new[] { false, true })
+                            yield return new TestCaseData(profile, mass, rate, quantized)
+                                .SetName("Still " + profile.Name + " " + mass + " kg " + rate + " Hz" + (quantized ? " 5 mm poses" : ""));
+        }
+
+        [TestCaseSource(nameof(Cases))]
+        public void AStillFrameLeavesBitForBitWhatThePipelineWould(WeightProfile profile, double mass, int rate, bool quantized)
+        {
+            var everyFrame = profile.With(new NeverStill());
+            var path = HandPath.StartAt(0.9).Hold(0.5).MoveTo(1.35, 0.7).Hold(0.4).MoveTo(1.2, 0.2).MoveTo(1.35, 0.2).Hold(0.6)
+                .MoveTo(0.7, 0.9).Hold(0.5).MoveTo(1.5, 0.3).Hold(1.0).MoveTo(0.9, 1.0).Hold(0.5);
+            var frames = new HeadsetSimulator
+            {
+                FrameRate = rate, FrameTimeWobble = 0.1, JitterSd = 0.0015, Seed = 7 * rate + (int)(mass * 100), GlitchChance = 0.03,
+                LowConfidenceAboveSpeed = 0.8,
+            }.Drop(2.0, 0.3).Glitch(3.1, 0.15).LowConfidence(4.0, 0.2).Render(path);
+
+            var still = new WeightSolver(WeightModel.FromMass(mass), profile);
+            var full = new WeightSolver(WeightModel.FromMass(mass), everyFrame);
+            still.BeginHold(frames[0].HandY, frames[0].HandY - 0.02, frames[0].PoseTime);
+            full.BeginHold(frames[0].HandY, frames[0].HandY - 0.02, frames[0].PoseTime);
+            for (int i = 1; i < frames.Length; i++)
+            {
+                double dt = i % 97 == 0 ? 0.2 : frames[i].Time - frames[i - 1].Time; // now and then a hitch
+                if (i == frames.Length / 2)
+                {
+                    // Mid-hold: another mass (a second hand joining; the offset glides to its new value), then back.
+                    still.Configure(WeightModel.FromMass(mass * 0.5), profile, 0.5);
+                    full.Configure(WeightModel.FromMass(mass * 0.5), everyFrame, 0.5);
+                }
+                if (i == frames.Length * 3 / 4)
+                {
+                    still.Configure(WeightModel.FromMass(mass), profile, 0.5);
+                    full.Configure(WeightModel.FromMass(mass), everyFrame, 0.5);
+                }
+                var sample = frames[i].ToSample();
+                if (quantized) sample = new HandSample(System.Math.Round(sample.Y * 200) / 200, sample.IsTracked, sample.IsHighConfidence, sample.PoseTime);
+                double a = still.Step(sample, dt), b = full.Step(sample, dt);
+                Assert.That(a, Is.EqualTo(b), "object, frame " + i);
+                // Field by field, the estimator's, the glide's and the speed cap's memory included.
+                Assert.That(still.State, Is.EqualTo(full.State), "hold state, frame " + i);
+            }
+        }
+
+        static IEnumerable<TestCaseData> RestCases()
+        {
+            foreach (double mass in new[] { 0.02, PhysicalConstants.StandardMassKg, 2 })
+                foreach (int rate in new[] { 72, 90, 120 })
+                    yield return new TestCaseData(mass, rate);
+        }
+
+        [TestCaseSource(nameof(RestCases))]
+        public void A30HzPoseOverFasterFramesRunsThePipelineOncePerPoseWhileTheHandRests(double mass, int rate)
+        {
+            var counter = new CountsFrames();
+            var solver = new WeightSolver(WeightModel.FromMass(mass), NamedProfiles.Paper.With(counter));
+            var frames = new HeadsetSimulator { FrameRate = rate, PoseRate = 30, JitterSd = 0.0015, Seed = rate }
+                .Render(HandPath.StartAt(1.0).Hold(0.5).MoveTo(1.3, 0.6).Hold(3.0));
+            solver.BeginHold(frames[0].HandY, frames[0].HandY, frames[0].PoseTime);
+            int start = 0, poses = 0;
+            for (int i = 1; i < frames.Length; i++)
+            {
+                if (frames[i].Time < 2.0) { solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time); continue; }
+                if (start == 0) start = counter.Calls;
+                if (frames[i].PoseTime != frames[i - 1].PoseTime) poses++;
+                solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+            }
+            // Resting for 2 s after the lift: the speed cap has caught up, nothing glides; only new poses run the pipeline.
+            Assert.That(counter.Calls - start, Is.EqualTo(poses), "frames that ran the pipeline, of " + (frames.Length) + " at " + rate + " Hz");
+        }
+
+        [TestCase(0.02), TestCase(1), TestCase(5)]
+        public void AHoldBegunUntrackedIsStillOnlyAsThePipelineWouldBe(double mass)
+        {
+            // The hand is first seen a few frames in (the hold re-anchors on its first pose), then lost and found again.
+            var frames = new HeadsetSimulator { FrameRate = 90, JitterSd = 0.0015, Seed = (int)(mass * 10) + 3 }.Drop(0, 0.1).Drop(1.2, 0.2)
+                .Render(HandPath.StartAt(1.0).Hold(0.4).MoveTo(1.3, 0.6).Hold(1.0));
+            var still = new WeightSolver(WeightModel.FromMass(mass));
+            var full = new WeightSolver(WeightModel.FromMass(mass), NamedProfiles.Paper.With(new NeverStill()));
+            still.BeginHold(double.NaN, 0.95);
+            full.BeginHold(double.NaN, 0.95);
+            for (int i = 1; i < frames.Length; i++)
+            {
+                var sample = frames[i].ToSample();
+                double dt = frames[i].Time - frames[i - 1].Time;
+                Assert.That(still.Step(sample, dt), Is.EqualTo(full.Step(sample, dt)), "object, frame " + i);
+                Assert.That(still.State, Is.EqualTo(full.State), "hold state, frame " + i);
+            }
+        }
+
+        [Test]
+        public void WhileTheObjectStillMovesOnItsOwnEveryFrameRunsThePipeline()
+        {
+            // A change of mass at rest: the offset glides to its new value over several frames that repeat the same pose.
+            var counter = new CountsFrames();
+            var solver = new WeightSolver(WeightModel.FromMass(2), NamedProfiles.Paper.With(counter));
+            solver.BeginHold(1.0, 1.0, 0);
+            var lifted = new HandSample(1.3, poseTime: 1);
+            solver.Step(new HandSample(1.3, poseTime: 0.5), 0.5);
+            for (int i = 0; i < 10; i++) solver.Step(lifted, 0.1);
+            double before = solver.ObjectY;
+            int calls = counter.Calls;
+            solver.Configure(WeightModel.FromMass(0.5), solver.Profile, 0.5);
+            double last = before;
+            int moving = 0;
+            for (int i = 0; i < 30; i++)
+            {
+                double y = solver.Step(lifted, 1 / 90.0);
+                if (y != last) moving++;
+                last = y;
+            }
+            Assert.That(moving, Is.GreaterThan(3), "the object glides toward the lighter mass's height");
+            Assert.That(counter.Calls - calls, Is.GreaterThanOrEqualTo(moving), "every frame that moved ran the pipeline");
+            Assert.That(last, Is.GreaterThan(before), "and it rose");
+        }
+    }
+}
