@@ -1,3 +1,4 @@
+using System.Runtime.CompilerServices;
 using BenchmarkDotNet.Attributes;
 using Kosmos.PseudoHaptic.Cli.Accuracy;
 
@@ -43,28 +44,21 @@ public class BaselineBenchmarks
     }
 
     [Benchmark(OperationsPerInvoke = Frames)]
-    public double DefaultPipeline()
-    {
-        double y = 0;
-        for (int i = 0; i < Frames; i++)
-        {
-            int f = _solverFrame;
-            _solverFrame = (f + 1) & HandFrames.Mask;
-            y = _solver.Step(HandFrames.Samples[f], HandFrames.Dt[f]);
-        }
-        return y;
-    }
+    public double DefaultPipeline() => Steps(_solver, HandFrames.Samples, HandFrames.Dt, ref _solverFrame);
 
     /// <summary>The default pipeline when every frame brings a new pose (no still frame): what a frame costs at most.</summary>
     [Benchmark(OperationsPerInvoke = Frames)]
-    public double DefaultPipelineNewPoseEveryFrame()
+    public double DefaultPipelineNewPoseEveryFrame() => Steps(_everyFrame, HandFrames.EveryFramePoses, HandFrames.EveryFrameDt, ref _everyFrameFrame);
+
+    [MethodImpl(MethodImplOptions.AggressiveInlining)]
+    static double Steps(WeightSolver solver, HandSample[] samples, double[] dts, ref int frame)
     {
         double y = 0;
         for (int i = 0; i < Frames; i++)
         {
-            int f = _everyFrameFrame;
-            _everyFrameFrame = (f + 1) & HandFrames.Mask;
-            y = _everyFrame.Step(HandFrames.EveryFramePoses[f], HandFrames.EveryFrameDt[f]);
+            int f = frame;
+            frame = (f + 1) & HandFrames.Mask;
+            y = solver.Step(samples[f], dts[f]);
         }
         return y;
     }

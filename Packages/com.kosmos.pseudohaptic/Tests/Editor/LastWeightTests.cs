@@ -1,5 +1,4 @@
 using System.Collections.Generic;
-using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 
 namespace Kosmos.PseudoHaptic.Tests
@@ -46,42 +45,14 @@ namespace Kosmos.PseudoHaptic.Tests
             var everyFrame = profile.With(new WeighEveryFrame());
             Assert.That(everyFrame.WeightIsFunctionOfHand, Is.False);
 
-            var path = HandPath.StartAt(0.9).Hold(0.5).MoveTo(1.35, 0.7).Hold(0.4).MoveTo(1.2, 0.2).MoveTo(1.35, 0.2).Hold(0.6)
-                .MoveTo(0.7, 0.9).Hold(0.5).MoveTo(1.5, 0.3).Hold(1.0).MoveTo(0.9, 1.0).Hold(0.5);
-            var frames = new HeadsetSimulator
+            TwinHolds.Run(profile, everyFrame, mass, rate, quantized, rate + (int)(mass * 100), (i, reused, weighed, a, b) =>
             {
-                FrameRate = rate, FrameTimeWobble = 0.1, JitterSd = 0.0015, Seed = rate + (int)(mass * 100), GlitchChance = 0.03,
-                LowConfidenceAboveSpeed = 0.8,
-            }.Drop(2.0, 0.3).Glitch(3.1, 0.15).LowConfidence(4.0, 0.2).Render(path);
-
-            var reused = new WeightSolver(WeightModel.FromMass(mass), profile);
-            var weighed = new WeightSolver(WeightModel.FromMass(mass), everyFrame);
-            reused.BeginHold(frames[0].HandY, frames[0].HandY - 0.02, frames[0].PoseTime);
-            weighed.BeginHold(frames[0].HandY, frames[0].HandY - 0.02, frames[0].PoseTime);
-            for (int i = 1; i < frames.Length; i++)
-            {
-                double dt = i % 97 == 0 ? 0.2 : frames[i].Time - frames[i - 1].Time; // now and then a hitch
-                if (i == frames.Length / 2)
-                {
-                    // Mid-hold: another mass (a second hand joining), then back.
-                    reused.Configure(WeightModel.FromMass(mass * 0.5), profile, 0.5);
-                    weighed.Configure(WeightModel.FromMass(mass * 0.5), everyFrame, 0.5);
-                }
-                if (i == frames.Length * 3 / 4)
-                {
-                    reused.Configure(WeightModel.FromMass(mass), profile, 0.5);
-                    weighed.Configure(WeightModel.FromMass(mass), everyFrame, 0.5);
-                }
-                var sample = frames[i].ToSample();
-                // Poses on a 5 mm grid: new poses that repeat the last one's height, whose median may still move.
-                if (quantized) sample = new HandSample(System.Math.Round(sample.Y * 200) / 200, sample.IsTracked, sample.IsHighConfidence, sample.PoseTime);
-                double a = reused.Step(sample, dt), b = weighed.Step(sample, dt);
                 Assert.That(a, Is.EqualTo(b), "object, frame " + i);
                 Assert.That(reused.Offset, Is.EqualTo(weighed.Offset), "offset, frame " + i);
                 Assert.That(reused.Strain, Is.EqualTo(weighed.Strain), "strain, frame " + i);
                 Assert.That(reused.State.Base, Is.EqualTo(weighed.State.Base), "base, frame " + i);
                 Assert.That(reused.State.Glide, Is.EqualTo(weighed.State.Glide), "glide, frame " + i);
-            }
+            });
         }
 
         [Test]

@@ -54,39 +54,12 @@ namespace Kosmos.PseudoHaptic.Tests
         public void AStillFrameLeavesBitForBitWhatThePipelineWould(WeightProfile profile, double mass, int rate, bool quantized)
         {
             var everyFrame = profile.With(new NeverStill());
-            var path = HandPath.StartAt(0.9).Hold(0.5).MoveTo(1.35, 0.7).Hold(0.4).MoveTo(1.2, 0.2).MoveTo(1.35, 0.2).Hold(0.6)
-                .MoveTo(0.7, 0.9).Hold(0.5).MoveTo(1.5, 0.3).Hold(1.0).MoveTo(0.9, 1.0).Hold(0.5);
-            var frames = new HeadsetSimulator
+            TwinHolds.Run(profile, everyFrame, mass, rate, quantized, 7 * rate + (int)(mass * 100), (i, still, full, a, b) =>
             {
-                FrameRate = rate, FrameTimeWobble = 0.1, JitterSd = 0.0015, Seed = 7 * rate + (int)(mass * 100), GlitchChance = 0.03,
-                LowConfidenceAboveSpeed = 0.8,
-            }.Drop(2.0, 0.3).Glitch(3.1, 0.15).LowConfidence(4.0, 0.2).Render(path);
-
-            var still = new WeightSolver(WeightModel.FromMass(mass), profile);
-            var full = new WeightSolver(WeightModel.FromMass(mass), everyFrame);
-            still.BeginHold(frames[0].HandY, frames[0].HandY - 0.02, frames[0].PoseTime);
-            full.BeginHold(frames[0].HandY, frames[0].HandY - 0.02, frames[0].PoseTime);
-            for (int i = 1; i < frames.Length; i++)
-            {
-                double dt = i % 97 == 0 ? 0.2 : frames[i].Time - frames[i - 1].Time; // now and then a hitch
-                if (i == frames.Length / 2)
-                {
-                    // Mid-hold: another mass (a second hand joining; the offset glides to its new value), then back.
-                    still.Configure(WeightModel.FromMass(mass * 0.5), profile, 0.5);
-                    full.Configure(WeightModel.FromMass(mass * 0.5), everyFrame, 0.5);
-                }
-                if (i == frames.Length * 3 / 4)
-                {
-                    still.Configure(WeightModel.FromMass(mass), profile, 0.5);
-                    full.Configure(WeightModel.FromMass(mass), everyFrame, 0.5);
-                }
-                var sample = frames[i].ToSample();
-                if (quantized) sample = new HandSample(System.Math.Round(sample.Y * 200) / 200, sample.IsTracked, sample.IsHighConfidence, sample.PoseTime);
-                double a = still.Step(sample, dt), b = full.Step(sample, dt);
                 Assert.That(a, Is.EqualTo(b), "object, frame " + i);
                 // Field by field, the estimator's, the glide's and the speed cap's memory included.
                 Assert.That(still.State, Is.EqualTo(full.State), "hold state, frame " + i);
-            }
+            });
         }
 
         static IEnumerable<TestCaseData> RestCases()
