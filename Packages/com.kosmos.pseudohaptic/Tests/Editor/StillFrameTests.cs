@@ -8,9 +8,10 @@ namespace Kosmos.PseudoHaptic.Tests
     /// A frame whose sample repeats the last one's bit for bit, while nothing in the hold moves on its own, is a still frame:
     /// the solver advances its clocks and returns the object where it is, without running the pipeline. It is a saving, not
     /// a behaviour: each hold here runs twice, once as the profile is and once with an extra input effect that never says
-    /// it is still (so every frame runs the pipeline), and the two must agree bit for bit on every frame, the whole hold
-    /// state included, on Quest-like input with glitches, losses, low confidence, hitches, a change of mass mid-hold (which
-    /// glides), a hand filter, and poses on a coarse grid.
+    /// it is still (so every frame runs the pipeline), and the two must agree on every frame: the same height and the same
+    /// hold state, field by field (only a zero's sign may differ, in the speed cap's follower, which nothing reads). On
+    /// Quest-like input with glitches, losses, low confidence, hitches, a change of mass mid-hold (which glides), hand
+    /// filters and poses on a coarse grid, and on seeded hard cases, broken and not.
     /// </summary>
     public class StillFrameTests
     {
