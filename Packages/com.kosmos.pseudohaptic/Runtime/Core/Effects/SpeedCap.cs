@@ -59,7 +59,7 @@ namespace Kosmos.PseudoHaptic
             // What tracking hid moves the follower as it moves the object: the strain stays as it was.
             if (frame.Bridged) state.CappedY += target - state.CapTarget;
             state.CapTarget = target;
-            double budget = Math.Min(state.CapBudget + cap * Math.Min(frame.Dt, constants.Limits.MaxFrameTime), burst);
+            double budget = Refilled(state.CapBudget, cap, frame.Dt, constants);
             double want = target - state.CappedY;
             double move = want > budget ? budget : (want < -budget ? -budget : want);
             state.CappedY += move;
@@ -78,8 +78,12 @@ namespace Kosmos.PseudoHaptic
         {
             double cap = constants.CapSpeed;
             if (cap < double.PositiveInfinity)
-                state.CapBudget = Math.Min(state.CapBudget + cap * Math.Min(dt, constants.Limits.MaxFrameTime), cap * BurstTime);
+                state.CapBudget = Refilled(state.CapBudget, cap, dt, constants);
         }
+
+        /// <summary>The follower's budget after <paramref name="dt"/> s at v_cap: at most one burst.</summary>
+        static double Refilled(double budget, double cap, double dt, in SolverConstants constants)
+            => Math.Min(budget + cap * Math.Min(dt, constants.Limits.MaxFrameTime), cap * BurstTime);
 
         protected internal override void Reset(ref HoldState state, double handY)
         {
