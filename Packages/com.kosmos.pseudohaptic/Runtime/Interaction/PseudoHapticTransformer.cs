@@ -1,5 +1,4 @@
 using System;
-using System.Collections.Generic;
 using Oculus.Interaction;
 using Oculus.Interaction.HandGrab;
 using UnityEngine;
@@ -37,10 +36,9 @@ namespace Kosmos.PseudoHaptic.Interaction
         IGrabbable _grabbable;
         IPointable _pointable;
         // The grabs selecting the object, by pointer id (from the Grabbable's Select events), and the hand grab
-        // interactor of each (null for other interactors).
-        readonly List<int> _handIds = new List<int>(4);
-        readonly List<IHandGrabInteractor> _hands = new List<IHandGrabInteractor>(4);
-        double _lastTime;
+        // interactor of each (null for other interactors): the same bookkeeping as the XR Interaction Toolkit transformer's.
+        readonly GrabbingHands<IHandGrabInteractor> _grabs = new GrabbingHands<IHandGrabInteractor>();
+        FrameClock _clock;
         bool _holding, _cancelling;
         int[] _cancelIds = new int[4];
 
@@ -92,24 +90,22 @@ namespace Kosmos.PseudoHaptic.Interaction
             // begins its one-grab transformer again for the hand not yet cancelled: nothing is to begin then.
             if (_cancelling) return;
             _holding = false;
-            if (_grabbable == null || _weight == null || _handIds.Count == 0) return;
+            if (_grabbable == null || _weight == null || _grabs.Count == 0) return;
             if (_rig != null && _weight.Hold.HandCount == 0) _weight.Rig = _rig; // the hold is solved in the rig's frame
-            _lastTime = Time.timeAsDouble;
-            for (int i = 0; i < _handIds.Count; i++) _weight.BeginHold(_handIds[i], HandPose(i, out _, out _), double.NaN, RigidbodyControl.External);
+            _clock.Start(Time.timeAsDouble);
+            for (int i = 0; i < _grabs.Count; i++) _weight.BeginHold(_grabs.IdAt(i), HandPose(i, out _, out _), double.NaN, RigidbodyControl.External);
             _holding = _weight.IsHeld;
         }
 
         public void UpdateTransform()
         {
-            if (!_holding || _handIds.Count == 0) return;
-            double now = Time.timeAsDouble;
-            float dt = (float)(now - _lastTime); // 0 when called twice in a frame: the solver moves nothing
-            _lastTime = now;
+            if (!_holding || _grabs.Count == 0) return;
+            float dt = _clock.Delta(Time.timeAsDouble); // 0 when called twice in a frame: the solver moves nothing
             // x/z: the mean of the grabbing hands and the offset taken when they changed (HeldObject.GrabTarget), or the solver's.
-            for (int i = 0; i < _handIds.Count; i++)
+            for (int i = 0; i < _grabs.Count; i++)
             {
                 Vector3 hand = HandPose(i, out bool handTracked, out bool highConfidence);
-                _weight.Step(_handIds[i], hand, handTracked, highConfidence, double.NaN, dt, grabMovesHorizontal: true);
+                _weight.Step(_grabs.IdAt(i), hand, handTracked, highConfidence, double.NaN, dt, grabMovesHorizontal: true);
             }
             if (_weight.Hold.BrokeAway) CancelGrabs();
         }
@@ -121,9 +117,7 @@ namespace Kosmos.PseudoHaptic.Interaction
         void CancelGrabs()
         {
             var element = _grabbable as IPointableElement;
-            int n = _handIds.Count;
-            if (_cancelIds.Length < n) _cancelIds = new int[n];
-            _handIds.CopyTo(_cancelIds); // the Cancel events change _handIds while this loops
+            int n = _grabs.CopyIds(ref _cancelIds); // the Cancel events change _grabs while this loops
             _cancelling = true;
             try
             {
@@ -149,20 +143,11 @@ namespace Kosmos.PseudoHaptic.Interaction
         {
             if (evt.Type == PointerEventType.Select)
             {
-                if (!_handIds.Contains(evt.Identifier))
-                {
-                    _handIds.Add(evt.Identifier);
-                    _hands.Add(evt.Data as IHandGrabInteractor);
-                }
+                _grabs.Add(evt.Identifier, evt.Data as IHandGrabInteractor);
             }
             else if (evt.Type == PointerEventType.Unselect || evt.Type == PointerEventType.Cancel)
             {
-                int i = _handIds.IndexOf(evt.Identifier);
-                if (i >= 0)
-                {
-                    _handIds.RemoveAt(i);
-                    _hands.RemoveAt(i);
-                }
+                _grabs.Remove(evt.Identifier);
                 if (_weight != null) _weight.EndHold(evt.Identifier);
             }
         }
@@ -173,7 +158,7 @@ namespace Kosmos.PseudoHaptic.Interaction
         /// </summary>
         Vector3 HandPose(int i, out bool tracked, out bool highConfidence)
         {
-            IHandGrabInteractor hand = _hands[i];
+            IHandGrabInteractor hand = _grabs.SourceAt(i);
             var points = _grabbable.GrabPoints;
             // A hand grab interactor without its hand (not wired, or its hand destroyed) reads as lost, never as an exception.
             Oculus.Interaction.Input.IHand tracking = hand != null ? hand.Hand : null;
