@@ -1,0 +1,121 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>The grab transformers' shared bookkeeping (<see cref="GrabbingHands{T}"/>) and frame time (<see cref="FrameClock"/>).</summary>
+    public sealed class GrabbingHandsTests
+    {
+        sealed class Interactor
+        {
+            public readonly string Name;
+            public Interactor(string name) => Name = name;
+        }
+
+        static readonly Interactor A = new Interactor("a"), B = new Interactor("b"), C = new Interactor("c");
+
+        [Test]
+        public void HandsKeepTheOrderTheyJoinedInAndALeaverClosesTheGap()
+        {
+            var hands = new GrabbingHands<Interactor>(capacity: 1);
+            Assert.That(hands.Add(7, A), Is.True);
+            Assert.That(hands.Add(3, B), Is.True, "grows past its capacity");
+            Assert.That(hands.Add(9, C), Is.True);
+            Assert.That(hands.Add(3, A), Is.False, "an id already here");
+            Assert.That(hands.Remove(7), Is.True);
+            Assert.That(hands.Remove(7), Is.False);
+            Assert.That(hands.Count, Is.EqualTo(2));
+            Assert.That(new[] { hands.IdAt(0), hands.IdAt(1) }, Is.EqualTo(new[] { 3, 9 }));
+            Assert.That(hands.SourceAt(0), Is.SameAs(B));
+            Assert.That(hands.IndexOf(9), Is.EqualTo(1));
+            Assert.That(hands.IndexOfSource(A), Is.EqualTo(-1));
+        }
+
+        [Test]
+        public void NumberedHandsNeverReuseAnIdInUseAndASourceKeepsItsId()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            hands.Add(1, A);
+            int b = hands.Add(B), c = hands.Add(C);
+            Assert.That(new[] { 1, b, c }, Is.Unique);
+            Assert.That(hands.Add(B), Is.EqualTo(b), "B is here already");
+            hands.Remove(b);
+            int again = hands.Add(B);
+            Assert.That(again, Is.Not.EqualTo(1).And.Not.EqualTo(c), "a new id, not one in use");
+            Assert.That(hands.Count, Is.EqualTo(3));
+        }
+
+        [Test]
+        public void ResyncingAgainstTheGrabSystemsListGivesEachLeaverOnceAndKeepsTheStayers()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            int a = hands.Add(A), b = hands.Add(B), c = hands.Add(C);
+            var current = new List<Interactor> { C, A };
+            var gone = new List<int>();
+            while (hands.TakeGone(current, out int id)) gone.Add(id);
+            Assert.That(gone, Is.EqualTo(new[] { b }));
+            Assert.That(hands.IndexOfSource(A), Is.EqualTo(0), "the stayers keep their join order");
+            Assert.That(hands.IdAt(1), Is.EqualTo(c));
+            while (hands.TakeGone(new List<Interactor>(), out int id)) gone.Add(id);
+            Assert.That(gone, Is.EqualTo(new[] { b, a, c }));
+            Assert.That(hands.Count, Is.Zero);
+            Assert.That(hands.TakeGone(null, out _), Is.False);
+        }
+
+        [Test]
+        public void TheCancelSnapshotIsACopyThatOutlivesTheLeaving()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            hands.Add(4, A);
+            hands.Add(5, B);
+            int[] buffer = new int[1];
+            int n = hands.CopyIds(ref buffer);
+            hands.Clear();
+            Assert.That(n, Is.EqualTo(2));
+            Assert.That(new[] { buffer[0], buffer[1] }, Is.EqualTo(new[] { 4, 5 }));
+            Assert.That(hands.Count, Is.Zero);
+        }
+
+        [Test]
+        public void LookupsResyncsAndSnapshotsAllocateNothing()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            var current = new List<Interactor> { A, B };
+            IReadOnlyList<Interactor> view = current;
+            int[] buffer = new int[4];
+            Allocation.AssertNone(count =>
+            {
+                for (int i = 0; i < count; i++)
+                {
+                    hands.Add(i % 2 == 0 ? A : B); // present after the first: keeps its id
+                    hands.TakeGone(view, out _);
+                    hands.CopyIds(ref buffer);
+                    hands.IndexOfSource(B);
+                }
+            }, "resyncs");
+        }
+
+        [Test]
+        public void TheClockGivesTheTimeSinceTheLastCallAndZeroForASecondCallInAFrame()
+        {
+            var clock = new FrameClock();
+            Assert.That(clock.Delta(5.0), Is.Zero, "before a start");
+            clock.Start(10.0);
+            Assert.That(clock.Delta(10.0), Is.Zero, "the grab's own frame");
+            Assert.That(clock.Delta(10.0 + 1.0 / 90), Is.EqualTo(1f / 90).Within(1e-6f));
+            Assert.That(clock.Delta(10.0 + 1.0 / 90), Is.Zero, "called twice in a frame");
+            Assert.That(clock.Delta(9.0), Is.Zero, "time never runs backwards here");
+            Assert.That(clock.Delta(9.5), Is.EqualTo(0.5f).Within(1e-6f), "and goes on from where it was given");
+            Assert.That(clock.Delta(double.NaN), Is.Zero);
+            Assert.That(float.IsFinite(clock.Delta(11.0)), Is.True);
+        }
+
+        [Test]
+        public void ANonPositiveCapacityIsRefusedNamingIt()
+        {
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new GrabbingHands<Interactor>(0));
+            Assert.That(e.ParamName, Is.EqualTo("capacity"));
+        }
+    }
+}
