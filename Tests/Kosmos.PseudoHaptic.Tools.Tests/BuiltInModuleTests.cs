@@ -25,6 +25,7 @@ public class BuiltInModuleTests
         ("com.unity.xr.management", "4.4.0"),
         ("com.unity.xr.oculus", "4.2.0"),
         ("com.unity.xr.hands", "1.5.0"), // the second hand source (Runtime/XRHands); needs OpenXR to report hands
+        ("com.unity.xr.interaction.toolkit", "2.5.4"), // the XRI grab transformer (Runtime/XRI), the version Unity 2022.3 releases
     };
 
     /// <summary>
@@ -53,7 +54,7 @@ public class BuiltInModuleTests
         ("uielements", "UnityEngine.UIElements: Core Editor/Utils/StatusMenu/StatusIcon.cs, XR Management Runtime/XRManagerSettings.cs"),
         ("unitywebrequest", "UnityWebRequest: Core Editor/OVRPlatformTool.cs, Editor/BuildingBlocks/BlocksContentManager.cs"),
         ("vr", "XRSettings, XRDevice: Core Scripts/OVRCommon.cs, Scripts/OVROverlayCanvas.cs; XRStats: com.unity.xr.oculus Runtime/OculusPerformance.cs"),
-        ("xr", "InputTracking, XRNode: Core Scripts/OVRCommon.cs; XRDisplaySubsystem: com.unity.xr.oculus Runtime/OculusLoader.cs"),
+        ("xr", "InputTracking, XRNode: Core Scripts/OVRCommon.cs; XRDisplaySubsystem: com.unity.xr.oculus Runtime/OculusLoader.cs; InputTrackingState: com.unity.xr.interaction.toolkit 2.5.4 Runtime/Interaction/Controllers/XRBaseController.cs"),
     };
 
     /// <summary>
@@ -165,6 +166,7 @@ public class BuiltInModuleTests
         ("Unity.XR.Management.Editor", "com.unity.xr.management 4.4.0: Editor/Unity.XR.Management.Editor.asmdef"),
         ("Unity.XR.Oculus", "com.unity.xr.oculus 4.2.0: Runtime/Unity.XR.Oculus.asmdef"),
         ("Unity.XR.Hands", "com.unity.xr.hands 1.5.0: Runtime/Unity.XR.Hands.asmdef"),
+        ("Unity.XR.Interaction.Toolkit", "com.unity.xr.interaction.toolkit 2.5.4: Runtime/Unity.XR.Interaction.Toolkit.asmdef"),
         ("Unity.XR.CoreUtils", "com.unity.xr.core-utils 2.2.0 (com.unity.xr.hands 1.5.0 depends on it; its Runtime/Unity.XR.Hands.asmdef references it): Runtime/Unity.XR.CoreUtils.asmdef"),
         ("UnityEngine.TestRunner", "com.unity.test-framework 1.1.33: UnityEngine.TestRunner/UnityEngine.TestRunner.asmdef"),
         ("UnityEditor.TestRunner", "com.unity.test-framework 1.1.33: UnityEditor.TestRunner/UnityEditor.TestRunner.asmdef"),

@@ -32,12 +32,46 @@ public class PerAsmdefCompileTests
         string[] runtime =
         {
             "Kosmos.PseudoHaptic", "Kosmos.PseudoHaptic.Core", "Kosmos.PseudoHaptic.Evaluation", "Kosmos.PseudoHaptic.Interaction",
-            "Kosmos.PseudoHaptic.Logic", "Kosmos.PseudoHaptic.Meta", "Kosmos.PseudoHaptic.XRHands", "Assembly-CSharp",
+            "Kosmos.PseudoHaptic.Logic", "Kosmos.PseudoHaptic.Meta", "Kosmos.PseudoHaptic.XRHands", "Kosmos.PseudoHaptic.XRI", "Assembly-CSharp",
         };
         Assert.That(Editor.Value.Compiled.Keys, Is.EquivalentTo(runtime.Concat(new[] { "Kosmos.PseudoHaptic.Editor", "Kosmos.PseudoHaptic.Tests.Editor", "Kosmos.PseudoHaptic.Tests.Runtime" })));
         Assert.That(Editor.Value.LeftOut, Is.Empty);
         Assert.That(Player.Value.Compiled.Keys, Is.EquivalentTo(runtime));
         Assert.That(Player.Value.LeftOut.Keys, Is.EquivalentTo(new[] { "Kosmos.PseudoHaptic.Editor", "Kosmos.PseudoHaptic.Tests.Editor", "Kosmos.PseudoHaptic.Tests.Runtime" }));
+    }
+
+    /// <summary>
+    /// Issue 34: the XR Interaction Toolkit assembly compiles when XRI 2.5.4 is in the manifest (above), and without XRI, or
+    /// with XRI 3.x (whose types moved namespaces), it is left out while everything else, the editor's sample builder
+    /// included, compiles without a warning.
+    /// </summary>
+    [TestCase(null, TestName = "Without XRI in the manifest the XRI assembly is left out and the rest compiles")]
+    [TestCase("3.0.8", TestName = "With XRI 3.0.8 the XRI assembly is left out and the rest compiles")]
+    [TestCase("2.6.5", TestName = "With XRI 2.6.5 the XRI assembly compiles")]
+    public void TheXriAssemblyCompilesOnlyWithXri2(string? version)
+    {
+        UnityProject project = Project.WithPackage("com.unity.xr.interaction.toolkit", version);
+        foreach (UnityTarget target in new[] { UnityTarget.EditorAndroid, UnityTarget.PlayerAndroid })
+        {
+            BuildResult r = UnityCompilation.Build(project, target);
+            Assert.That(r.Problems(DiagnosticSeverity.Warning), Is.Empty, target + ":\n" + Report(r));
+            Assert.That(r.Warnings, Is.Empty);
+            if (version != null && version.StartsWith("2."))
+                Assert.That(r.Compiled.Keys, Does.Contain("Kosmos.PseudoHaptic.XRI"), target.ToString());
+            else
+            {
+                Assert.That(r.LeftOut.Keys, Does.Contain("Kosmos.PseudoHaptic.XRI"), target.ToString());
+                Assert.That(r.Compiled.Keys, Does.Contain("Kosmos.PseudoHaptic").And.Contain("Assembly-CSharp"), target.ToString());
+            }
+        }
+    }
+
+    [Test]
+    public void TheXriAssemblyNeedsItsXriReference()
+    {
+        BuildResult r = UnityCompilation.Build(Project, UnityTarget.EditorAndroid,
+            a => a.Name == "Kosmos.PseudoHaptic.XRI" ? a with { References = a.References.Where(x => x != "Unity.XR.Interaction.Toolkit").ToList() } : a);
+        Assert.That(r.Compiled["Kosmos.PseudoHaptic.XRI"].Where(d => d.Severity == DiagnosticSeverity.Error).Select(d => d.Id), Does.Contain("CS0246"), "XRGrabInteractable is not found");
     }
 
     [Test]

@@ -22,8 +22,9 @@ public sealed class UnityProject
     {
         ["com.meta.xr.sdk.interaction"] = "68.0.0",  // com.meta.xr.sdk.interaction.ovr 68.0.0 depends on it
         ["com.unity.xr.core-utils"] = "2.2.0",       // com.unity.xr.hands 1.5.0
-        ["com.unity.inputsystem"] = "1.3.0",         // com.unity.xr.hands 1.5.0
-        ["com.unity.mathematics"] = "1.2.6",         // com.unity.xr.hands 1.5.0
+        ["com.unity.inputsystem"] = "1.3.0",         // com.unity.xr.hands 1.5.0 (XRI 2.5.4 asks for 1.7.0)
+        ["com.unity.mathematics"] = "1.2.6",         // com.unity.xr.hands 1.5.0, com.unity.xr.interaction.toolkit 2.5.4
+        ["com.unity.xr.legacyinputhelpers"] = "2.1.10", // com.unity.xr.interaction.toolkit 2.5.4
         ["com.unity.ext.nunit"] = "1.0.6",           // com.unity.test-framework 1.1.33
     };
 
@@ -51,6 +52,26 @@ public sealed class UnityProject
         }
         versions["Unity"] = UnityVersion;
         PackageVersions = versions;
+    }
+
+    UnityProject(UnityProject other, IReadOnlyDictionary<string, string> versions)
+    {
+        Root = other.Root;
+        UnityVersion = other.UnityVersion;
+        Testables = other.Testables;
+        PackageVersions = versions;
+    }
+
+    /// <summary>
+    /// This project with package <paramref name="name"/> at <paramref name="version"/>, or without it when null: what Unity
+    /// would compile in a project whose manifest says so (an optional package installed, removed, or at another version).
+    /// </summary>
+    public UnityProject WithPackage(string name, string? version)
+    {
+        var versions = new Dictionary<string, string>(PackageVersions);
+        if (version == null) versions.Remove(name);
+        else versions[name] = version;
+        return new UnityProject(this, versions);
     }
 
     /// <summary>Every asmdef of the embedded package (Unity ignores folders ending in ~ and hidden ones).</summary>
