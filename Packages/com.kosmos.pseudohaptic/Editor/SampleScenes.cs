@@ -94,7 +94,7 @@ namespace Kosmos.PseudoHaptic.Editor
         }
 
         /// <summary>"paper-experiment" with Two Hands switched on (each hand carries half), saved as Experiment-TwoHands.</summary>
-        static PseudoHapticProfile TwoHandedExperimentProfile()
+        internal static PseudoHapticProfile TwoHandedExperimentProfile()
         {
             PseudoHapticProfile profile = Profile("Experiment-TwoHands", NamedProfiles.PaperExperimentName);
             SampleContent.LiftWithBothHands(profile);
@@ -137,7 +137,7 @@ namespace Kosmos.PseudoHaptic.Editor
             return true;
         }
 
-        static void Save(Scene scene, string name)
+        internal static void Save(Scene scene, string name)
         {
             EnsureFolder(Folder);
             string path = Folder + "/" + name + ".unity";
