@@ -11,4 +11,3 @@ using System.Runtime.CompilerServices;
 [assembly: InternalsVisibleTo("Unity.XR.Management")]
 [assembly: InternalsVisibleTo("Unity.XR.Management.Editor")]
 [assembly: InternalsVisibleTo("Oculus.VR.Editor")]
-[assembly: InternalsVisibleTo("Unity.XR.Interaction.Toolkit")]
