@@ -228,19 +228,34 @@ namespace Kosmos.PseudoHaptic.Samples
             return objects;
         }
 
+        static System.Func<int> s_ovrHands;
+
+        /// <summary>
+        /// Called by the Meta assembly (<c>Kosmos.PseudoHaptic.Meta.OvrRigHands</c>, when the Meta XR Core SDK is installed)
+        /// as play mode starts: <paramref name="addPoseSources"/> gives every enabled <c>OVRHand</c> that no pose source reads
+        /// an <c>OvrHandPoseSource</c> and returns how many <c>OVRHand</c>s it found. Null: none (Meta's hands are not looked for).
+        /// </summary>
+        public static void RegisterOvrHands(System.Func<int> addPoseSources) => s_ovrHands = addPoseSources;
+
         /// <summary>
         /// The scene's pinch hands (every enabled <see cref="IPinchHandPoseSource"/>), each given a <see cref="PinchGrab"/>
-        /// if it has none. For setup scripts dropped into a scene that already has a rig; not for per-frame use.
+        /// if it has none, after Meta's stock rig (an <c>OVRCameraRig</c> with an <c>OVRHandPrefab</c> per hand anchor) got
+        /// a pose source on each <c>OVRHand</c>. When it finds none, logs one warning naming what is missing
+        /// (<see cref="RigHands.MissingHandsWarning"/>). For setup scripts dropped into a scene that already has a rig;
+        /// not for per-frame use.
         /// </summary>
-        public static List<IPinchHandPoseSource> HandsInScene()
+        public static List<IPinchHandPoseSource> HandsInScene(string sample = null, Object context = null)
         {
+            int ovrHands = s_ovrHands != null ? s_ovrHands() : 0;
             var hands = new List<IPinchHandPoseSource>();
-            foreach (MonoBehaviour b in Object.FindObjectsByType<MonoBehaviour>(FindObjectsSortMode.None))
+            foreach (MonoBehaviour b in Object.FindObjectsByType<MonoBehaviour>(FindObjectsSortMode.InstanceID))
             {
-                if (!(b is IPinchHandPoseSource hand)) continue;
+                if (!(b is IPinchHandPoseSource hand) || !b.enabled) continue; // enabled, not isActiveAndEnabled: a source not yet awake still counts
                 hands.Add(hand);
                 if (b.GetComponent<PinchGrab>() == null) b.gameObject.AddComponent<PinchGrab>().InjectHand(hand);
             }
+            string warning = RigHands.MissingHandsWarning(sample, hands.Count, s_ovrHands != null, ovrHands);
+            if (warning != null) Debug.LogWarning(warning, context);
             return hands;
         }
 
