@@ -86,8 +86,8 @@ public class UnityPackageCliTests : CliTestFolder
         foreach (var meta in names.Where(n => n.EndsWith(".meta", StringComparison.Ordinal)))
             Assert.That(set.Contains(meta[..^5]) || folders.Contains(meta[..^5]), Is.True, "orphaned " + meta);
 
-        // What ships: the files git tracks in the package folder, none other (no build output, nothing hidden).
-        var tracked = Git("ls-files", "-z", "--", "Packages/com.kosmos.pseudohaptic");
+        // What ships: the files git tracks or would track (not ignored) in the package folder, none other (no build output, nothing hidden).
+        var tracked = Git("ls-files", "-z", "--cached", "--others", "--exclude-standard", "--", "Packages/com.kosmos.pseudohaptic");
         if (tracked != null)
         {
             var expected = tracked.Split('\0', StringSplitOptions.RemoveEmptyEntries)

@@ -104,6 +104,24 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheExperiment1SampleBuildsPaperExperiment1()
+        {
+            StockOvrRig.Build();
+            new GameObject("Experiment 1").AddComponent<Experiment1Setup>();
+            Assert.That(PseudoHapticWeight.Enabled.Select(w => w.name), Is.EqualTo(PaperExperiment1.BoxNames.Select(n => "Box " + n)));
+            for (int i = 0; i < PseudoHapticWeight.Enabled.Count; i++)
+            {
+                PseudoHapticWeight w = PseudoHapticWeight.Enabled[i];
+                Assert.That(w.Configure(), Is.True, w.ConfigurationError);
+                Assert.That(w.GetComponent<BoxCollider>().size, Is.EqualTo(Vector3.one * (float)PaperExperiment1.BoxEdge));
+                Assert.That(w.GetComponent<Rigidbody>().mass, Is.EqualTo(PaperExperiment1.Mass(PaperExperiment1.BoxDensities[i])).Within(1e-4), "density × the collider's volume, kg");
+                Assert.That(w.Profile.name, Is.EqualTo(PaperExperiment1.ProfileName));
+                Assert.That(w.Profile.IsEnabled(new TwoHands().Name), Is.True);
+                Assert.That(w.Profile.IsEnabled(new OffsetCorrection().Name), Is.False);
+            }
+        }
+
+        [Test]
         public void AHandTheRigBuilderAlreadyGaveASourceGetsNoSecond()
         {
             var (rig, left, right) = StockOvrRig.Build();

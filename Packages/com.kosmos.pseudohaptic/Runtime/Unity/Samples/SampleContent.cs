@@ -13,11 +13,11 @@ namespace Kosmos.PseudoHaptic.Samples
     {
         public const float TableHeight = 0.75f;
 
-        /// <summary>Densities of Experiment 1's boxes, kg/m³: same size, B heaviest. The paper gives no values; these are wood-like.</summary>
-        public const float BoxADensity = 300f, BoxBDensity = 800f, BoxCDensity = 500f;
+        /// <summary>Densities of Experiment 1's boxes, kg/m³: same size, B heaviest (<see cref="PaperExperiment1"/>, the one definition).</summary>
+        public const float BoxADensity = (float)PaperExperiment1.BoxADensity, BoxBDensity = (float)PaperExperiment1.BoxBDensity, BoxCDensity = (float)PaperExperiment1.BoxCDensity;
 
-        /// <summary>Edge of Experiment 1's boxes, m.</summary>
-        public const float BoxSize = 0.15f;
+        /// <summary>Edge of Experiment 1's boxes, m (<see cref="PaperExperiment1.BoxEdge"/>).</summary>
+        public const float BoxSize = (float)PaperExperiment1.BoxEdge;
 
         /// <summary>Experiment 2's water bottles, litres.</summary>
         public static readonly float[] BottleLitres = { 0.33f, 0.5f, 1.0f, 1.5f, 2.0f };
@@ -159,10 +159,13 @@ namespace Kosmos.PseudoHaptic.Samples
             if (profile != null) profile.SetEnabled<TwoHands>(true);
         }
 
-        /// <summary>Experiment 1 (paper §4.1): boxes A, B, C of one size and different densities, B heaviest, lifted with both hands.</summary>
+        /// <summary>
+        /// Experiment 1 (paper §6, <see cref="PaperExperiment1"/>): boxes A, B, C of one size and different densities, B
+        /// heaviest, mass = density × the box collider's volume, under <paramref name="profile"/> (the samples give it the
+        /// experiment's, "paper-experiment", whose Two Hands shares the weight when both hands lift).
+        /// </summary>
         public static List<PseudoHapticWeight> Experiment1(Transform root, PseudoHapticProfile profile)
         {
-            LiftWithBothHands(profile);
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.0f, 0.5f));
             var size = Vector3.one * BoxSize;
             return new List<PseudoHapticWeight>
