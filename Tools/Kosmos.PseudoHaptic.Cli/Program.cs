@@ -33,6 +33,7 @@ namespace Kosmos.PseudoHaptic.Cli
             PsychometricCommand.Define(),
             CompareCommand.Define(),
             CompletionCommand.Define(),
+            Commands.UnityPackageCommand.Define(),
         };
 
         public static int Run(string[] args)

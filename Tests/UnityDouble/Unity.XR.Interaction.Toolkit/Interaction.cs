@@ -41,6 +41,7 @@ namespace UnityEngine.XR.Interaction.Toolkit
         protected virtual void Update() => ProcessInteractables(XRInteractionUpdateOrder.UpdatePhase.Dynamic);
         protected virtual void LateUpdate() => ProcessInteractables(XRInteractionUpdateOrder.UpdatePhase.Late);
         protected virtual void FixedUpdate() => ProcessInteractables(XRInteractionUpdateOrder.UpdatePhase.Fixed);
+        [BeforeRenderOrder(XRInteractionUpdateOrder.k_BeforeRenderOrder)]
         protected virtual void OnBeforeRender() => ProcessInteractables(XRInteractionUpdateOrder.UpdatePhase.OnBeforeRender);
 
         protected virtual void ProcessInteractables(XRInteractionUpdateOrder.UpdatePhase updatePhase)
