@@ -37,7 +37,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         public static void WriteAllText(string path, string text)
         {
-            WriteWith(path, temp =>
+            Write(path, synced: true, write: temp =>
             {
                 using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 4096))
                 {
@@ -52,7 +52,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// Lets <paramref name="write"/> create the temporary file (any content), syncs it, renames it to
         /// <paramref name="path"/> and syncs the folder.
         /// </summary>
-        public static void WriteWith(string path, Action<string> write)
+        public static void WriteWith(string path, Action<string> write) => Write(path, false, write);
+
+        /// <summary>As <see cref="WriteWith(string, Action{string})"/>; <paramref name="synced"/>: <paramref name="write"/> syncs the temporary file itself (<see cref="FileStream.Flush(bool)"/> before closing it), so it is not synced again.</summary>
+        public static void Write(string path, bool synced, Action<string> write)
         {
             if (string.IsNullOrEmpty(path)) throw new ArgumentException("empty path", nameof(path));
             if (write == null) throw new ArgumentNullException(nameof(write));
@@ -65,7 +68,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             try
             {
                 write(temp);
-                if (Durable) SyncFile(temp);
+                if (Durable && !synced) SyncFile(temp);
                 Rename(temp, full);
                 renamed = true;
                 if (Durable) SyncDirectory(directory);

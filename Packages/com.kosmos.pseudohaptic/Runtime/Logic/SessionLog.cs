@@ -186,7 +186,7 @@ namespace Kosmos.PseudoHaptic
         {
             AtomicFile.CreateDirectory(hold.Folder);
             HoldRecording recording = hold.Recording;
-            AtomicFile.WriteWith(hold.File, temp =>
+            AtomicFile.Write(hold.File, synced: true, write: temp =>
             {
                 using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 65536))
                 {
