@@ -15,7 +15,8 @@ namespace Kosmos.PseudoHaptic.Tools.Tests;
 /// <item>the order of system calls under strace: each acknowledged answer's temporary file fsynced before its rename,
 /// the folder fsynced after it, both before the acknowledgement;</item>
 /// <item>SIGKILL at seeded random instants (20 here; PSEUDOHAPTIC_KILLS=1000 for the long run): the files always parse,
-/// the next child resumes where the last stopped, every acknowledged answer is in its file exactly once;</item>
+/// the next child resumes where the last stopped, every acknowledged answer is in its file exactly once, the temporary
+/// files a kill left are removed when the next session begins, and none is left once a final, unkilled resume has finished;</item>
 /// <item>a full disk and a read-only folder (tmpfs mounts, as root): the answer is kept and the error said, no
 /// temporary file is left, and the answer is written once when the disk has room again.</item>
 /// </list>
@@ -113,29 +114,22 @@ public class DurabilityTests
         var catalog = CatalogOfTheChild();
         string trials = Path.Combine(_dir, "trials.csv"), responses = Path.Combine(_dir, "responses.csv");
         var acked = new List<string>();          // "trials.csv|row" or "responses.csv|row"
-        int participant = 1, midSession = 0, finished = 0;
+        int participant = 1, midSession = 0, finished = 0, leftByKills = 0;
         var watch = Stopwatch.StartNew();
         for (int kill = 0; kill < kills; kill++)
         {
             string id = "P" + participant.ToString(CultureInfo.InvariantCulture);
             int ackedTrials = acked.Count(a => a.StartsWith("trials.csv|" + id + ",", StringComparison.Ordinal));
             int ackedItems = acked.Count(a => a.StartsWith("responses.csv|" + id + ",", StringComparison.Ordinal));
-            var lines = new List<string>();
-            using var ready = new ManualResetEventSlim(false);
-            var info = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
-            foreach (string a in new[] { ChildDll, "participant", _dir, id, "7", "8" }) info.ArgumentList.Add(a);
-            using var p = new Process { StartInfo = info };
-            p.OutputDataReceived += (_, e) =>
-            {
-                if (e.Data == null) return;
-                lock (lines) lines.Add(e.Data);
-                if (e.Data.StartsWith("ready ", StringComparison.Ordinal)) ready.Set();
-            };
-            p.Start();
-            p.BeginOutputReadLine();
-            var stderr = p.StandardError.ReadToEndAsync();
-            bool started = ready.Wait(60_000) || p.HasExited;
+            // What the last kill left half-written: the session removes it when it resumes (or starts) in the folder.
+            string[] stale = StaleTemporaries();
+            leftByKills += stale.Length;
+            using var child = new Child(_dir, id);
+            var (p, lines, stderr) = (child.Process, child.Lines, child.Stderr);
+            bool started = child.Ready.Wait(60_000) || p.HasExited;
             Assert.That(started, Is.True, "kill " + kill + ": the child did not start");
+            if (!p.HasExited)
+                Assert.That(stale.Where(File.Exists), Is.Empty, "kill " + kill + ": the temporary files the last kill left are removed once the session has begun");
             // A seeded instant, mostly within the session (its 40 answers take some 100-300 ms here), some beyond it.
             Thread.Sleep(rng.Next(0, 150));
             try { p.Kill(); } catch (InvalidOperationException) { } // SIGKILL on Unix; it may have finished
@@ -167,12 +161,66 @@ public class DurabilityTests
             var trialKeys = trialsText.Split('\n').Skip(1).Where(r => r.Length > 0).Select(r => string.Join(",", r.Split(',').Take(3)));
             Assert.That(trialKeys, Is.Unique, "kill " + kill + ": a trial answered twice");
         }
-        int litter = Directory.GetFiles(_dir, ".ph*.tmp").Length;
+        // The final resume, not killed: it finishes its participant, and nothing half-written is left in the folder.
+        int beforeFinal = StaleTemporaries().Length;
+        leftByKills += beforeFinal;
+        string lastId = "P" + participant.ToString(CultureInfo.InvariantCulture);
+        using (var final = new Child(_dir, lastId))
+        {
+            Assert.That(final.Process.WaitForExit(120_000), Is.True, "the final resume hung");
+            final.Process.WaitForExit(); // its standard output read to the end
+            string[] got;
+            lock (final.Lines) got = final.Lines.ToArray();
+            Assert.That(final.Process.ExitCode, Is.Zero, final.Stderr.Result);
+            Assert.That(got, Does.Contain("done"), "the final resume finished " + lastId);
+        }
+        string[] left = Directory.GetFiles(_dir, ".ph*.tmp").Select(Path.GetFileName).ToArray()!;
+        string trialsAfter = File.ReadAllText(trials), responsesAfter = File.ReadAllText(responses);
+        foreach (string a in acked)
+            Assert.That((a.StartsWith("trials.csv|", StringComparison.Ordinal) ? trialsAfter : responsesAfter).Split('\n').Count(r => r == a[(a.IndexOf('|') + 1)..]),
+                Is.EqualTo(1), "after the final resume: acknowledged " + a);
         TestContext.Progress.WriteLine(string.Format(CultureInfo.InvariantCulture,
-            "kill test (seed {0}): {1} kills in {2:F0} s, {3} mid-session and {4} after a finished session; {5} acknowledged answers of {6} participants, each in its file exactly once; {7} temporary files left by kills",
-            seed, kills, watch.Elapsed.TotalSeconds, midSession, finished, acked.Count, participant, litter));
+            "kill test (seed {0}): {1} kills in {2:F0} s, {3} mid-session and {4} after a finished session; {5} acknowledged answers of {6} participants, each in its file exactly once; {7} temporary files left by kills, each removed when the next session began; {8} left after the final resume",
+            seed, kills, watch.Elapsed.TotalSeconds, midSession, finished, acked.Count, participant, leftByKills, left.Length));
+        Assert.That(left, Is.Empty, "no temporary file is left once the final resume has finished");
         Assert.That(midSession, Is.GreaterThanOrEqualTo(kills / 4), "kills must land inside sessions, or the test shows little");
         Assert.That(acked.Count, Is.GreaterThan(kills), "answers were acknowledged between kills");
+    }
+
+    /// <summary>AtomicFile's temporary files in the test's folder (exactly its pattern, as the session removes them).</summary>
+    string[] StaleTemporaries() => Directory.GetFiles(_dir, ".ph*.tmp").Where(f => AtomicFile.IsTemporaryName(Path.GetFileName(f))).ToArray();
+
+    /// <summary>A participant child answering into <c>dir</c>, its standard output collected line by line.</summary>
+    sealed class Child : IDisposable
+    {
+        public readonly Process Process;
+        public readonly List<string> Lines = new();
+        public readonly ManualResetEventSlim Ready = new(false);
+        public readonly Task<string> Stderr;
+
+        public Child(string dir, string id)
+        {
+            var info = new ProcessStartInfo("dotnet") { RedirectStandardOutput = true, RedirectStandardError = true, UseShellExecute = false };
+            foreach (string a in new[] { ChildDll, "participant", dir, id, "7", "8" }) info.ArgumentList.Add(a);
+            Process = new Process { StartInfo = info };
+            Process.OutputDataReceived += (_, e) =>
+            {
+                if (e.Data == null) return;
+                lock (Lines) Lines.Add(e.Data);
+                if (e.Data.StartsWith("ready ", StringComparison.Ordinal)) Ready.Set();
+            };
+            Process.Start();
+            Process.BeginOutputReadLine();
+            Stderr = Process.StandardError.ReadToEndAsync();
+        }
+
+        public void Dispose()
+        {
+            // (Ready is not disposed: the output reader may still set it while a killed child's pipe drains.)
+            try { if (!Process.HasExited) Process.Kill(); } catch (InvalidOperationException) { }
+            Process.WaitForExit(10_000);
+            Process.Dispose();
+        }
     }
 
     static QuestionnaireCatalog CatalogOfTheChild()

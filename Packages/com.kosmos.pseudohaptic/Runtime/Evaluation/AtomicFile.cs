@@ -1,4 +1,5 @@
 using System;
+using System.Collections.Generic;
 using System.IO;
 using System.Runtime.InteropServices;
 using System.Text;
@@ -23,6 +24,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// rename, so the destination is never empty or half-written after a power cut, but the rename itself may be
     /// lost: the old file comes back. <see cref="DirectorySync"/> says what this platform does; evaluation.md,
     /// "Session recording", says what survives what.
+    /// A kill or a power cut between the temporary file's creation and its rename leaves it behind; a study session
+    /// removes such leftovers from its folder when it starts or resumes (<see cref="RemoveStaleTemporaries"/>).
     /// </remarks>
     public static class AtomicFile
     {
@@ -31,7 +34,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Whether <see cref="WriteWith"/> syncs (default true). Off only for a measurement of what the sync costs.</summary>
         public static bool Durable { get; set; } = true;
 
-        /// <summary>A fresh temporary name in <paramref name="directory"/>: ".ph" + 8 hex digits + <paramref name="extension"/>.</summary>
+        /// <summary>The temporary names <see cref="Write"/> is using now (file names only), which <see cref="RemoveStaleTemporaries"/> leaves alone.</summary>
+        static readonly HashSet<string> InFlight = new HashSet<string>(StringComparer.Ordinal);
+
+        /// <summary>A fresh temporary name in <paramref name="directory"/>: ".ph" + 8 lowercase hex digits + <paramref name="extension"/>.</summary>
         public static string TemporaryPath(string directory, string extension = ".tmp")
             => Path.Combine(directory, ".ph" + Guid.NewGuid().ToString("N").Substring(0, 8) + extension);
 
@@ -63,8 +69,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (Directory.Exists(full)) throw new IOException(path + ": is a folder");
             string directory = Path.GetDirectoryName(full);
             if (string.IsNullOrEmpty(directory)) directory = ".";
-            string temp = TemporaryPath(directory);
+            string temp = TemporaryPath(directory), tempName = Path.GetFileName(temp);
             bool renamed = false;
+            // Registered before the file exists, so a cleanup that sees the file also sees that it is in use.
+            lock (InFlight) InFlight.Add(tempName);
             try
             {
                 write(temp);
@@ -79,6 +87,70 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     try { if (File.Exists(temp)) File.Delete(temp); } catch (IOException) { } catch (UnauthorizedAccessException) { }
                 throw;
             }
+            finally
+            {
+                lock (InFlight) InFlight.Remove(tempName);
+            }
+        }
+
+        /// <summary>
+        /// Whether <paramref name="fileName"/> (a name, not a path) is exactly the name of this writer's temporary
+        /// files: ".ph" + 8 lowercase hex digits + ".tmp" (".ph3f9a01c2.tmp"). Other extensions (the CLI's
+        /// ".ph3f9a01c2.csv"), upper-case or fewer or more digits, and other names are not.
+        /// </summary>
+        public static bool IsTemporaryName(string fileName)
+        {
+            if (fileName == null || fileName.Length != 15) return false;
+            if (!fileName.StartsWith(".ph", StringComparison.Ordinal) || !fileName.EndsWith(".tmp", StringComparison.Ordinal)) return false;
+            for (int i = 3; i < 11; i++)
+            {
+                char c = fileName[i];
+                if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
+            }
+            return true;
+        }
+
+        /// <summary>
+        /// Removes from <paramref name="directory"/> (not its subfolders) the files left by writes that a kill or a power
+        /// cut stopped before their rename: files, not folders, whose name is exactly a temporary one
+        /// (<see cref="IsTemporaryName"/>), except those a write in this process is using now. A study session calls it
+        /// on its own folder when it starts or resumes (one writer per folder: another app writing into the same
+        /// folder at the same time is not supported, its temporary file could be removed under it). Best effort: a
+        /// missing or unreadable folder, or a file that cannot be deleted, is left as it is, never an error (the
+        /// session's own write reports a folder it cannot write). Returns how many files were removed.
+        /// </summary>
+        public static int RemoveStaleTemporaries(string directory)
+        {
+            if (string.IsNullOrEmpty(directory)) return 0;
+            int removed = 0;
+            try
+            {
+                string full = Path.GetFullPath(directory);
+                if (!Directory.Exists(full)) return 0;
+                foreach (string file in Directory.GetFiles(full, ".ph*"))
+                {
+                    string name = Path.GetFileName(file);
+                    if (!IsTemporaryName(name)) continue;
+                    lock (InFlight)
+                    {
+                        // Checked and deleted under the lock: a write registers its name before creating the file.
+                        if (InFlight.Contains(name)) continue;
+                        try
+                        {
+                            if (!File.Exists(file)) continue; // a folder of that name, or gone meanwhile
+                            File.Delete(file);
+                            removed++;
+                        }
+                        catch (IOException) { }
+                        catch (UnauthorizedAccessException) { }
+                    }
+                }
+            }
+            catch (IOException) { }
+            catch (UnauthorizedAccessException) { }
+            catch (ArgumentException) { }
+            catch (NotSupportedException) { }
+            return removed;
         }
 
         /// <summary>Syncs an existing file's data and size to the device (<c>fsync</c>); throws <see cref="IOException"/> when the device refuses.</summary>

@@ -12,7 +12,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// answer is written to the responses file at once, in the format <c>pseudohaptic score</c> reads
     /// (<see cref="ResponsesCsv"/>), through write-then-rename (<see cref="AtomicFile"/>): the file on disk is
     /// always complete, so a crash loses at most the answer being given, and a new session for the same
-    /// participant and file resumes at the first item not yet answered. A changed answer replaces the
+    /// participant and file resumes at the first item not yet answered (first removing from the file's folder the
+    /// temporary files a kill or a power cut left: <see cref="AtomicFile.RemoveStaleTemporaries"/>, one writer per
+    /// folder). A changed answer replaces the
     /// participant's earlier row for that item, so the file never holds a duplicate (which score refuses).
     /// </summary>
     /// <remarks>
@@ -53,6 +55,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         /// <summary>Answers of this session that were already in the file when it began.</summary>
         public int ResumedCount { get; }
+        /// <summary>Leftover temporary files of this writer (<see cref="AtomicFile.RemoveStaleTemporaries"/>) removed from the responses file's folder when the session began.</summary>
+        public int RemovedTemporaries { get; }
 
         /// <summary>Every item answered.</summary>
         public bool IsComplete => AnsweredCount == StepCount;
@@ -139,6 +143,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
             for (int s = 0; s < steps; s++) rowOfStep[s] = -1;
 
             header = ResponsesCsv.Header;
+            // The session starts or resumes in this folder: temporary files of writes a kill or power cut stopped go.
+            RemovedTemporaries = AtomicFile.RemoveStaleTemporaries(Path.GetDirectoryName(Path.GetFullPath(responsesPath)));
             if (File.Exists(responsesPath))
             {
                 string text = File.ReadAllText(responsesPath, Encoding.UTF8);

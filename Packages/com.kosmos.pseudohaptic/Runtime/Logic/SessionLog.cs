@@ -14,7 +14,8 @@ namespace Kosmos.PseudoHaptic
     /// (two ready, for two hands; reused), and is written when the hold ends as one CSV in the replay trace format,
     /// <c>&lt;folder&gt;/&lt;session&gt;/hold-001-&lt;object&gt;.csv</c>, with an index <c>holds.csv</c> naming each
     /// hold's object, mass and profile. Files are written durably to a temporary name and renamed (<see cref="AtomicFile"/>)
-    /// by one writer (<see cref="Saver"/>, in order; on a background thread in the headset), and a hold counts as saved
+    /// by one writer (<see cref="Saver"/>, in order; on a background thread in the headset; the first write into a session
+    /// folder removes the temporary files a kill or a power cut left there), and a hold counts as saved
     /// (<see cref="HoldWritten"/>, its index row) only when its write returned, delivered on the main thread by
     /// <see cref="Pump"/>; a failed write is kept and tried again (<see cref="LastError"/> says so meanwhile), its buffer
     /// not reused until it is saved. <see cref="FlushActive"/> writes running holds as far as they got. Recording a frame
@@ -41,6 +42,8 @@ namespace Kosmos.PseudoHaptic
         StringBuilder _index = new StringBuilder();
         readonly int _capacity;
         string _folder = "", _sessionId = "", _sessionFolder;
+        readonly object _openedLock = new object();
+        string _openedFolder; // the session folder the writer last opened (and cleaned)
 
         /// <param name="saver">Writes the files; default one writing on the caller's thread (inside <see cref="Ended"/> and <see cref="Pump"/>). The headset passes a background one.</param>
         public SessionLog(int framesPerHold = HoldRecording.DefaultCapacity, SaveQueue saver = null)
@@ -84,6 +87,8 @@ namespace Kosmos.PseudoHaptic
         public int HoldCount { get; private set; }
         /// <summary>Objects being held and recorded now.</summary>
         public int ActiveCount => _active.Count;
+        /// <summary>Leftover temporary files removed from session folders when this log first wrote into each (read from the writer; exact once <see cref="Drain"/> returned).</summary>
+        public int RemovedTemporaries { get; private set; }
         /// <summary>The last write error, or null.</summary>
         public string LastError { get; private set; }
 
@@ -144,7 +149,7 @@ namespace Kosmos.PseudoHaptic
                 string file = hold.File, folder = hold.Folder, text = hold.Recording.ToCsv();
                 int number = hold.Number;
                 string objectName = hold.ObjectName;
-                Saver.Enqueue(() => { AtomicFile.CreateDirectory(folder); AtomicFile.WriteAllText(file, text); },
+                Saver.Enqueue(() => { OpenFolder(folder); AtomicFile.WriteAllText(file, text); },
                     () => Written(file), e => NotWritten(number, objectName, e));
             }
             Saver.Pump();
@@ -182,9 +187,25 @@ namespace Kosmos.PseudoHaptic
             hold.File = Path.Combine(hold.Folder, "hold-" + hold.Number.ToString("000", CultureInfo.InvariantCulture) + "-" + SafeName(hold.ObjectName) + ".csv");
         }
 
-        static void WriteHold(Hold hold)
+        /// <summary>
+        /// On the writer (the queue runs one write at a time): creates the session's folder, and the first time this log
+        /// writes into a folder, removes the temporary files that a kill or a power cut left there
+        /// (<see cref="AtomicFile.RemoveStaleTemporaries"/>: a session resumed under the same id).
+        /// </summary>
+        void OpenFolder(string folder)
         {
-            AtomicFile.CreateDirectory(hold.Folder);
+            AtomicFile.CreateDirectory(folder);
+            lock (_openedLock)
+            {
+                if (folder == _openedFolder) return;
+                RemovedTemporaries += AtomicFile.RemoveStaleTemporaries(folder);
+                _openedFolder = folder;
+            }
+        }
+
+        void WriteHold(Hold hold)
+        {
+            OpenFolder(hold.Folder);
             HoldRecording recording = hold.Recording;
             AtomicFile.Write(hold.File, synced: true, write: temp =>
             {

@@ -25,6 +25,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// is written at once to the trials file (<see cref="TrialsCsv"/>, the file <c>pseudohaptic psychometric</c>
     /// reads) through write-then-rename (<see cref="AtomicFile"/>), so the file on disk is always whole; a new
     /// session for the same participant, condition, plan and file resumes at the first trial not yet answered.
+    /// A new or resumed session first removes from the file's folder the temporary files that a kill or a power cut
+    /// left (<see cref="AtomicFile.RemoveStaleTemporaries"/>; one writer per folder).
     /// </summary>
     /// <remarks>
     /// Rows of other participants and conditions are kept verbatim. An existing file must be one
@@ -54,6 +56,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public int TrialCount => plan != null ? plan.Count : staircase.Trials.Count + (staircase.Finished ? 0 : 1);
         public int AnsweredCount { get; private set; }
         public int ResumedCount { get; }
+        /// <summary>Leftover temporary files of this writer (<see cref="AtomicFile.RemoveStaleTemporaries"/>) removed from the trials file's folder when the session began.</summary>
+        public int RemovedTemporaries { get; private set; }
         /// <summary>Index into <see cref="Plan"/> of the trial shown (with a staircase, the number of trials answered); <see cref="TrialCount"/> when finished.</summary>
         public int CurrentIndex { get; private set; }
         public bool IsFinished => plan != null ? CurrentIndex >= plan.Count : staircase.Finished;
@@ -129,6 +133,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         void LoadIfPresent()
         {
+            // The session starts or resumes in this folder: temporary files of writes a kill or power cut stopped go.
+            RemovedTemporaries = AtomicFile.RemoveStaleTemporaries(Path.GetDirectoryName(Path.GetFullPath(TrialsPath)));
             if (!File.Exists(TrialsPath)) return;
             string text = File.ReadAllText(TrialsPath, Encoding.UTF8);
             if (text.Trim().Trim('\uFEFF').Length > 0) Load(text);

@@ -82,6 +82,34 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ASessionResumedInItsFolderRemovesTheTemporaryFilesAKillLeftThereAndNothingElse()
+        {
+            // A recorder killed in a hold's write left its temporary file; the session is resumed under the same id.
+            string folder = Path.Combine(_folder, "P1");
+            Directory.CreateDirectory(folder);
+            File.WriteAllText(Path.Combine(folder, ".ph5eed5eed.tmp"), "t,hand_y,tr");
+            File.WriteAllText(Path.Combine(folder, "notes.tmp"), "the experimenter's");
+            File.WriteAllText(Path.Combine(folder, ".ph12345678.csv"), "not the recorder's");
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "box", 1);
+            Lift(box, 0.2, 0.6);
+            Assert.That(File.Exists(Path.Combine(folder, ".ph5eed5eed.tmp")), Is.True, "nothing is removed before the session writes into its folder");
+            box.Hold.End(1);
+            Assert.That(log.RemovedTemporaries, Is.EqualTo(1));
+            var names = new List<string>();
+            foreach (string f in Directory.GetFiles(folder)) names.Add(Path.GetFileName(f));
+            names.Sort(StringComparer.Ordinal);
+            Assert.That(names, Is.EqualTo(new[] { ".ph12345678.csv", "hold-001-box.csv", "holds.csv", "notes.tmp" }));
+
+            // Only the first write into the folder looks: a leftover appearing later waits for the next session.
+            File.WriteAllText(Path.Combine(folder, ".ph0000beef.tmp"), "");
+            Lift(box, 0.2, 0.6);
+            box.Hold.End(1);
+            Assert.That(log.RemovedTemporaries, Is.EqualTo(1));
+            Assert.That(File.Exists(Path.Combine(folder, ".ph0000beef.tmp")), Is.True);
+        }
+
+        [Test]
         public void TheRecordedHandReplaysToTheRecordedObject()
         {
             SessionLog log = Log();
