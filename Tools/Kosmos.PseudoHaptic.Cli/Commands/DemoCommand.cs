@@ -50,6 +50,7 @@ public static class DemoCommand
             throw new CliException($"{Messages.OneLine(tracePath!)}: fewer than two usable rows with increasing t");
 
         double standardSpeed = Calibrate();
+        double cueStrength = WeightSolver.DefaultCueStrength;
         var scenes = Scenes(recorded, tracePath);
         int total = scenes.Sum(s => s.Items.Count), done = 0;
         var results = new List<Result>();
@@ -66,9 +67,8 @@ public static class DemoCommand
                 foreach (var item in scene.Items)
                 {
                     Progress.Writer.WriteLine($"[{++done}/{total}] {scene.Title}: {item.Name}");
-                    var solver = new WeightSolver(WeightModel.FromMass(item.MassKg), scene.Profile, standardSpeed);
-                    var y = TraceReplay.Run(solver, scene.Frames);
-                    var result = Measure(scene, item, solver.Gain, y);
+                    var (gain, y) = RunItem(scene.Profile, item.MassKg, scene.Frames, standardSpeed, cueStrength);
+                    var result = Measure(scene, item, gain, y);
                     sceneResults.Add(result);
                     Temporaries.Guard(() => WriteCsv(Path.Combine(dir, Slug(item.Name) + ".csv"), scene.Frames, y));
                 }
@@ -82,6 +82,20 @@ public static class DemoCommand
         Console.WriteLine();
         Console.WriteLine($"demo: {results.Count + results3D.Count} objects lifted in {scenes.Count + 1} scenes (v_std = {NumberText.Fixed(standardSpeed, 3)} m/s) -> {Messages.OneLine(outDir)}");
         return 0;
+    }
+
+    /// <summary>One object through the scene's profile: the package's solver, or under <c>paper-literal</c> the paper as
+    /// printed (<see cref="PaperLiteralSolver"/>, run as the accuracy page's baseline is); the gain it applies and the heights.</summary>
+    static (double Gain, double[] Y) RunItem(WeightProfile profile, double massKg, TraceFrame[] frames, double standardSpeed, double cueStrength)
+    {
+        var model = WeightModel.FromMass(massKg);
+        if (NamedProfiles.IsPaperLiteral(profile))
+        {
+            double g = WeightSolver.StrengthenedGain(model.Gain(true, true, double.PositiveInfinity), cueStrength, double.PositiveInfinity);
+            return (g, Accuracy.IntegratorReplay.Run(new Accuracy.IntegratorReplay.PaperLiteral(massKg, cueStrength), frames));
+        }
+        var solver = new WeightSolver(model, profile, standardSpeed) { CueStrength = cueStrength };
+        return (solver.Gain, TraceReplay.Run(solver, frames));
     }
 
     /// <summary>Five golf-ball lifts of a simulated user (30 Hz poses, 1.5 mm jitter) through the core's calibration.</summary>
@@ -137,6 +151,7 @@ public static class DemoCommand
         var scenes = new List<Scene>
         {
             new("experiment-1-boxes", "Experiment 1: boxes A, B, C (paper-experiment)", NamedProfiles.PaperExperiment, boxes, liftAndPlace),
+            new("experiment-1-paper-literal", "Experiment 1: boxes A, B, C, the paper as printed (paper-literal)", NamedProfiles.PaperLiteral, boxes, liftAndPlace),
             new("experiment-2-bottles", "Experiment 2: water bottles (paper-experiment)", NamedProfiles.PaperExperiment, bottles, liftAndPlace),
             new("offset-correction", "A high lift with the offset correction (paper)", NamedProfiles.Paper,
                 new List<Item> { boxes[0], boxes[2], new("box D", 5, "625 kg/m³") }, highLift),

@@ -35,7 +35,7 @@ public static class ReplayCommand
     {
         string trace = o.Require("--trace");
         string output = o.Require("--out");
-        var solver = CreateSolver3D(o, out bool breakAway);
+        var solver = CreateReplayed(o, out bool breakAway);
         double grabOffset = GrabOffset(o);
         var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace));
 
@@ -57,6 +57,20 @@ public static class ReplayCommand
     {
         var (model, profile, speed) = Parse(o);
         return new WeightSolver(model, profile, speed);
+    }
+
+    /// <summary>What replay steps: <see cref="PaperLiteralSolver"/> under --profile paper-literal, else the 3D solver.</summary>
+    public static IReplayedObject CreateReplayed(Options o, out bool breakAway)
+    {
+        if (o.Get("--profile") == NamedProfiles.PaperLiteralName)
+        {
+            var (model, _, _) = Parse(o);
+            breakAway = false;
+            if (o.Get("--break-away") != null)
+                throw new CliException("option --break-away: the paper-literal profile has no strain and no hold to break (the paper as printed); use paper, paper-experiment, gain or xyz");
+            return new ReplayedPaperLiteral(model.MassKg, WeightSolver.DefaultCueStrength);
+        }
+        return new ReplayedSolver3D(CreateSolver3D(o, out breakAway));
     }
 
     /// <summary>The 3D solver replay runs (issue 10): --profile, plus --break-away when given.</summary>
@@ -108,7 +122,7 @@ public static class ReplayCommand
     /// beside the output, so memory stays bounded. With the rig's columns (issue 26) each hand is taken into the
     /// rig's frame, the solver runs there, and the object is written back through that row's rig; without them
     /// nothing is transformed. Returns the summary of what was replayed.</summary>
-    static ReplaySummary Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
+    static ReplaySummary Replay(TraceCsvReader reader, IReplayedObject solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
     {
         var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway, reader.HasRig);
         w.Write("t,hand_y,object_y,offset");
