@@ -27,6 +27,7 @@ namespace Kosmos.PseudoHaptic.Cli
         {
             Commands.DemoCommand.Define(),
             Commands.ReplayCommand.Define(),
+            Commands.TuneCommand.Define(),
             Commands.AccuracyCommand.Define(),
             ScoreCommand.Define(),
             ReportCommand.Define(),

@@ -33,6 +33,7 @@ public static class DemoCommand
         },
         CliCommand.Value("--out", "DIR", $"the folder to write (default {DefaultOut}, whose parents it creates); it appears whole or not at all"),
         CliCommand.Value("--trace", "FILE", "also replay this recorded hand (replay's CSV format, usable rows spanning at most 300 s), degraded to 30 Hz poses"),
+        CliCommand.Value("--user", "USER.json", "the user's file from 'pseudohaptic tune': its cueStrength s scales every scene's cue (gain G^s; default 1)"),
         CliCommand.Flag("--svg", "write an SVG beside each PNG"));
 
     static int Run(Options o)
@@ -41,21 +42,22 @@ public static class DemoCommand
         string? given = o.Get("--out");
         string outDir = given ?? DefaultOut;
         string? tracePath = o.Get("--trace");
+        string? userPath = o.Get("--user");
+        double cueStrength = userPath != null ? UserFile.ReadCueStrength("--user", userPath) : WeightSolver.DefaultCueStrength;
         // The folder is checked (writable, not the trace) and the trace read before anything is computed or created;
         // the folder then appears whole.
-        OutputFolder.Check("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
+        OutputFolder.Check("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath), new NamedPath("--user", userPath));
         (List<double> Times, List<double> Heights)? recorded = tracePath != null
             ? TraceSamples.Read("--trace", tracePath, "demo", usePoseTime: false, TraceSamples.DemoMaxSpan) : null;
         if (recorded != null && recorded.Value.Times.Count < 2)
             throw new CliException($"{Messages.OneLine(tracePath!)}: fewer than two usable rows with increasing t");
 
         double standardSpeed = Calibrate();
-        double cueStrength = WeightSolver.DefaultCueStrength;
         var scenes = Scenes(recorded, tracePath);
         int total = scenes.Sum(s => s.Items.Count), done = 0;
         var results = new List<Result>();
         var results3D = new List<DemoThreeDimensions.Result>();
-        var folder = OutputFolder.Begin("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath));
+        var folder = OutputFolder.Begin("--out", outDir, Owns, createParents: given == null, new NamedPath("--trace", tracePath), new NamedPath("--user", userPath));
         folder.Build(temp =>
         {
             foreach (var scene in scenes)
@@ -75,9 +77,9 @@ public static class DemoCommand
                 Temporaries.Guard(() => Plot(Path.Combine(temp, scene.Slug + ".png"), scene, sceneResults, svg, standardSpeed));
                 results.AddRange(sceneResults);
             }
-            results3D = DemoThreeDimensions.Run(temp, standardSpeed, svg, Progress.Writer);
+            results3D = DemoThreeDimensions.Run(temp, standardSpeed, svg, Progress.Writer, cueStrength);
         });
-        PrintSummary(results, standardSpeed, outDir);
+        PrintSummary(results, standardSpeed, outDir, cueStrength);
         PrintSummary3D(results3D);
         Console.WriteLine();
         Console.WriteLine($"demo: {results.Count + results3D.Count} objects lifted in {scenes.Count + 1} scenes (v_std = {NumberText.Fixed(standardSpeed, 3)} m/s) -> {Messages.OneLine(outDir)}");
@@ -221,9 +223,12 @@ public static class DemoCommand
         Charts.SavePanels(new[] { plot, offsets }, path, 1000, new[] { 560, 520 }, svg);
     }
 
-    static void PrintSummary(List<Result> results, double standardSpeed, string outDir)
+    static void PrintSummary(List<Result> results, double standardSpeed, string outDir, double cueStrength)
     {
         Console.WriteLine($"standard speed v_std = {NumberText.Fixed(standardSpeed, 3)} m/s (calibrated from five synthetic golf-ball lifts)");
+        // The calibration told as it is (issue 31), on Experiment 1's heaviest box under the profile its scene runs.
+        Console.WriteLine("what it does: " + CalibrationStatement.Line(NamedProfiles.PaperExperiment, 250 * 0.008, standardSpeed, cueStrength));
+        if (cueStrength != WeightSolver.DefaultCueStrength) Console.WriteLine($"cue strength s = {NumberText.Fixed(cueStrength, 3)} (--user): every gain is G^s");
         Console.WriteLine();
         Console.WriteLine($"{"scene",-22} {"object",-14} {"mass kg",8} {"gain",6} {"max offset m",13} {"end offset m",13}");
         foreach (var r in results)

@@ -5,6 +5,9 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 public interface IReplayedObject
 {
     WeightProfile Profile { get; }
+    double MassKg { get; }
+    double StandardSpeed { get; }
+    double CueStrength { get; }
     bool IsHolding { get; }
     double ObjectX { get; }
     double ObjectY { get; }
@@ -18,6 +21,9 @@ public sealed class ReplayedSolver3D(WeightSolver3D solver) : IReplayedObject
 {
     public WeightSolver3D Solver { get; } = solver;
     public WeightProfile Profile => Solver.Profile;
+    public double MassKg => Solver.Model.MassKg;
+    public double StandardSpeed => Solver.Vertical.StandardSpeed;
+    public double CueStrength => Solver.CueStrength;
     public bool IsHolding => Solver.IsHolding;
     public double ObjectX => Solver.ObjectX;
     public double ObjectY => Solver.ObjectY;
@@ -39,6 +45,9 @@ public sealed class ReplayedPaperLiteral(double massKg, double cueStrength) : IR
     bool _holding;
 
     public WeightProfile Profile => NamedProfiles.PaperLiteral;
+    public double MassKg => massKg;
+    public double StandardSpeed { get; init; } = WeightSolver.DefaultStandardSpeed;
+    public double CueStrength => _solver.CueStrength;
     public bool IsHolding => _holding;
     public double ObjectX => _x;
     public double ObjectY => _solver.ObjectY;
