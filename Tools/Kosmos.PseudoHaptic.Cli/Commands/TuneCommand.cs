@@ -28,17 +28,14 @@ public static class TuneCommand
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("tune").ToArray());
 
-    static int Run(Options o)
+    /// <summary>
+    /// What tune computes from read answers: the participant's trials in the condition (the only one when
+    /// <paramref name="condition"/> is null), at the standard with the most trials, fitted (no lapse), and the tuning.
+    /// Errors are <see cref="CliException"/>s naming the option or <paramref name="file"/>.
+    /// </summary>
+    public static (double Standard, PsychometricFit Fit, CueStrengthTuning Tuning, int Trials, string Condition) Tune(
+        IReadOnlyList<TrialAnswer> answers, string participant, string? condition, double[] masses, string file)
     {
-        string trialsPath = o.Require("--trials");
-        string participant = o.Require("--participant");
-        string output = o.Require("--out");
-        string? condition = o.Get("--condition");
-        double[] masses = UserFile.Masses(o.Get("--masses"));
-        var target = OutputFile.Check("--out", output, new NamedPath("--trials", trialsPath));
-
-        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
-        string file = Messages.OneLine(trialsPath);
         var mine = answers.Where(a => a.Participant == participant).ToList();
         if (mine.Count == 0)
             throw new CliException($"option --participant: {Messages.OneLine(participant)} has no trials in {file} (participants: {Messages.OneLine(string.Join(", ", answers.Select(a => a.Participant).Distinct().Take(10)))})");
@@ -60,12 +57,26 @@ public static class TuneCommand
         var fit = PsychometricFit.Fit(trials.Select(a => a.Comparison).ToList(), trials.Select(a => a.Response).ToList());
         if (!fit.Estimable)
             throw new CliException($"{file}: {Messages.OneLine(participant)}{(condition.Length > 0 ? " " + Messages.OneLine(condition) : "")} standard {NumberText.Format(standard)}: the psychometric fit is not estimable ({fit.Reason}); no cue strength can be derived");
+        return (standard, fit, CueStrengthTuning.Solve(standard, fit.Jnd, masses), trials.Count, condition);
+    }
+
+    static int Run(Options o)
+    {
+        string trialsPath = o.Require("--trials");
+        string participant = o.Require("--participant");
+        string output = o.Require("--out");
+        string? condition = o.Get("--condition");
+        double[] masses = UserFile.Masses(o.Get("--masses"));
+        var target = OutputFile.Check("--out", output, new NamedPath("--trials", trialsPath));
+
+        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        var (standard, fit, tuning, trials, chosen) = Tune(answers, participant, condition, masses, Messages.OneLine(trialsPath));
+        condition = chosen;
         double weber = fit.Jnd / standard;
-        var tuning = CueStrengthTuning.Solve(standard, fit.Jnd, masses);
-        target.Write(w => w.Write(UserFile.Format(participant, condition, standard, fit.Jnd, weber, tuning, trials.Count)));
+        target.Write(w => w.Write(UserFile.Format(participant, condition, standard, fit.Jnd, weber, tuning, trials)));
         if (!tuning.Reached)
             Console.Error.WriteLine($"pseudohaptic tune: warning: {Messages.OneLine(participant)}: even the largest cue strength {NumberText.Format(WeightSolver.MaxCueStrength)} puts adjacent masses only {NumberText.Fixed(tuning.AdjacentCue / tuning.ThresholdCue, 2)} JND apart; cueStrength set to that bound");
-        Console.Out.WriteLine($"tune: {Messages.OneLine(participant)}: Weber {NumberText.Fixed(weber, 3)} (JND {NumberText.Fixed(fit.Jnd, 3)} kg at {NumberText.Format(standard)} kg, {trials.Count} trials) -> cueStrength {NumberText.Fixed(tuning.CueStrength, 3)}{(tuning.Reached ? "" : " (the bound)")} for {string.Join(", ", tuning.Masses.Select(m => NumberText.Format(m)))} kg -> {Messages.OneLine(output)}");
+        Console.Out.WriteLine($"tune: {Messages.OneLine(participant)}: Weber {NumberText.Fixed(weber, 3)} (JND {NumberText.Fixed(fit.Jnd, 3)} kg at {NumberText.Format(standard)} kg, {trials} trials) -> cueStrength {NumberText.Fixed(tuning.CueStrength, 3)}{(tuning.Reached ? "" : " (the bound)")} for {string.Join(", ", tuning.Masses.Select(m => NumberText.Format(m)))} kg -> {Messages.OneLine(output)}");
         return 0;
     }
 }
