@@ -153,7 +153,7 @@ public static class DemoCommand
         var scenes = new List<Scene>
         {
             new("experiment-1-boxes", "Experiment 1: boxes A, B, C (paper-experiment)", NamedProfiles.PaperExperiment, boxes, liftAndPlace),
-            new("experiment-1-paper-literal", "Experiment 1: boxes A, B, C, the paper as printed (paper-literal)", NamedProfiles.PaperLiteral, boxes, liftAndPlace),
+            new("experiment-1-literal", "Experiment 1: boxes A, B, C, the paper as printed (paper-literal)", NamedProfiles.PaperLiteral, boxes, liftAndPlace),
             new("experiment-2-bottles", "Experiment 2: water bottles (paper-experiment)", NamedProfiles.PaperExperiment, bottles, liftAndPlace),
             new("offset-correction", "A high lift with the offset correction (paper)", NamedProfiles.Paper,
                 new List<Item> { boxes[0], boxes[2], new("box D", 5, "625 kg/m³") }, highLift),

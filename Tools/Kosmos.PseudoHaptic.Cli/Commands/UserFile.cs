@@ -44,13 +44,13 @@ public static class UserFile
     public static string Format(string participant, string condition, double standardKg, double jndKg, double weber, CueStrengthTuning t, int trials)
     {
         using var stream = new MemoryStream();
-        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true }))
+        using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
         {
             w.WriteStartObject();
             w.WriteNumber("version", FormatVersion);
             w.WriteString("participant", participant);
             w.WriteString("condition", condition);
-            w.WriteNumber("cueStrength", Math.Round(t.CueStrength, 4));
+            w.WriteNumber("cueStrength", t.CueStrength);
             w.WriteBoolean("reached", t.Reached);
             w.WriteNumber("weber", weber);
             w.WriteNumber("standardKg", standardKg);
