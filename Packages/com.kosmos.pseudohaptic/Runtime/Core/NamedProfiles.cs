@@ -57,6 +57,10 @@ namespace Kosmos.PseudoHaptic
 
         public static IReadOnlyList<string> Names { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName, PaperLiteralName };
 
+        /// <summary>The named profiles the package's pipeline (<see cref="WeightSolver"/>) is built for: every name but
+        /// <see cref="PaperLiteralName"/>, which <see cref="PaperLiteralSolver"/> runs.</summary>
+        public static IReadOnlyList<string> PipelineNames { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName };
+
         /// <summary>Whether <paramref name="profile"/> is <see cref="PaperLiteral"/>, which <see cref="PaperLiteralSolver"/> runs.</summary>
         public static bool IsPaperLiteral(WeightProfile profile) => ReferenceEquals(profile, PaperLiteral);
 
