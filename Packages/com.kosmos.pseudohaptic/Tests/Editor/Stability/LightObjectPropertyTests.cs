@@ -14,7 +14,7 @@ namespace Kosmos.PseudoHaptic.Tests
     /// </summary>
     public class LightObjectPropertyTests
     {
-        static readonly IReadOnlyList<string> Profiles = NamedProfiles.Names;
+        static readonly IReadOnlyList<string> Profiles = NamedProfiles.PipelineNames; // paper-literal is the printed method, run by PaperLiteralSolver, not this pipeline
 
         /// <summary>A third of the seeds lighter than the standard (1–45 g), the rest anywhere from 1 g to 1 t.</summary>
         static double Mass(Random rng, int seed)
