@@ -28,7 +28,7 @@ public static class AccuracyCommand
         new[]
         {
             "pseudohaptic accuracy --long-minutes 0 --mocap none",
-            "pseudohaptic accuracy --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --lifts none --mocap none --long-minutes 0 --csv accuracy.csv",
+            "pseudohaptic accuracy --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --lifts none --mocap none --long-minutes 0 --csv out/accuracy.csv",
         },
         CliCommand.Value("--trace", "FILE", "also measure on this recorded hand (replay's CSV format; usable rows spanning at most 120 s)"),
         CliCommand.Choice("--lifts", "measure on the synthetic lifts (default all)", "all", "none"),

@@ -23,7 +23,7 @@ public static class CompareCommand
         Run,
         new[]
         {
-            "pseudohaptic compare --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/psychophysics.csv --out compare",
+            "pseudohaptic compare --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/psychophysics.csv --out out/compare",
         },
         CliCommand.Value("--scores", "S.csv", "participant,condition,questionnaire,score (what score writes from answers with a condition column)", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true));

@@ -29,7 +29,7 @@ public static class DemoCommand
         new[]
         {
             "pseudohaptic demo",
-            "pseudohaptic demo --out demo-lift --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --svg",
+            "pseudohaptic demo --out out/demo-lift --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --svg",
         },
         CliCommand.Value("--out", "DIR", $"the folder to write (default {DefaultOut}, whose parents it creates); it appears whole or not at all"),
         CliCommand.Value("--trace", "FILE", "also replay this recorded hand (replay's CSV format, usable rows spanning at most 300 s), degraded to 30 Hz poses"),
