@@ -41,7 +41,7 @@ public static class ChartInk
     /// changes in the chart (seen), those it changes drawn alone on the same axes (own), and those of its own that no
     /// other plottable draws within a pixel (distinct: where a reader can tell it from the others).
     /// </summary>
-    public static List<(string Name, int Seen, int Own, int Distinct)> Visibility(Drawn d)
+    public static List<(string Name, int Seen, int Own, int Distinct)> Visibility(Drawn d, Func<string, bool>? only = null)
     {
         var plot = d.Plot;
         plot.RenderInMemory(d.Width, d.Height);
@@ -52,52 +52,39 @@ public static class ChartInk
         plot.Legend.HiddenItemOpacity = 1;
         var all = plot.GetPlottables().Where(p => p.IsVisible).ToList();
         var result = new List<(string, int, int, int)>();
+        int w = d.Width, h = d.Height;
         try
         {
-            var full = Pixels(plot, d.Width, d.Height);
+            var full = Pixels(plot, w, h);
             var area = plot.RenderManager.LastRender.DataRect;
             foreach (var p in all) p.IsVisible = false;
-            var empty = Pixels(plot, d.Width, d.Height);
-            var masks = new List<bool[]>();
-            var seen = new List<int>();
+            var empty = Pixels(plot, w, h);
             for (int i = 0; i < all.Count; i++)
             {
-                foreach (var q in all) q.IsVisible = q == all[i];
-                masks.Add(Mask(Pixels(plot, d.Width, d.Height), empty, area, d.Width));
-                foreach (var q in all) q.IsVisible = q != all[i];
-                var without = Pixels(plot, d.Width, d.Height);
-                Assert.That(plot.RenderManager.LastRender.DataRect, Is.EqualTo(area), "the layout holds while a series is hidden");
-                seen.Add(Mask(full, without, area, d.Width).Count(b => b));
-            }
-            foreach (var q in all) q.IsVisible = true;
-            int w = d.Width, h = d.Height;
-            for (int i = 0; i < all.Count; i++)
-            {
-                // The others' ink, grown by a pixel: a line one pixel off another is not told apart from it.
-                var others = new bool[w * h];
-                for (int j = 0; j < all.Count; j++)
-                {
-                    if (j == i) continue;
-                    var m = masks[j];
-                    for (int k = 0; k < m.Length; k++)
-                    {
-                        if (!m[k]) continue;
-                        int x = k % w, y = k / w;
-                        for (int dy = -1; dy <= 1; dy++)
-                            for (int dx = -1; dx <= 1; dx++)
-                                if (x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h) others[(y + dy) * w + x + dx] = true;
-                    }
-                }
-                int own = 0, distinct = 0;
-                for (int k = 0; k < masks[i].Length; k++)
-                {
-                    if (!masks[i][k]) continue;
-                    own++;
-                    if (!others[k]) distinct++;
-                }
                 var p = all[i];
                 string name = p.LegendItems.Select(l => l.LabelText).FirstOrDefault(t => !string.IsNullOrEmpty(t)) ?? $"{p.GetType().Name} #{i}";
-                result.Add((name, seen[i], own, distinct));
+                if (only != null && !only(name)) continue;
+                foreach (var q in all) q.IsVisible = q == p;
+                var own = Mask(Pixels(plot, w, h), empty, area, w);
+                foreach (var q in all) q.IsVisible = q != p;
+                var without = Pixels(plot, w, h);
+                Assert.That(plot.RenderManager.LastRender.DataRect, Is.EqualTo(area), "the layout holds while a series is hidden");
+                int seen = Mask(full, without, area, w).Count(b => b);
+                // The others' ink, grown by a pixel: a line one pixel off another is not told apart from it.
+                var others = Mask(without, empty, area, w);
+                int mine = 0, distinct = 0;
+                for (int k = 0; k < own.Length; k++)
+                {
+                    if (!own[k]) continue;
+                    mine++;
+                    int x = k % w, y = k / w;
+                    bool near = false;
+                    for (int dy = -1; dy <= 1 && !near; dy++)
+                        for (int dx = -1; dx <= 1 && !near; dx++)
+                            near = x + dx >= 0 && x + dx < w && y + dy >= 0 && y + dy < h && others[(y + dy) * w + x + dx];
+                    if (!near) distinct++;
+                }
+                result.Add((name, seen, mine, distinct));
             }
         }
         finally
