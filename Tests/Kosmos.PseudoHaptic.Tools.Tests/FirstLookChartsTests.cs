@@ -128,7 +128,7 @@ public class FirstLookChartsTests : CliTestFolder
         foreach (var d in fits)
         {
             var limits = d.Plot.Axes.GetLimits();
-            foreach (var scatter in d.Plot.GetPlottables().OfType<ScottPlot.Plottables.Scatter>())
+            foreach (var scatter in d.Plot.GetPlottables().OfType<ScottPlot.Plottables.Scatter>().Where(sc => sc.LineWidth == 0 && sc.MarkerSize > 0))
                 foreach (var point in scatter.Data.GetScatterPoints())
                     Assert.That(point.X, Is.InRange(limits.Left + 0.03 * (limits.Right - limits.Left), limits.Right - 0.03 * (limits.Right - limits.Left)),
                         $"{d.Title()}: {scatter.LegendText} at {point.X} kg is drawn at the plot's edge");
