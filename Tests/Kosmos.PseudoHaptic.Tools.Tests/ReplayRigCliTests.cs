@@ -179,17 +179,25 @@ public class ReplayRigCliTests : CliTestFolder
     }
 
     [TestCase("paper"), TestCase("paper-experiment"), TestCase("gain"), TestCase("xyz")]
-    public void The_object_follows_the_hand_in_the_rigs_frame_whatever_the_rig_does(string profile)
+    public void The_object_follows_the_hand_in_the_rigs_frame_whatever_the_rig_does(string profile) => FollowsInTheRigsFrame(profile, null, Seeds, 1);
+
+    /// <summary>The same at the cue strengths 1/3 and 3 (issue 31), through <c>--user</c>, every tenth seed.</summary>
+    [Test]
+    public void The_object_follows_the_hand_in_the_rigs_frame_at_other_cue_strengths([Values("paper", "paper-experiment", "gain", "xyz")] string profile, [Values(1.0 / 3, 3.0)] double cueStrength)
+        => FollowsInTheRigsFrame(profile, Write("user.json", "{\"cueStrength\": " + cueStrength.ToString("R", CultureInfo.InvariantCulture) + "}"), Seeds, 10);
+
+    void FollowsInTheRigsFrame(string profile, string? user, int seeds, int every)
     {
         int releasedSeeds = 0;
         double largestMove = 0, largestDifference = 0;
-        for (int seed = 1; seed <= Seeds; seed++)
+        for (int seed = 1; seed <= seeds; seed += every)
         {
             var rng = new Random(seed * 7919 + profile.Length);
             var hand = HandPath(rng);
             bool horizontal = rng.Next(4) != 0, second = rng.Next(2) == 0;
             string mass = F(Math.Round(0.05 + 2.95 * rng.NextDouble(), 3));
             var options = new[] { "--mass-kg", mass, "--profile", profile, "--break-away", "0.3" };
+            if (user != null) options = options.Concat(new[] { "--user", user }).ToArray();
             var still = Replay(Trace(hand, null, horizontal, second), options);
             if (still.Any(r => r["held"] == "0")) releasedSeeds++;
             foreach (Motion motion in Enum.GetValues<Motion>())
@@ -221,7 +229,7 @@ public class ReplayRigCliTests : CliTestFolder
         }
         // The property is not vacuous: the rig carried the object far in the world.
         Assert.That(largestMove, Is.GreaterThan(100), "the rigs moved the object in the world");
-        TestContext.WriteLine($"{profile}: {Seeds} seeds × {Enum.GetValues<Motion>().Length} rig motions; {releasedSeeds} seeds broke away with the rig standing still; largest rig-frame difference {largestDifference:E2} m");
+        TestContext.WriteLine($"{profile}{(user != null ? " (" + File.ReadAllText(user) + ")" : "")}: {seeds / every} seeds × {Enum.GetValues<Motion>().Length} rig motions; {releasedSeeds} seeds broke away with the rig standing still; largest rig-frame difference {largestDifference:E2} m");
     }
 
     [Test]

@@ -25,7 +25,7 @@ public static class StepCount
         }
         else if (name == "literal")
         {
-            var literal = new Cli.Accuracy.PaperLiteralSolver(HandFrames.MassKg);
+            var literal = new PaperLiteralSolver(HandFrames.MassKg);
             literal.BeginHold(HandFrames.Samples[0].Y, HandFrames.Samples[0].Y);
             clock.Start();
             for (int r = 0; r < rounds; r++) y = Round(literal);
@@ -51,7 +51,7 @@ public static class StepCount
         return y;
     }
 
-    static double Round(Cli.Accuracy.PaperLiteralSolver literal)
+    static double Round(PaperLiteralSolver literal)
     {
         double y = 0;
         var samples = HandFrames.Samples;

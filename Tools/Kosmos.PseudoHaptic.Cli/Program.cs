@@ -27,6 +27,8 @@ namespace Kosmos.PseudoHaptic.Cli
         {
             Commands.DemoCommand.Define(),
             Commands.ReplayCommand.Define(),
+            Commands.TuneCommand.Define(),
+            Commands.PersonalizationCommand.Define(),
             Commands.AccuracyCommand.Define(),
             ScoreCommand.Define(),
             ReportCommand.Define(),

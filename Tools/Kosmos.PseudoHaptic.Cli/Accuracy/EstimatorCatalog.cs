@@ -13,7 +13,7 @@ public static class EstimatorCatalog
     /// <summary>The default pipeline: the paper profile, pose-delta estimator + its motion deadband.</summary>
     public const string Default = "deadband";
 
-    /// <summary>The paper-literal baseline (harness-side, <see cref="PaperLiteralSolver"/>).</summary>
+    /// <summary>The paper-literal baseline (<see cref="PaperLiteralSolver"/> in the core, the named profile paper-literal).</summary>
     public const string PaperLiteral = "paper-literal";
 
     /// <summary>Estimator keys, in table order. Each is the paper profile with that estimator.</summary>

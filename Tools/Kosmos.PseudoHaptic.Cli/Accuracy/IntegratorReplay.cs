@@ -19,9 +19,9 @@ public static class IntegratorReplay
     }
 
     /// <summary>The paper-literal baseline as an integrator.</summary>
-    public sealed class PaperLiteral(double massKg) : IObjectIntegrator
+    public sealed class PaperLiteral(double massKg, double cueStrength = WeightSolver.DefaultCueStrength) : IObjectIntegrator
     {
-        readonly PaperLiteralSolver _solver = new(massKg);
+        readonly PaperLiteralSolver _solver = new(massKg) { CueStrength = cueStrength };
 
         public void Begin(double handY, double poseTime) => _solver.BeginHold(handY, handY);
 

@@ -29,7 +29,7 @@ public static class DemoThreeDimensions
         ("box 0.1 kg", 0.1), ("box 0.5 kg", 0.5), ("box 2 kg", 2), ("box 5 kg", 5),
     };
 
-    public static List<Result> Run(string folder, double standardSpeed, bool svg, TextWriter log)
+    public static List<Result> Run(string folder, double standardSpeed, bool svg, TextWriter log, double cueStrength = 1)
     {
         var frames = Render();
         string dir = Path.Combine(folder, Slug);
@@ -39,7 +39,7 @@ public static class DemoThreeDimensions
         foreach (var (name, mass) in Items)
         {
             log.WriteLine($"[xyz] {Title}: {name}");
-            var solver = new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz, standardSpeed);
+            var solver = new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz, standardSpeed) { CueStrength = cueStrength };
             int n = frames.T.Length;
             double[] x = new double[n], y = new double[n], z = new double[n];
             int[] hands = new int[n];

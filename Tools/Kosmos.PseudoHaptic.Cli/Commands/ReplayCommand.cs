@@ -26,6 +26,7 @@ public static class ReplayCommand
         CliCommand.Value("--mass-kg", "M", "the held object's mass, kg (> 0)", required: true),
         CliCommand.Value("--standard-speed", "V", $"the user's calibrated standard lifting speed, m/s, {WeightSolver.MinStandardSpeed}–{WeightSolver.MaxStandardSpeed} (default {WeightSolver.DefaultStandardSpeed})"),
         CliCommand.Choice("--profile", $"which effects act (default {NamedProfiles.PaperName})", NamedProfiles.Names.ToArray()),
+        CliCommand.Value("--user", "USER.json", "the user's file from 'pseudohaptic tune': its cueStrength s scales the cue (gain G^s; default 1)"),
         CliCommand.Value("--grab-offset", "D", "the object starts D metres below the first usable hand (default 0; negative: above)"),
         CliCommand.Value("--break-away", "D", "let go when the hand pulls D metres too far, two poses in a row: under the offset correction (paper, xyz) D is how far the hand pulls beyond what the weight allows (the strain: the lag of an object moving at most the user's capped speed), without it (paper-experiment, gain) the hand-to-object distance beyond the grab's (default: never)"));
 
@@ -35,9 +36,9 @@ public static class ReplayCommand
     {
         string trace = o.Require("--trace");
         string output = o.Require("--out");
-        var solver = CreateSolver3D(o, out bool breakAway);
+        var solver = CreateReplayed(o, out bool breakAway);
         double grabOffset = GrabOffset(o);
-        var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace));
+        var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace), new NamedPath("--user", o.Get("--user")));
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
@@ -45,6 +46,8 @@ public static class ReplayCommand
         target.Write(w => summary = Replay(reader, solver, breakAway, grabOffset, w, target.SpareFolder));
         if (!summary.AnyUsable)
             Console.Error.WriteLine($"{Messages.OneLine(trace)}: warning: no row has a usable pose; the object stays at {(reader.HasRig ? "the rig's origin" : "0")} throughout");
+        // The calibration told as it is (issue 31): one line on standard error.
+        Console.Error.WriteLine("replay: " + CalibrationStatement.Line(solver.Profile, solver.MassKg, solver.StandardSpeed, solver.CueStrength));
         // One line saying what was done; on standard error when the rows went to standard output.
         var say = target.IsStandardOutput ? Console.Error : Console.Out;
         string largest = summary.LargestOffset > 0 || summary.Holds > 0 ? NumberText.Fixed(summary.LargestOffset * 1000, 1) + " mm" : "none";
@@ -57,6 +60,29 @@ public static class ReplayCommand
     {
         var (model, profile, speed) = Parse(o);
         return new WeightSolver(model, profile, speed);
+    }
+
+    /// <summary>What replay steps: <see cref="PaperLiteralSolver"/> under --profile paper-literal, else the 3D solver.</summary>
+    public static IReplayedObject CreateReplayed(Options o, out bool breakAway)
+    {
+        if (o.Get("--profile") == NamedProfiles.PaperLiteralName)
+        {
+            var (model, _, _) = Parse(o);
+            breakAway = false;
+            if (o.Get("--break-away") != null)
+                throw new CliException("option --break-away: the paper-literal profile has no strain and no hold to break (the paper as printed); use paper, paper-experiment, gain or xyz");
+            return new ReplayedPaperLiteral(model.MassKg, CueStrength(o)) { StandardSpeed = o.Number("--standard-speed") ?? WeightSolver.DefaultStandardSpeed };
+        }
+        var solver = CreateSolver3D(o, out breakAway);
+        solver.CueStrength = CueStrength(o);
+        return new ReplayedSolver3D(solver);
+    }
+
+    /// <summary>--user USER.json: its cueStrength (default 1, the cue as Eq. 4–6 give it).</summary>
+    public static double CueStrength(Options o)
+    {
+        string? user = o.Get("--user");
+        return user == null ? WeightSolver.DefaultCueStrength : UserFile.ReadCueStrength("--user", user);
     }
 
     /// <summary>The 3D solver replay runs (issue 10): --profile, plus --break-away when given.</summary>
@@ -108,7 +134,7 @@ public static class ReplayCommand
     /// beside the output, so memory stays bounded. With the rig's columns (issue 26) each hand is taken into the
     /// rig's frame, the solver runs there, and the object is written back through that row's rig; without them
     /// nothing is transformed. Returns the summary of what was replayed.</summary>
-    static ReplaySummary Replay(TraceCsvReader reader, WeightSolver3D solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
+    static ReplaySummary Replay(TraceCsvReader reader, IReplayedObject solver, bool breakAway, double grabOffset, TextWriter w, string spareFolder)
     {
         var columns = new Columns(reader.HasHorizontal, reader.HasSecondHand, breakAway, reader.HasRig);
         w.Write("t,hand_y,object_y,offset");

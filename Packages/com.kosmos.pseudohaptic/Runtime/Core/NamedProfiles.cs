@@ -10,6 +10,7 @@ namespace Kosmos.PseudoHaptic
         public const string PaperExperimentName = "paper-experiment";
         public const string GainName = "gain";
         public const string XyzName = "xyz";
+        public const string PaperLiteralName = "paper-literal";
 
         /// <summary>
         /// All of the paper's effects: Eq. 4–6 gain, faster moves further (§3.1), the offset correction past 0.2 m,
@@ -43,7 +44,25 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         public static readonly WeightProfile Xyz = BuildXyz();
 
-        public static IReadOnlyList<string> Names { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName };
+        /// <summary>
+        /// The paper as printed (issue 31): Eq. 4–6 per frame in the package's relative reading, the hand's speed averaged
+        /// over the paper's unit time of 1 s, no offset correction, no floor beyond y ≥ 0. What runs it is
+        /// <see cref="PaperLiteralSolver"/> (the accuracy page's baseline), not the package's pipeline: this profile names
+        /// the paper's effects (<see cref="WeightGain"/>, <see cref="ExperimentalBlend"/>, <see cref="FloorClamp"/> at 0) and
+        /// the 1 s window (<see cref="OneSecondAverage"/>) so that a profile asset, a listing or a <see cref="WeightSolver"/>
+        /// given it shows the same effects; <see cref="IsPaperLiteral"/> tells a host to run the literal solver instead.
+        /// </summary>
+        public static readonly WeightProfile PaperLiteral = new WeightProfile(PaperLiteralName,
+            new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new FloorClamp() }, SolverLimits.Default, new OneSecondAverage());
+
+        public static IReadOnlyList<string> Names { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName, PaperLiteralName };
+
+        /// <summary>The named profiles the package's pipeline (<see cref="WeightSolver"/>) is built for: every name but
+        /// <see cref="PaperLiteralName"/>, which <see cref="PaperLiteralSolver"/> runs.</summary>
+        public static IReadOnlyList<string> PipelineNames { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName };
+
+        /// <summary>Whether <paramref name="profile"/> is <see cref="PaperLiteral"/>, which <see cref="PaperLiteralSolver"/> runs.</summary>
+        public static bool IsPaperLiteral(WeightProfile profile) => ReferenceEquals(profile, PaperLiteral);
 
         static WeightProfile BuildXyz()
         {
@@ -63,6 +82,7 @@ namespace Kosmos.PseudoHaptic
                 case PaperExperimentName: return PaperExperiment;
                 case GainName: return Gain;
                 case XyzName: return Xyz;
+                case PaperLiteralName: return PaperLiteral;
                 default:
                     throw new ArgumentException("profile '" + name + "' is unknown; known profiles: " + string.Join(", ", Names) + ".", "profile");
             }

@@ -24,6 +24,15 @@ namespace Kosmos.PseudoHaptic
         public const double MinStandardSpeed = 0.05;
         public const double MaxStandardSpeed = 5.0;
 
+        /// <summary>The default cue strength s: the gain as Eq. 4–6 give it (ALGORITHM.md §12).</summary>
+        public const double DefaultCueStrength = 1.0;
+
+        /// <summary>The weakest cue strength accepted: a third of the departure's exponent (ALGORITHM.md §12).</summary>
+        public const double MinCueStrength = 1.0 / 3.0;
+
+        /// <summary>The strongest cue strength accepted (ALGORITHM.md §12).</summary>
+        public const double MaxCueStrength = 3.0;
+
         /// <summary>Hand heights beyond this magnitude, m, are treated as garbage, like NaN.</summary>
         public const double MaxCoordinate = 1e5;
 
@@ -60,6 +69,35 @@ namespace Kosmos.PseudoHaptic
         public double GrabOffset => _state.GrabOffset;
 
         double _bottomBelowPivot;
+        double _cueStrength = DefaultCueStrength;
+
+        /// <summary>
+        /// The person's cue strength s (issue 31): the solver's gain is G^s, capped at <see cref="SolverLimits.MaxGain"/>,
+        /// where G is the gain of Eq. 4–6 (<see cref="WeightModel.Gain"/>). s = 1 (the default) is that gain bit for bit;
+        /// s &lt; 1 draws every object toward the hand (less lag, less lead), s &gt; 1 pushes it away; the standard weight's
+        /// G = 1 stays 1 at every s, a heavier object's gain stays above 0 and below 1, and the order of the masses is kept
+        /// (G ↦ G^s is strictly increasing). Within [<see cref="MinCueStrength"/>, <see cref="MaxCueStrength"/>]; an
+        /// invalid value throws naming CueStrength. Setting it reconfigures the solver (the gain is computed here, not per
+        /// frame); allowed during a hold, where the change glides like a change of mass.
+        /// </summary>
+        public double CueStrength
+        {
+            get => _cueStrength;
+            set
+            {
+                ConfigurationGuard.InRange(value, MinCueStrength, MaxCueStrength, nameof(CueStrength));
+                if (value == _cueStrength) return;
+                _cueStrength = value;
+                Configure(Model, Profile, StandardSpeed);
+            }
+        }
+
+        /// <summary>
+        /// G^s capped at <paramref name="maxGain"/>: the gain a cue strength <paramref name="cueStrength"/> gives an object
+        /// whose Eq. 4–6 gain is <paramref name="gain"/>. s = 1 returns <paramref name="gain"/> itself (no power taken).
+        /// </summary>
+        public static double StrengthenedGain(double gain, double cueStrength, double maxGain)
+            => cueStrength == 1.0 ? gain : Math.Min(Math.Pow(gain, cueStrength), maxGain);
 
         /// <summary>
         /// Metres from the object's pivot down to its lowest point (finite, ≥ 0; default 0): the floor
@@ -91,7 +129,7 @@ namespace Kosmos.PseudoHaptic
             if (profile == null) throw new ArgumentNullException(nameof(profile));
             ConfigurationGuard.InRange(standardSpeed, MinStandardSpeed, MaxStandardSpeed, nameof(standardSpeed));
             var limits = profile.Limits;
-            double gain = model.Gain(profile.Has<WeightGain>(), profile.Has<ExperimentalBlend>(), limits.MaxGain);
+            double gain = StrengthenedGain(model.Gain(profile.Has<WeightGain>(), profile.Has<ExperimentalBlend>(), limits.MaxGain), _cueStrength, limits.MaxGain);
             var cap = profile.Find<SpeedCap>();
             var deadband = profile.Find<MotionDeadband>();
             var correction = profile.Find<OffsetCorrection>();

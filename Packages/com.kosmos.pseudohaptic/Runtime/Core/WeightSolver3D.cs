@@ -124,6 +124,19 @@ namespace Kosmos.PseudoHaptic
             }
         }
 
+        /// <summary>The person's cue strength s (<see cref="WeightSolver.CueStrength"/>): the y solver's gain is G^s, and the
+        /// lateral inertia's time constant follows that gain. Setting it reconfigures (an invalid value throws naming CueStrength).</summary>
+        public double CueStrength
+        {
+            get => _y.CueStrength;
+            set
+            {
+                if (value == _y.CueStrength) return;
+                _y.CueStrength = value;
+                Configure(_model, _y.Profile, _y.StandardSpeed);
+            }
+        }
+
         /// <summary>Metres from the pivot down to the object's lowest point (the y solver's; the floor keeps the bottom above the support).</summary>
         public double BottomBelowPivot { get => _y.BottomBelowPivot; set => _y.BottomBelowPivot = value; }
 

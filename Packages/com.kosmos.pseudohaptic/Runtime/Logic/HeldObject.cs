@@ -101,15 +101,19 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Why the last configuration or begin failed; null when it succeeded.</summary>
         public string Error { get; private set; }
 
-        /// <summary>Applies a model, profile and user to the solver; allowed during a hold. False, keeping the last valid one, with <see cref="Error"/>.</summary>
-        public bool Configure(WeightModel model, WeightProfile profile, double standardSpeed)
+        /// <summary>Applies a model, profile and user (standard speed and cue strength) to the solver; allowed during a hold. False,
+        /// keeping the last valid one, with <see cref="Error"/>.</summary>
+        public bool Configure(WeightModel model, WeightProfile profile, double standardSpeed, double cueStrength = WeightSolver.DefaultCueStrength)
         {
             try
             {
                 if (profile == null) throw new ArgumentNullException(nameof(profile));
+                if (double.IsNaN(cueStrength) || cueStrength < WeightSolver.MinCueStrength || cueStrength > WeightSolver.MaxCueStrength)
+                    throw new ArgumentOutOfRangeException(nameof(cueStrength), cueStrength, "CueStrength must lie in [" + WeightSolver.MinCueStrength + ", " + WeightSolver.MaxCueStrength + "].");
                 WeightProfile used = ReferenceEquals(profile, _given) ? _used : WithBothHands(profile);
                 if (Solver3D == null) Solver3D = new WeightSolver3D(model, used, standardSpeed);
                 else Solver3D.Configure(model, used, standardSpeed);
+                Solver3D.CueStrength = cueStrength;
                 _given = profile;
                 _used = used;
                 MovesHorizontal = profile.Has<LateralInertia>();

@@ -112,12 +112,12 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         public static bool TryConfigure(HeldObject hold, MassSource source, double rigidbodyMass, double density, double explicitMass,
                                         VolumeQuery volume, string objectName, WeightProfile profile, string profileError, double standardSpeed,
-                                        out double rigidbodyMassToWrite, out string error)
+                                        out double rigidbodyMassToWrite, out string error, double cueStrength = WeightSolver.DefaultCueStrength)
         {
             rigidbodyMassToWrite = double.NaN;
             error = profileError ?? (profile == null ? "no profile" : null);
             if (error != null || !TryCreateModel(source, rigidbodyMass, density, explicitMass, volume, objectName, out WeightModel model, out error)) return false;
-            if (!hold.Configure(model, profile, standardSpeed)) { error = hold.Error; return false; }
+            if (!hold.Configure(model, profile, standardSpeed, cueStrength)) { error = hold.Error; return false; }
             if (WritesRigidbodyMass(source) && !double.IsNaN(rigidbodyMass)) rigidbodyMassToWrite = model.MassKg;
             return true;
         }
@@ -135,6 +135,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The user's v_std, m/s: the explicit one, or the stored calibration's.</summary>
         public static double StandardSpeed(StandardSpeedSource source, double explicitSpeed, double storedOrDefault) =>
             source == StandardSpeedSource.Explicit ? explicitSpeed : storedOrDefault;
+
+        /// <summary>The cue strength an object applies (issue 31): the user's stored one when <paramref name="fromUser"/>, else 1.</summary>
+        public static double CueStrength(bool fromUser, double stored) => fromUser ? stored : WeightSolver.DefaultCueStrength;
 
         /// <summary>The velocity a released body gets, world space, m/s.</summary>
         public static Vector3d Release(ReleaseVelocity kind, Vector3d hand, Vector3d obj) =>

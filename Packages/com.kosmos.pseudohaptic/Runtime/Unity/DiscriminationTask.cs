@@ -101,6 +101,35 @@ namespace Kosmos.PseudoHaptic
             MinStepKg = _minStepKg, StopAfterReversals = _stopAfterReversals, LastReversals = _lastReversals, MaxTrials = _maxTrials,
         };
 
+        /// <summary>Takes the procedure, plan and staircase of <paramref name="settings"/> (as the inspector would set them), for a
+        /// task another component runs (the calibration's cue-strength staircase, <see cref="CueStrengthCalibrator"/>).</summary>
+        public void Use(DiscriminationSettings settings)
+        {
+            if (settings == null) throw new ArgumentNullException(nameof(settings));
+            _procedure = settings.Procedure;
+            _standardKg = (float)settings.StandardKg;
+            _comparisonKg = ToFloats(settings.ComparisonKg);
+            _repetitions = settings.Repetitions;
+            _catchKg = ToFloats(settings.CatchKg);
+            _catchRepetitions = settings.CatchRepetitions;
+            _seed = settings.Seed;
+            _staircaseStartKg = (float)settings.StaircaseStartKg;
+            _staircaseStepKg = (float)settings.StaircaseStepKg;
+            _halvingReversals = settings.HalvingReversals;
+            _minStepKg = (float)settings.MinStepKg;
+            _stopAfterReversals = settings.StopAfterReversals;
+            _lastReversals = settings.LastReversals;
+            _maxTrials = settings.MaxTrials;
+        }
+
+        static float[] ToFloats(double[] values)
+        {
+            if (values == null) return new float[0];
+            var f = new float[values.Length];
+            for (int i = 0; i < f.Length; i++) f[i] = (float)values[i];
+            return f;
+        }
+
         /// <summary>The plan these settings give (the same for the same seed).</summary>
         public ConstantStimuliPlan Plan() => Settings.Plan();
 

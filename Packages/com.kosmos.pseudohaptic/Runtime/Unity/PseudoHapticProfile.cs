@@ -7,7 +7,9 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// The effects a scene calls for, as an asset: one switch and the settings of each of the core's effects,
     /// and the safety limits. <see cref="Build"/> turns it into the core's immutable <see cref="WeightProfile"/>;
-    /// the presets copy <see cref="NamedProfiles"/> ("paper", "paper-experiment", "gain", "xyz"). The 3D and
+    /// the presets copy <see cref="NamedProfiles"/> ("paper", "paper-experiment", "gain", "xyz", "paper-literal": its
+    /// effects, Eq. 4–6 and y ≥ 0, run through the package's solver; an asset has no hand filter, so the 1 s window and the
+    /// per-frame integration of <see cref="PaperLiteralSolver"/> are the CLI's and the core's). The 3D and
     /// two-hand effects (lateral inertia, two hands, break-away) act through <see cref="WeightSolver3D"/>, which
     /// every <see cref="PseudoHapticWeight"/> runs. Values are validated
     /// by the core when built, and an invalid one is reported with the field's name.
@@ -143,6 +145,7 @@ namespace Kosmos.PseudoHaptic
         [ContextMenu("Preset/paper-experiment")] void PresetPaperExperiment() => ApplyPreset(NamedProfiles.PaperExperimentName);
         [ContextMenu("Preset/gain")] void PresetGain() => ApplyPreset(NamedProfiles.GainName);
         [ContextMenu("Preset/xyz")] void PresetXyz() => ApplyPreset(NamedProfiles.XyzName);
+        [ContextMenu("Preset/paper-literal")] void PresetPaperLiteral() => ApplyPreset(NamedProfiles.PaperLiteralName);
 
         /// <summary>The effects a profile asset lists, in the order they are built (within a stage, as in NamedProfiles.Paper).</summary>
         static readonly Type[] s_effectTypes =

@@ -38,6 +38,8 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] StandardSpeedSource _standardSpeedSource = StandardSpeedSource.UserCalibration;
         [Tooltip("v_std, m/s, when Standard Speed Source is Explicit.")]
         [SerializeField] float _explicitStandardSpeed = (float)WeightSolver.DefaultStandardSpeed;
+        [Tooltip("Apply the user's cue strength from their calibration (issue 31: tuned from their own weight threshold; 1 when none is stored). Off: the paper's cue, strength 1.")]
+        [SerializeField] bool _userCueStrength = true;
         [Header("Release")]
         [SerializeField] ReleaseVelocity _releaseVelocity = ReleaseVelocity.Object;
         [Header("Rig")]
@@ -66,6 +68,10 @@ namespace Kosmos.PseudoHaptic
         public double MassKg => Hold.MassKg;
         public double Gain => Solver != null ? Solver.Gain : double.NaN;
         public double StandardSpeed => Solver != null ? Solver.StandardSpeed : double.NaN;
+        /// <summary>The cue strength the solver runs at (NaN until configured).</summary>
+        public double CueStrength => Solver != null ? Solver.CueStrength : double.NaN;
+        /// <summary>Whether the user's stored cue strength applies (else 1).</summary>
+        public bool UserCueStrength { get => _userCueStrength; set { _userCueStrength = value; _watch.MarkDirty(); } }
         /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
         public double Offset => IsHeld ? Solver.Offset : 0;
         public HandSample LastHand => Hold.LastHand;
@@ -149,13 +155,16 @@ namespace Kosmos.PseudoHaptic
         public double ResolveStandardSpeed() =>
             WeightSettings.StandardSpeed(_standardSpeedSource, _explicitStandardSpeed, UserCalibrationStore.StandardSpeedOrDefault);
 
+        /// <summary>The cue strength this object applies: the user's stored one, or 1.</summary>
+        public double ResolveCueStrength() => WeightSettings.CueStrength(_userCueStrength, UserCalibrationStore.CueStrengthOrDefault);
+
         /// <summary>Applies the settings to the solver (also during a hold); on invalid ones logs the reason, keeps the last valid configuration, returns false.</summary>
         public bool Configure()
         {
             _watch.Configured(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
             TryGetProfile(out WeightProfile profile, out string profileError);
             bool ok = WeightSettings.TryConfigure(Hold, _massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
-                                                  Volume, name, profile, profileError, ResolveStandardSpeed(), out double write, out _error);
+                                                  Volume, name, profile, profileError, ResolveStandardSpeed(), out double write, out _error, ResolveCueStrength());
             if (!ok) Debug.LogError("Pseudo-haptic weight on '" + name + "' is not configured: " + _error, this);
             if (!double.IsNaN(write)) Body.mass = (float)write;
             return ok;

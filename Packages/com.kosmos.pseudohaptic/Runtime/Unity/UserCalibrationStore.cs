@@ -59,6 +59,26 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The current user's v_std, or the solver's default when the user has not calibrated.</summary>
         public static double StandardSpeedOrDefault => Current != null ? Current.standardSpeed : WeightSolver.DefaultStandardSpeed;
 
+        /// <summary>The current user's cue strength (issue 31), or 1 when the user has none stored.</summary>
+        public static double CueStrengthOrDefault => Current != null ? Current.cueStrength : WeightSolver.DefaultCueStrength;
+
+        /// <summary>
+        /// Stores a tuned cue strength for <paramref name="userId"/> beside their standard speed (a user without a stored
+        /// calibration gets the default standard speed, with no lifts). Throws <see cref="ArgumentException"/> for a strength
+        /// outside [1/3, 3], as <see cref="Save"/> does for a record it refuses.
+        /// </summary>
+        public static string SaveCueStrength(string userId, double cueStrength, double weber)
+        {
+            if (string.IsNullOrWhiteSpace(userId)) userId = s_currentUserId;
+            if (!TryLoad(userId, out UserCalibration c, out _))
+                c = new UserCalibration { userId = userId, standardSpeed = WeightSolver.DefaultStandardSpeed };
+            c.userId = userId;
+            c.cueStrength = cueStrength;
+            c.cueWeber = weber;
+            c.cueTunedAtUtc = DateTime.UtcNow.ToString("o", System.Globalization.CultureInfo.InvariantCulture);
+            return Save(c);
+        }
+
         public static string PathFor(string userId) => Path.Combine(Folder, "user-" + SafeId(userId) + ".json");
 
         /// <summary>

@@ -116,7 +116,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void ReplayingTheRecordedHandGivesTheRecordedObject()
         {
             // Replay takes tracked as confident; with no low-confidence frames it sees what the solver saw.
-            foreach (string profile in NamedProfiles.Names)
+            foreach (string profile in NamedProfiles.PipelineNames)
             {
                 var recording = Record(Solver(2.0, profile, 0.6), 200, withLosses: false);
                 double[] replayed = TraceReplay.Run(Solver(2.0, profile, 0.6), recording.ToTrace());

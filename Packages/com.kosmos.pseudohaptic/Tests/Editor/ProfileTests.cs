@@ -8,7 +8,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void NamedProfilesAreWhatTheyClaim()
         {
-            Assert.That(NamedProfiles.Names, Is.EqualTo(new[] { "paper", "paper-experiment", "gain", "xyz" }));
+            Assert.That(NamedProfiles.Names, Is.EqualTo(new[] { "paper", "paper-experiment", "gain", "xyz", "paper-literal" }));
             foreach (var name in NamedProfiles.Names) Assert.That(NamedProfiles.Get(name).Name, Is.EqualTo(name));
             Assert.That(NamedProfiles.Paper.Has<WeightGain>() && NamedProfiles.Paper.Has<ExperimentalBlend>() && NamedProfiles.Paper.Has<OffsetCorrection>() && NamedProfiles.Paper.Has<FloorClamp>(), Is.True);
             Assert.That(NamedProfiles.Gain.Has<ExperimentalBlend>(), Is.False);

@@ -67,7 +67,7 @@ namespace Kosmos.PseudoHaptic.Tests
         // Found by a surviving mutant: a hold begun with no tracked hand took the hand to be at height 0, and under the
         // paper profile the offset correction pulled the object 0.5 m down toward it in the first second.
         [Test]
-        public void AHoldBegunBeforeTheHandIsTrackedStaysPutUntilAHandComesUnderEveryProfile([ValueSource(typeof(NamedProfiles), nameof(NamedProfiles.Names))] string profile)
+        public void AHoldBegunBeforeTheHandIsTrackedStaysPutUntilAHandComesUnderEveryProfile([ValueSource(typeof(NamedProfiles), nameof(NamedProfiles.PipelineNames))] string profile)
         {
             var s = new WeightSolver(WeightModel.FromMass(5), NamedProfiles.Get(profile));
             s.BeginHold(double.NaN, 0.7);

@@ -254,6 +254,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
             double ll = LogLik(z, n, k, lapse, a, b);
             if (double.IsNegativeInfinity(ll)) { a = 0; b = 1; ll = LogLik(z, n, k, lapse, a, b); }
             double damping = 0;
+            // Where rounding stops the ascent, the gradient left is of the order of the log-likelihood's rounding times the
+            // curvature, which grows with the trials: the tolerance for "at the maximum to rounding" grows with them too
+            // (a fixed 1e-6 refused reasonable fits of 360 trials, issue 31's simulated observers).
+            int total = 0;
+            for (int i = 0; i < n.Length; i++) total += n[i];
+            double atRounding = 1e-6 * Math.Max(1, total);
             for (iterations = 1; iterations <= 500; iterations++)
             {
                 // Gradient and Hessian through η: ℓ_i(p) with p = γ + (1 − 2γ)Φ(η).
@@ -308,14 +314,14 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         double gain = nll - ll;
                         ll = nll;
                         improved = true;
-                        if (moved < 1e-14 * (1 + Math.Abs(a) + Math.Abs(b)) && gain <= 1e-15 * (1 + Math.Abs(ll))) return gradNorm < 1e-6;
+                        if (moved < 1e-14 * (1 + Math.Abs(a) + Math.Abs(b)) && gain <= 1e-15 * (1 + Math.Abs(ll))) return gradNorm < atRounding;
                         break;
                     }
                     scale *= 0.5;
                 }
                 damping = improved && scale == 1 ? tau * 0.1 : Math.Max(tau * 10, 1e-6);
                 if (damping < 1e-12) damping = 0;
-                if (!improved) return gradNorm < 1e-6; // no ascent direction left: at the maximum to rounding
+                if (!improved) return gradNorm < atRounding; // no ascent direction left: at the maximum to rounding
                 if (Math.Abs(a) > 1e8 || Math.Abs(b) > 1e8) return false;
             }
             return false;

@@ -14,13 +14,19 @@ namespace Kosmos.PseudoHaptic.Samples
         const float BallRadius = 0.035f;
 
         public static DiscriminationTask Build(Transform root, PseudoHapticProfile profile, string participant, IReadOnlyList<IHandPoseSource> hands = null)
+            => Build(root, profile, participant, hands, new Vector3(0, SampleContent.TableHeight, 0.45f), userCueStrength: true);
+
+        /// <summary>The same with the table at <paramref name="tableAt"/>; <paramref name="userCueStrength"/> false renders both
+        /// balls at the default cue strength whatever the user's (the calibration's cue-strength staircase, issue 31).</summary>
+        public static DiscriminationTask Build(Transform root, PseudoHapticProfile profile, string participant, IReadOnlyList<IHandPoseSource> hands, Vector3 tableAt, bool userCueStrength)
         {
             if (hands != null)
                 foreach (IHandPoseSource hand in hands) Poker(root, hand);
-            Transform surface = SampleContent.Table(root, "Table", new Vector3(0, SampleContent.TableHeight, 0.45f), new Vector2(0.9f, 0.5f));
+            Transform surface = SampleContent.Table(root, "Table", tableAt, new Vector2(0.9f, 0.5f));
             // Same look, no names: the labels say only the side.
             var left = SampleContent.Ball(surface, "Left", new Vector3(-0.2f, 0, 0.05f), BallRadius, 0.5f, profile);
             var right = SampleContent.Ball(surface, "Right", new Vector3(0.2f, 0, 0.05f), BallRadius, 0.5f, profile);
+            left.UserCueStrength = right.UserCueStrength = userCueStrength;
             var leftButton = Button(surface, "Left Heavier", new Vector3(-0.2f, 0.02f, -0.17f));
             var rightButton = Button(surface, "Right Heavier", new Vector3(0.2f, 0.02f, -0.17f));
             TextMesh display = SampleContent.Label(surface, "Lift both objects, then poke the heavier side.", new Vector3(0, 0.45f, 0.2f));

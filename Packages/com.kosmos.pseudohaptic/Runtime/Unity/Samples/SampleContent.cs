@@ -143,7 +143,27 @@ namespace Kosmos.PseudoHaptic.Samples
             var calibrator = go.AddComponent<StandardSpeedCalibrator>();
             calibrator.InjectHand(hand);
             calibrator.InjectDisplay(display);
+            CueStrengthStation(root, calibrator, hand);
             return calibrator;
+        }
+
+        /// <summary>
+        /// The calibration's second step (issue 31), beside the golf-ball table: two balls and two "heavier" buttons run by a
+        /// <see cref="DiscriminationTask"/> at the default cue strength, and a <see cref="CueStrengthCalibrator"/> that begins its
+        /// short 1-up-2-down staircase on mass once the golf-ball lifts are accepted and stores the tuned strength.
+        /// </summary>
+        public static CueStrengthCalibrator CueStrengthStation(Transform root, StandardSpeedCalibrator after, IHandPoseSource hand)
+        {
+            var station = new GameObject("Cue Strength Station");
+            station.transform.SetParent(root, false);
+            var profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperExperimentName);
+            DiscriminationTask task = DiscriminationStation.Build(station.transform, profile, "", hand != null ? new[] { hand } : null,
+                new Vector3(1.0f, TableHeight, 0.45f), userCueStrength: false);
+            var go = new GameObject("Cue Strength Calibrator");
+            go.transform.SetParent(station.transform, false);
+            var cue = go.AddComponent<CueStrengthCalibrator>();
+            cue.Inject(task, after, null);
+            return cue;
         }
 
         /// <summary>Height of the Playground's high shelf top, m (above a standing user's shoulder: height deceleration).</summary>

@@ -11,7 +11,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
 {
     /// <summary>
     /// Issue 22, "Real recordings in the tests": recordings of real hands replayed through <see cref="WeightSolver3D"/> under
-    /// every named profile (<see cref="NamedProfiles.Names"/>) for the standard weight and 0.5, 1, 2 and 5 kg, judged by
+    /// every named profile the pipeline runs (<see cref="NamedProfiles.PipelineNames"/>) for the standard weight and 0.5, 1, 2 and 5 kg, judged by
     /// the issue's rules, each of them the issue's bound, not the code's:
     /// <list type="number">
     /// <item>finite everywhere: every frame's object x, y and z;</item>
@@ -61,6 +61,14 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             string path = SharedData.RequireFile("mocap-hand-100hz.csv");
             var recording = Degraded(ReadRecording(path), seed);
             Check(recording);
+        }
+
+        /// <summary>The same at the cue strengths 1/3 and 3 (issue 31), one headset.</summary>
+        [Test]
+        public void TheSharedMotionCaptureDegradedAsAQuestDeliversItAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s)
+        {
+            string path = SharedData.RequireFile("mocap-hand-100hz.csv");
+            Check(Degraded(ReadRecording(path), 1), s);
         }
 
         /// <summary>Each <c>*.csv</c> of the folder <c>PSEUDOHAPTIC_RECORDINGS</c> names, as recorded.</summary>
@@ -232,9 +240,9 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         /// <paramref name="to"/>; before the grab the object is where the hold begins. The second hand is tracked but does
         /// not grip.
         /// </summary>
-        internal static Held Replay(Recording r, string profile, double massKg, int from, int to)
+        internal static Held Replay(Recording r, string profile, double massKg, int from, int to, double cueStrength = 1)
         {
-            var solver = new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Get(profile));
+            var solver = new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Get(profile)).At(cueStrength);
             var a = r.A[from];
             solver.BeginHold(a, HandPose.Lost, a.X, a.Y, a.Z);
             solver.SetGrip(2, false);
@@ -368,7 +376,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         // ------------------------------------------------------------------------------------------------ the check
 
         /// <summary>Every rule, every profile, every mass; prints the figures, then reports every rule broken.</summary>
-        static void Check(Recording r)
+        static void Check(Recording r, double cueStrength = 1)
         {
             int first = FirstUsable(r), last = LastUsable(r);
             Assert.That(first, Is.GreaterThanOrEqualTo(0), r.Name + ": no frame with a usable hand");
@@ -382,12 +390,14 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             log.AppendLine($"== {r.Name}: {r.Count} frames, {r.T[r.Count - 1] - r.T[0]:F2} s, {tracked} tracked from the grab at {r.T[first]:F3} s, {lifts.Count} lift(s) of ≥ 10 cm");
             log.AppendLine("   " + r.Note);
 
-            foreach (var profile in NamedProfiles.Names)
+            // Every profile the package's pipeline runs; paper-literal is the paper as printed (a 1 s mean lags half a
+            // second: the accuracy page measures it), which these rules are not about.
+            foreach (var profile in NamedProfiles.PipelineNames)
             {
                 var worstStep = (beyond: double.NegativeInfinity, mass: 0.0, t: 0.0, y: double.NegativeInfinity);
                 foreach (var mass in Masses)
                 {
-                    var h = Replay(r, profile, mass, first, r.Count - 1);
+                    var h = Replay(r, profile, mass, first, r.Count - 1, cueStrength);
                     string what = $"{r.Name}, {profile}, {mass} kg";
                     for (int i = 0; i < r.Count; i++)
                         if (!double.IsFinite(h.X[i]) || !double.IsFinite(h.Y[i]) || !double.IsFinite(h.Z[i]))
@@ -429,7 +439,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                     var offsets = new double[Masses.Length];
                     for (int m = 0; m < Masses.Length; m++)
                     {
-                        var h = Replay(r, profile, Masses[m], lift.Start, lift.Top);
+                        var h = Replay(r, profile, Masses[m], lift.Start, lift.Top, cueStrength);
                         offsets[m] = r.A[lift.Top].Y - h.Y[lift.Top];
                     }
                     string line = string.Join(", ", Masses.Select((m, k) => $"{m} kg {offsets[k] * 1000:F1}"));

@@ -76,16 +76,22 @@ namespace Kosmos.PseudoHaptic.Tests
         static double Sign(Random rng) => rng.NextDouble() < 0.5 ? -1 : 1;
 
         [Test]
-        public void ArtifactsLeaveNothingHalfASecondLater([Range(1, 250)] int seed)
+        public void ArtifactsLeaveNothingHalfASecondLater([Range(1, 250)] int seed) => ArtifactsLeaveNothingHalfASecondLaterAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void ArtifactsLeaveNothingHalfASecondLaterAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 250, 10)] int seed) => ArtifactsLeaveNothingHalfASecondLaterAt(s, seed);
+
+        static void ArtifactsLeaveNothingHalfASecondLaterAt(double s, int seed)
         {
             var c = Make(seed);
             var clean = c.Headset().Render(c.Path);
             var h = c.Headset();
             c.AddArtifact(h);
             var degraded = h.Render(c.Path);
-            var solver = Run.Solver(c.MassKg, NamedProfiles.Get(c.Profile), c.StandardSpeed);
+            var solver = Run.Solver(c.MassKg, NamedProfiles.Get(c.Profile), c.StandardSpeed).At(s);
             var a = Run.Replay(solver, clean);
-            var b = Run.Replay(Run.Solver(c.MassKg, NamedProfiles.Get(c.Profile), c.StandardSpeed), degraded);
+            var b = Run.Replay(Run.Solver(c.MassKg, NamedProfiles.Get(c.Profile), c.StandardSpeed).At(s), degraded);
             int i = QuestLikeInput.FrameAt(clean, c.ArtifactEnd + 0.5);
             double tolerance = c.MassKg <= PhysicalConstants.StandardMassKg ? 0.001 : 0.010;
             Assert.That(Math.Abs(b[i] - a[i]), Is.LessThanOrEqualTo(tolerance), c.Description + ": 0.5 s after the artifact");
@@ -95,13 +101,19 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
-        public void TheStandardWeightIsRigidThroughEverything([Range(1, 200)] int seed)
+        public void TheStandardWeightIsRigidThroughEverything([Range(1, 200)] int seed) => TheStandardWeightIsRigidThroughEverythingAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void TheStandardWeightIsRigidThroughEverythingAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 200, 10)] int seed) => TheStandardWeightIsRigidThroughEverythingAt(s, seed);
+
+        static void TheStandardWeightIsRigidThroughEverythingAt(double s, int seed)
         {
             var c = Make(seed);
             var h = c.Headset();
             c.AddArtifact(h);
             var frames = h.Render(c.Path);
-            var y = Run.Replay(Run.Solver(PhysicalConstants.StandardMassKg, NamedProfiles.Get(c.Profile), c.StandardSpeed), frames);
+            var y = Run.Replay(Run.Solver(PhysicalConstants.StandardMassKg, NamedProfiles.Get(c.Profile), c.StandardSpeed).At(s), frames);
             double settled = c.ArtifactEnd + 0.3;
             for (int i = 0; i < frames.Length; i++)
             {

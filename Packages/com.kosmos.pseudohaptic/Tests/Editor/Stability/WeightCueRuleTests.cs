@@ -20,7 +20,13 @@ namespace Kosmos.PseudoHaptic.Tests
         const double StatedCeiling = 0.2 * 1.3 + 0.02;
 
         [Test]
-        public void HeftingLeavesTheOffsetWhereItWas([Range(1, 240)] int seed)
+        public void HeftingLeavesTheOffsetWhereItWas([Range(1, 240)] int seed) => HeftingLeavesTheOffsetWhereItWasAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void HeftingLeavesTheOffsetWhereItWasAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 240, 10)] int seed) => HeftingLeavesTheOffsetWhereItWasAt(s, seed);
+
+        static void HeftingLeavesTheOffsetWhereItWasAt(double s, int seed)
         {
             var rng = new Random(seed);
             string profile = Profiles[rng.Next(Profiles.Length)];
@@ -37,7 +43,7 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             path.Hold(0.6);
             var frames = QuestLikeInput.Headset(rng, seed).Render(path);
-            var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd), frames);
+            var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd).At(s), frames);
             // hand − object at rest before and after: the median over the last 0.3 s of each rest (a glitched pose is one
             // frame of it).
             double end = frames[frames.Length - 1].Time;
@@ -48,7 +54,13 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
-        public void TheVisibleOffsetNeverExceedsTheStatedCeiling([Range(1, 240)] int seed)
+        public void TheVisibleOffsetNeverExceedsTheStatedCeiling([Range(1, 240)] int seed) => TheVisibleOffsetNeverExceedsTheStatedCeilingAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void TheVisibleOffsetNeverExceedsTheStatedCeilingAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 240, 10)] int seed) => TheVisibleOffsetNeverExceedsTheStatedCeilingAt(s, seed);
+
+        static void TheVisibleOffsetNeverExceedsTheStatedCeilingAt(double s, int seed)
         {
             var rng = new Random(seed);
             string profile = rng.NextDouble() < 0.5 ? "paper" : "xyz";
@@ -62,13 +74,19 @@ namespace Kosmos.PseudoHaptic.Tests
             var headset = QuestLikeInput.Headset(rng, seed);
             if (rng.NextDouble() < 0.5) headset.Drop(QuestLikeInput.Uniform(rng, 0.3, path.Duration - 0.5), QuestLikeInput.Uniform(rng, 0.05, 1));
             var frames = headset.Render(path);
-            var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd), frames);
+            var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd).At(s), frames);
             double worst = Run.MaxOffset(frames, y);
             Assert.That(worst, Is.LessThanOrEqualTo(StatedCeiling + 1e-12), $"seed {seed}: {mass:G3} kg, {profile}, v_std {vStd:F2}");
         }
 
         [Test]
-        public void AFasterLiftNeverEndsBehindASlowerOne([Range(1, 240)] int seed)
+        public void AFasterLiftNeverEndsBehindASlowerOne([Range(1, 240)] int seed) => AFasterLiftNeverEndsBehindASlowerOneAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void AFasterLiftNeverEndsBehindASlowerOneAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 240, 10)] int seed) => AFasterLiftNeverEndsBehindASlowerOneAt(s, seed);
+
+        static void AFasterLiftNeverEndsBehindASlowerOneAt(double s, int seed)
         {
             var rng = new Random(seed);
             string profile = Profiles[rng.Next(Profiles.Length)];
@@ -80,7 +98,7 @@ namespace Kosmos.PseudoHaptic.Tests
             {
                 var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(0.8 + rise, seconds).Hold(1.0);
                 var frames = QuestLikeInput.Headset(new Random(seed), seed).Render(path);
-                var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd), frames);
+                var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd).At(s), frames);
                 double end = frames[frames.Length - 1].Time;
                 return QuestLikeInput.MedianOver(frames, i => y[i], end - 0.3, end); // at rest: one glitched pose is not the end
             }

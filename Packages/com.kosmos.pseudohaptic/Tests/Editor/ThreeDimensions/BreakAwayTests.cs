@@ -22,14 +22,14 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         };
 
         /// <summary>A lift of <paramref name="rise"/> m in <paramref name="seconds"/> through the simulated Quest; whether the hold broke.</summary>
-        static bool Breaks(string profile, double massKg, double rise, double seconds, double distance, int seed, double standardSpeed = 0.5, Action<HeadsetSimulator> artifact = null)
+        static bool Breaks(string profile, double massKg, double rise, double seconds, double distance, int seed, double standardSpeed = 0.5, Action<HeadsetSimulator> artifact = null, double cueStrength = 1)
         {
             var path = HandPath.StartAt(0.9).Hold(0.4).MoveTo(0.9 + rise, seconds).Hold(0.8);
             var rng = new Random(seed);
             var headset = QuestLikeInput.Headset(rng, seed);
             artifact?.Invoke(headset);
             var frames = headset.Render(path);
-            var solver = new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Get(profile).With(new BreakAway(distance)), standardSpeed);
+            var solver = new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Get(profile).With(new BreakAway(distance)), standardSpeed).At(cueStrength);
             solver.BeginHold(new HandPose(0, frames[0].HandY, 0, true, true, frames[0].PoseTime), 0, frames[0].HandY, 0);
             for (int i = 1; i < frames.Length && solver.IsHolding; i++)
             {
@@ -51,14 +51,22 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
 
         [Test]
         public void UnderTheCorrectionAnOrdinaryLiftNeverBreaksAndAYankAlwaysDoes([Values("paper", "xyz")] string profile, [Range(1, 30)] int seed)
+            => OrdinaryAndYank(profile, seed, 1);
+
+        /// <summary>The same at the cue strengths 1/3 and 3 (issue 31), every fifth seed.</summary>
+        [Test]
+        public void UnderTheCorrectionAnOrdinaryLiftNeverBreaksAndAYankAlwaysDoesAtOtherCueStrengths([Values("paper", "xyz")] string profile,
+            [ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 30, 5)] int seed) => OrdinaryAndYank(profile, seed, s);
+
+        static void OrdinaryAndYank(string profile, int seed, double s)
         {
             // Issue 23, at 0.3 m: a lift of 0.4 m in 1–2 s of up to 5 kg never breaks; a yank of 1 m in 0.3 s of 2–5 kg always
             // does; both through the simulated Quest (30 Hz poses, 45 ms late, jitter, glitches, low confidence).
             var rng = new Random(seed);
             double ordinaryMass = 0.2 + 4.8 * rng.NextDouble(), yankMass = 2 + 3 * rng.NextDouble();
             double ordinarySeconds = 1 + rng.NextDouble();
-            Assert.That(Breaks(profile, ordinaryMass, 0.4, ordinarySeconds, 0.3, seed), Is.False, $"{ordinaryMass:F2} kg lifted 0.4 m in {ordinarySeconds:F2} s");
-            Assert.That(Breaks(profile, yankMass, 1.0, 0.3, 0.3, seed), Is.True, $"{yankMass:F2} kg yanked 1 m in 0.3 s");
+            Assert.That(Breaks(profile, ordinaryMass, 0.4, ordinarySeconds, 0.3, seed, cueStrength: s), Is.False, $"{ordinaryMass:F2} kg lifted 0.4 m in {ordinarySeconds:F2} s");
+            Assert.That(Breaks(profile, yankMass, 1.0, 0.3, 0.3, seed, cueStrength: s), Is.True, $"{yankMass:F2} kg yanked 1 m in 0.3 s");
         }
 
         [Test]

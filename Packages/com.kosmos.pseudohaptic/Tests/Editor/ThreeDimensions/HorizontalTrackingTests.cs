@@ -34,7 +34,13 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
-        public void ArtifactsLeaveNothingSideways([Range(1, 200)] int seed)
+        public void ArtifactsLeaveNothingSideways([Range(1, 200)] int seed) => ArtifactsLeaveNothingSidewaysAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void ArtifactsLeaveNothingSidewaysAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 200, 10)] int seed) => ArtifactsLeaveNothingSidewaysAt(s, seed);
+
+        static void ArtifactsLeaveNothingSidewaysAt(double s, int seed)
         {
             var rng = new Random(seed);
             double mass = Masses[rng.Next(Masses.Length)], distance = 0.2 + 0.8 * rng.NextDouble(), seconds = 0.4 + 1.6 * rng.NextDouble();
@@ -65,8 +71,8 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 what = $"a loss of {length:F2} s and a {snap * 100:F1} cm snap";
                 length += 0.1;
             }
-            var a = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz), clean);
-            var b = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz), degraded);
+            var a = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz).At(s), clean);
+            var b = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz).At(s), degraded);
             double judged = at + length + 0.5 + 0.045;
             int i = Array.FindIndex(clean.T, t => t >= judged);
             double tolerance = mass <= PhysicalConstants.StandardMassKg ? 0.001 : 0.010;
@@ -77,7 +83,13 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
-        public void ASidewaysHeftLeavesTheObjectWhereItWas([Range(1, 60)] int seed)
+        public void ASidewaysHeftLeavesTheObjectWhereItWas([Range(1, 60)] int seed) => ASidewaysHeftLeavesTheObjectWhereItWasAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void ASidewaysHeftLeavesTheObjectWhereItWasAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 60, 5)] int seed) => ASidewaysHeftLeavesTheObjectWhereItWasAt(s, seed);
+
+        static void ASidewaysHeftLeavesTheObjectWhereItWasAt(double s, int seed)
         {
             var rng = new Random(seed);
             double mass = Masses[1 + rng.Next(Masses.Length - 1)], amplitude = 0.05 + 0.1 * rng.NextDouble(), half = 0.1 + 0.9 * rng.NextDouble();
@@ -88,7 +100,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 z = 0.1 * Headset3D.MinJerk(t, 0.3, 0.8, 0, 1);
             };
             var f = new Headset3D { JitterSd = 0.0015, Seed = seed }.Render(heft, null, 2 + 2 * half + 1.5);
-            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz), f);
+            var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(mass), NamedProfiles.Xyz).At(s), f);
             int before = Array.FindIndex(f.T, t => t >= 1.95);
             Assert.That(r.X[r.X.Length - 1], Is.EqualTo(r.X[before]).Within(0.010), $"seed {seed}: {mass} kg, ±{amplitude * 100:F0} cm in {half:F2} s each way");
             Assert.That(r.Z[r.Z.Length - 1], Is.EqualTo(r.Z[before]).Within(0.010));

@@ -160,7 +160,13 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         static double Median(double[] v) => Math.Max(Math.Min(v[0], v[1]), Math.Min(Math.Max(v[0], v[1]), v[2]));
 
         [Test]
-        public void HeavierTrailsMoreAtEverySpeedAndEveryLagStaysUnderTheBound()
+        public void HeavierTrailsMoreAtEverySpeedAndEveryLagStaysUnderTheBound() => HeavierTrailsMoreAt(1);
+
+        /// <summary>The same order and bounds at the cue strengths 1/3 and 3 (issue 31).</summary>
+        [Test]
+        public void HeavierTrailsMoreAtEverySpeedAndEveryLagStaysUnderTheBoundAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s) => HeavierTrailsMoreAt(s);
+
+        static void HeavierTrailsMoreAt(double s)
         {
             // Issue 23: carried sideways at 0.5 m/s, 0.5, 1, 2 and 5 kg trail at least 3 mm apart; at every speed up to
             // 3 m/s heavier trails strictly more, within 0.10 m; no overshoot; under 1 cm within 1 s of the hand stopping.
@@ -172,7 +178,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                     double distance = speed * 1.5; // constant speed for 1.5 s, after 0.5 s of rest
                     HandPath3D path = (double t, out double x, out double y, out double z) => { x = speed * Math.Min(1.5, Math.Max(0, t - 0.5)); y = 1; z = 0; };
                     var frames = new Headset3D { FrameRate = 90 }.Render(path, null, 3.5);
-                    var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(m), NamedProfiles.Xyz), frames);
+                    var r = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(m), NamedProfiles.Xyz).At(s), frames);
                     double lag = 0;
                     for (int i = 0; i < r.X.Length; i++)
                     {
@@ -182,7 +188,7 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                         if (frames.T[i] > 1.5 && frames.T[i] < 2.0) lag = Math.Max(lag, l);
                         if (frames.T[i] >= 2.0 + 0.045 + 1 / 30.0 + 1) Assert.That(l, Is.LessThan(0.01), $"{m} kg at {speed} m/s: under 1 cm within 1 s");
                     }
-                    Assert.That(lag, Is.GreaterThan(previous + (speed == 0.5 ? 0.003 : 0)), $"{m} kg at {speed} m/s trails more than the lighter one");
+                    Assert.That(lag, Is.GreaterThan(previous + (speed == 0.5 && s == 1 ? 0.003 : 0)), $"{m} kg at {speed} m/s trails more than the lighter one");
                     TestContext.Progress.WriteLine($"lateral lag at {speed} m/s, {m} kg: {lag * 1000:F1} mm");
                     previous = lag;
                 }

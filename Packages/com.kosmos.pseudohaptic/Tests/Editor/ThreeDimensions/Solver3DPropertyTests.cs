@@ -50,13 +50,19 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
-        public void HardCasesNeverGiveNaNOrAJump([Range(1, 300)] int seed)
+        public void HardCasesNeverGiveNaNOrAJump([Range(1, 300)] int seed) => HardCasesNeverGiveNaNOrAJumpAt(1, seed);
+
+        /// <summary>The same rule at the cue strengths 1/3 and 3 (issue 31), on a subset of the seeds.</summary>
+        [Test]
+        public void HardCasesNeverGiveNaNOrAJumpAtOtherCueStrengths([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s, [Range(1, 300, 10)] int seed) => HardCasesNeverGiveNaNOrAJumpAt(s, seed);
+
+        static void HardCasesNeverGiveNaNOrAJumpAt(double s, int seed)
         {
             var rng = new Random(seed);
             double mass = Math.Exp(Math.Log(0.001) + rng.NextDouble() * (Math.Log(1e6) - Math.Log(0.001)));
-            var profile = NamedProfiles.Get(NamedProfiles.Names[rng.Next(NamedProfiles.Names.Count)]);
+            var profile = NamedProfiles.Get(NamedProfiles.PipelineNames[rng.Next(NamedProfiles.PipelineNames.Count)]);
             if (rng.NextDouble() < 0.3) profile = profile.With(new BreakAway(0.05 + rng.NextDouble()));
-            var solver = new WeightSolver3D(WeightModel.FromMass(mass), profile, 0.05 + 4.95 * rng.NextDouble());
+            var solver = new WeightSolver3D(WeightModel.FromMass(mass), profile, 0.05 + 4.95 * rng.NextDouble()).At(s);
             double hx = 0, hy = 1, hz = 0, t = 0, poseT = 0, sep = 0.3;
             solver.BeginHold(new HandPose(hx, hy, hz), new HandPose(hx + sep, hy, hz), hx + sep / 2, hy, hz);
             double px = solver.ObjectX, py = solver.ObjectY, pz = solver.ObjectZ;

@@ -1,0 +1,82 @@
+using Kosmos.PseudoHaptic.Cli.CommandLine;
+using Kosmos.PseudoHaptic.Cli.Files;
+using Kosmos.PseudoHaptic.Evaluation;
+
+namespace Kosmos.PseudoHaptic.Cli.Commands;
+
+/// <summary>
+/// <c>pseudohaptic tune --trials T.csv --participant P --out USER.json [--condition C] [--masses LIST]</c> (issue 31):
+/// fits this participant's psychometric function for the cue as rendered (the existing maximum-likelihood fit, no lapse),
+/// and writes the smallest cue strength at which the scene's adjacent masses are at least one JND apart for this person
+/// (<see cref="CueStrengthTuning"/>; ALGORITHM.md §12, evaluation.md §9).
+/// </summary>
+public static class TuneCommand
+{
+    public static CliCommand Define() => new(
+        "tune",
+        "Fit one participant's weight-discrimination answers and write the cue strength that puts the scene's adjacent masses one JND apart for them (USER.json, for replay --user and demo --user; ALGORITHM.md §12)",
+        Run,
+        new[]
+        {
+            "pseudohaptic tune --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --participant P1 --condition pseudo-haptic --out user-P1.json",
+        },
+        CliCommand.Value("--trials", "T.csv", "the discrimination kit's trials file as the headset writes it: participant,condition,trial,standard,comparison,first,catch,response (standard and comparison in kg, rendered at cue strength 1)", required: true),
+        CliCommand.Value("--participant", "P", "whose answers to fit", required: true),
+        CliCommand.Value("--out", "USER.json", "where the user's file goes: participant, cueStrength, weber, the fit and the model; replaced whole or not at all", required: true),
+        CliCommand.Value("--condition", "C", "the condition to fit (default: the participant's only one; required when they have several)"),
+        CliCommand.Value("--masses", "LIST", $"the scene's masses, kg, comma-separated (default Experiment 1's boxes {string.Join(",", CueStrengthTuning.ExperimentOneBoxes)})"));
+
+    public static int Run(string[] args) => Cli.Run(args.Prepend("tune").ToArray());
+
+    /// <summary>
+    /// What tune computes from read answers: the participant's trials in the condition (the only one when
+    /// <paramref name="condition"/> is null), at the standard with the most trials, fitted (no lapse), and the tuning.
+    /// Errors are <see cref="CliException"/>s naming the option or <paramref name="file"/>.
+    /// </summary>
+    public static (double Standard, PsychometricFit Fit, CueStrengthTuning Tuning, int Trials, string Condition) Tune(
+        IReadOnlyList<TrialAnswer> answers, string participant, string? condition, double[] masses, string file)
+    {
+        var mine = answers.Where(a => a.Participant == participant).ToList();
+        if (mine.Count == 0)
+            throw new CliException($"option --participant: {Messages.OneLine(participant)} has no trials in {file} (participants: {Messages.OneLine(string.Join(", ", answers.Select(a => a.Participant).Distinct().Take(10)))})");
+        var conditions = mine.Select(a => a.Condition).Distinct().ToList();
+        if (condition == null)
+        {
+            if (conditions.Count > 1)
+                throw new CliException($"option --condition: {Messages.OneLine(participant)} has trials in {conditions.Count} conditions of {file} ({Messages.OneLine(string.Join(", ", conditions))}); choose the one with the cue as rendered");
+            condition = conditions[0];
+        }
+        else if (!conditions.Contains(condition))
+            throw new CliException($"option --condition: {Messages.OneLine(participant)} has no trials in condition '{Messages.OneLine(condition)}' of {file} (conditions: {Messages.OneLine(string.Join(", ", conditions))})");
+        var group = mine.Where(a => a.Condition == condition).ToList();
+        // The standard with the most trials (the first such in the file on a tie).
+        double standard = group.GroupBy(a => a.Standard).OrderByDescending(g => g.Count()).First().Key;
+        var trials = group.Where(a => a.Standard == standard).ToList();
+        if (!(standard > 0))
+            throw new CliException($"{file}:{trials[0].Line}: standard {NumberText.Format(standard)} is not a mass greater than 0 (kg)");
+        var fit = PsychometricFit.Fit(trials.Select(a => a.Comparison).ToList(), trials.Select(a => a.Response).ToList());
+        if (!fit.Estimable)
+            throw new CliException($"{file}: {Messages.OneLine(participant)}{(condition.Length > 0 ? " " + Messages.OneLine(condition) : "")} standard {NumberText.Format(standard)}: the psychometric fit is not estimable ({fit.Reason}); no cue strength can be derived");
+        return (standard, fit, CueStrengthTuning.Solve(standard, fit.Jnd, masses), trials.Count, condition);
+    }
+
+    static int Run(Options o)
+    {
+        string trialsPath = o.Require("--trials");
+        string participant = o.Require("--participant");
+        string output = o.Require("--out");
+        string? condition = o.Get("--condition");
+        double[] masses = UserFile.Masses(o.Get("--masses"));
+        var target = OutputFile.Check("--out", output, new NamedPath("--trials", trialsPath));
+
+        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        var (standard, fit, tuning, trials, chosen) = Tune(answers, participant, condition, masses, Messages.OneLine(trialsPath));
+        condition = chosen;
+        double weber = fit.Jnd / standard;
+        target.Write(w => w.Write(UserFile.Format(participant, condition, standard, fit.Jnd, weber, tuning, trials)));
+        if (!tuning.Reached)
+            Console.Error.WriteLine($"pseudohaptic tune: warning: {Messages.OneLine(participant)}: even the largest cue strength {NumberText.Format(WeightSolver.MaxCueStrength)} puts adjacent masses only {NumberText.Fixed(tuning.AdjacentCue / tuning.ThresholdCue, 2)} JND apart; cueStrength set to that bound");
+        Console.Out.WriteLine($"tune: {Messages.OneLine(participant)}: Weber {NumberText.Fixed(weber, 3)} (JND {NumberText.Fixed(fit.Jnd, 3)} kg at {NumberText.Format(standard)} kg, {trials} trials) -> cueStrength {NumberText.Fixed(tuning.CueStrength, 3)}{(tuning.Reached ? "" : " (the bound)")} for {string.Join(", ", tuning.Masses.Select(m => NumberText.Format(m)))} kg -> {Messages.OneLine(output)}");
+        return 0;
+    }
+}
