@@ -53,6 +53,16 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The hand as the hold remembers it (<see cref="MotionFrame.SteadyHand"/>), m.</summary>
         public double SteadyY;
 
+        /// <summary>Frame time the followed pose has been shown unchanged since it last entered the window of
+        /// <see cref="SteadyY"/>, s: at <see cref="SolverLimits.RepeatTime"/> it enters again (a repeated pose advances with time).</summary>
+        public double HeldFor;
+
+        /// <summary>The centre of the plausibility gate's workspace, m: the hand where the hold began (its first pose, for a
+        /// hold begun untracked); <see cref="HasWorkspace"/> once known. A pose farther than
+        /// <see cref="SolverLimits.WorkspaceRadius"/> from it is not tracked.</summary>
+        public double WorkspaceY;
+        public bool HasWorkspace;
+
         /// <summary>The offset the object shows beyond the weight's, m, gliding back to 0 at
         /// <see cref="SolverLimits.GlideSpeed"/>: what a change of mass or profile during the hold left.</summary>
         public double Glide;

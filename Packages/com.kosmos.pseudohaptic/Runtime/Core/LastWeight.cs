@@ -13,10 +13,11 @@ namespace Kosmos.PseudoHaptic
         long _hand, _base; // the followed hand (MotionFrame.HandAfter) the weight was computed for and the base as it left it, as bits (−0 is not +0)
         double _weightHand, _lift, _gain, _carriedLift, _offset, _offsetCeiling;
 
-        /// <summary>This frame shows no new pose, the hand is bit for bit the one the weight was computed for, and the base is
-        /// as computing it left it (nothing else moved it since).</summary>
+        /// <summary>This frame shows no new pose (nor the same pose taken again by the steady hand, which the base and the pace
+        /// read), the hand is bit for bit the one the weight was computed for, and the base is as computing it left it (nothing
+        /// else moved it since).</summary>
         public bool Holds(in MotionFrame f, double baseY)
-            => _valid && !f.NewPose && System.BitConverter.DoubleToInt64Bits(f.HandAfter) == _hand
+            => _valid && !f.NewPose && !f.SteadyTaken && System.BitConverter.DoubleToInt64Bits(f.HandAfter) == _hand
                && System.BitConverter.DoubleToInt64Bits(baseY) == _base;
 
         /// <summary>The stages' results into this frame.</summary>

@@ -32,6 +32,11 @@ namespace Kosmos.PseudoHaptic
         /// the gap is followed in full, as real motion.</summary>
         public bool Bridged;
 
+        /// <summary>The new pose ends a gap: it is <see cref="Bridged"/>, or more than <see cref="SolverLimits.GapTime"/> of frame
+        /// time passed since the last accepted pose (a hitch). The hand's motion across it is followed as far as the hand went,
+        /// never further: a light object's lead on it glides.</summary>
+        public bool AcrossGap;
+
         /// <summary>The first usable pose of a hold begun before the hand was tracked: it anchors the hold (the grab
         /// offset is taken here) instead of being followed.</summary>
         public bool Reanchored;

@@ -23,13 +23,42 @@ namespace Kosmos.PseudoHaptic
         /// a second hand joining) glides back to the weight's own, m/s.</summary>
         public double GlideSpeed { get; }
 
-        public SolverLimits(double maxGain = 3.0, double maxHandSpeed = 10.0, double maxFrameTime = 0.025, double glideSpeed = 0.3)
+        /// <summary>The plausibility gate's workspace, m: a pose farther than this from where the hold began (the hand that
+        /// grabbed, or the first one seen) is no hand's and is treated as not tracked, however long tracking was lost
+        /// (ALGORITHM.md §5 gives the reason for the default: the largest play area a Quest user can set up, corner to corner,
+        /// plus an arm's reach at each end).</summary>
+        public double WorkspaceRadius { get; }
+
+        public SolverLimits(double maxGain = 3.0, double maxHandSpeed = 10.0, double maxFrameTime = 0.025, double glideSpeed = 0.3,
+            double workspaceRadius = DefaultWorkspaceRadius)
         {
             MaxGain = ConfigurationGuard.InRange(maxGain, 1.0, 100.0, nameof(maxGain));
             MaxHandSpeed = ConfigurationGuard.Positive(maxHandSpeed, nameof(maxHandSpeed));
             MaxFrameTime = ConfigurationGuard.Positive(maxFrameTime, nameof(maxFrameTime));
             GlideSpeed = ConfigurationGuard.Positive(glideSpeed, nameof(glideSpeed));
+            WorkspaceRadius = ConfigurationGuard.InRange(workspaceRadius, MinWorkspaceRadius, WeightSolver.MaxCoordinate, nameof(workspaceRadius));
         }
+
+        /// <summary>The default <see cref="WorkspaceRadius"/>, m: a 7 m × 7 m play area corner to corner (9.9 m) plus an arm's
+        /// reach of about 1 m at each end.</summary>
+        public const double DefaultWorkspaceRadius = 12.0;
+
+        /// <summary>The smallest <see cref="WorkspaceRadius"/> accepted, m: a seated user's reach, both arms.</summary>
+        public const double MinWorkspaceRadius = 1.0;
+
+        /// <summary>A frame's time counts for at most this long, s: a finite frame time beyond it (a clock that jumps to 1e308) is
+        /// taken as a hitch of this length, as an infinite one is.</summary>
+        internal const double LongestHitch = 3600;
+
+        /// <summary>More frame time than this since the last accepted pose makes the next one the end of a gap, s (three 30 Hz
+        /// pose periods: a pose or two dropped in motion are not a gap): the hand's motion across it is followed as far as the
+        /// hand went and never amplified (a light object's lead glides).</summary>
+        internal const double GapTime = 0.1;
+
+        /// <summary>A pose shown unchanged for this long is the hand seen there again, s: what the hold remembers of the hand
+        /// (the median of its last three poses) takes it again, so that whatever it drives advances with time when a source
+        /// repeats its last pose exactly (a simulator, a controller at rest, tracking that holds its last pose).</summary>
+        internal const double RepeatTime = 0.1;
 
         /// <summary>Pose-to-pose motion is judged over at most this window (plus any time tracking was lost or a frame
         /// hitched), s, so a long still spell without pose timestamps does not license a teleport.</summary>

@@ -42,6 +42,12 @@ namespace Kosmos.PseudoHaptic
         LastWeight _last;
         HandSample _lastSample;  // the last sample a frame ran the pipeline for
         bool _canBeStill;        // after that frame nothing moves: the same sample again may be a still frame
+        bool _gatesWorkspace = true;
+
+        /// <summary>Whether this solver's plausibility gate judges the heights it is given against its workspace
+        /// (<see cref="SolverLimits.WorkspaceRadius"/>). <see cref="WeightSolver3D"/> judges each hand in 3D before it
+        /// gives this solver the followed point, and turns it off here.</summary>
+        internal bool GatesWorkspace { get => _gatesWorkspace; set { _gatesWorkspace = value; ForgetLastFrame(); } }
 
         public WeightModel Model { get; private set; }
         public WeightProfile Profile { get; private set; }
@@ -185,6 +191,8 @@ namespace Kosmos.PseudoHaptic
             _state.Estimator.Reset(handOk ? handY : double.NaN, poseTime, objectY);
             _state.GrabOffset = handOk ? (!raised && double.IsFinite(exactGrabOffset) ? exactGrabOffset : handY - objectY) : 0;
             _state.ObjectY = objectY;
+            _state.HasWorkspace = handOk;
+            _state.WorkspaceY = handOk ? handY : 0;
             Anchor(handOk ? handY : objectY);
         }
 
@@ -219,9 +227,10 @@ namespace Kosmos.PseudoHaptic
         {
             if (!_state.IsHolding) return _state.ObjectY;
 
-            // Bad frame times are absorbed: NaN or negative count as no time, infinity as a very long hitch.
-            if (double.IsPositiveInfinity(dt)) dt = 3600;
-            else if (!(dt > 0)) dt = 0;
+            // Bad frame times are absorbed: NaN or negative count as no time, longer than an hour (infinity, a clock that jumps
+            // to 1e308) as an hour's hitch.
+            if (!(dt > 0)) dt = 0;
+            else if (dt > SolverLimits.LongestHitch) dt = SolverLimits.LongestHitch;
             // Compensated (Kahan) sum: the hold's clock keeps the microsecond over millions of frames.
             double add = dt - _state.TimeCompensation, sum = _state.Time + add;
             _state.TimeCompensation = (sum - _state.Time) - add;
@@ -229,9 +238,11 @@ namespace Kosmos.PseudoHaptic
 
             // A still frame: the sample repeats the last one's bit for bit (a 30 Hz pose over 72–120 Hz frames) and
             // nothing in the hold moves on its own, so the pipeline would leave everything as it is: only the time since
-            // the pose passes, and the object stays (bit for bit what the pipeline returns: StillFrameTests).
-            if (_canBeStill && SameSample(in sample, in _lastSample))
+            // the pose passes, and the object stays (bit for bit what the pipeline returns: StillFrameTests). Not when the repeated
+            // pose is due to enter the steady window again (SolverLimits.RepeatTime): that frame runs the pipeline.
+            if (_canBeStill && SameSample(in sample, in _lastSample) && _state.HeldFor + dt < SolverLimits.RepeatTime)
             {
+                _state.HeldFor += dt;
                 _state.Estimator.Advance(dt, _constants.Limits.MaxFrameTime);
                 var advancing = Profile.AdvancingWhenStill;
                 for (int i = 0; i < advancing.Length; i++) advancing[i].AdvanceStill(ref _state, in _constants, dt);
@@ -251,7 +262,9 @@ namespace Kosmos.PseudoHaptic
             f.PoseY = sample.Y;
             f.PoseTime = double.IsFinite(sample.PoseTime) ? sample.PoseTime : double.NaN;
             f.IsHighConfidence = sample.IsHighConfidence;
-            f.Usable = sample.IsUsable;
+            // The plausibility gate: a pose outside the workspace is no hand's (a pose no hand could have reached in the time
+            // since the last is the estimator's to refuse).
+            f.Usable = sample.IsUsable && InWorkspace(sample.Y);
             f.ObjectY = _state.HeldY;
             f.OffsetCeiling = double.PositiveInfinity;
 
@@ -263,6 +276,8 @@ namespace Kosmos.PseudoHaptic
             {
                 // The first pose of a hold begun untracked: the grab is here; the object has not moved.
                 _state.GrabOffset = f.HandAfter - _state.ObjectY;
+                _state.HasWorkspace = true;
+                _state.WorkspaceY = f.HandAfter;
                 Anchor(f.HandAfter);
             }
             else if (_filter != null)
@@ -280,7 +295,23 @@ namespace Kosmos.PseudoHaptic
                 f.HandDelta = f.HandAfter - f.HandBefore;
             }
             _state.HandY = f.HandAfter;
-            if (f.NewPose && !f.Reanchored) Remember(ref f);
+            if (f.NewPose)
+            {
+                _state.HeldFor = 0;
+                if (!f.Reanchored) Remember(ref f);
+            }
+            else if (f.Usable && !f.Settling)
+            {
+                // The same pose, shown for RepeatTime: the hand seen there again. What the hold remembers of the hand (and all it
+                // drives: the base, the pace) advances with time, not only with new poses.
+                _state.HeldFor += dt;
+                if (_state.HeldFor >= SolverLimits.RepeatTime)
+                {
+                    _state.HeldFor = 0;
+                    Remember(ref f);
+                }
+            }
+            else _state.HeldFor = 0;
             f.SteadyHand = _state.SteadyY;
             f.WeightHand = f.HandAfter;
             // A frame that repeats the last one's hand (a pose held over several frames) repeats its weight.
@@ -313,6 +344,11 @@ namespace Kosmos.PseudoHaptic
             _canBeStill = f.Usable && _filter == null && _state.Glide == 0 && _last.IsFor(f.HandAfter, _state.Base) && EffectsStill();
             return _state.ObjectY;
         }
+
+        /// <summary>The plausibility gate: within <see cref="SolverLimits.WorkspaceRadius"/> of where the hold began (any height
+        /// until a hold begun untracked sees its first pose).</summary>
+        bool InWorkspace(double y)
+            => !_gatesWorkspace || !_state.HasWorkspace || Math.Abs(y - _state.WorkspaceY) <= _constants.Limits.WorkspaceRadius;
 
         static bool SameSample(in HandSample a, in HandSample b)
             => BitConverter.DoubleToInt64Bits(a.Y) == BitConverter.DoubleToInt64Bits(b.Y)
@@ -407,8 +443,17 @@ namespace Kosmos.PseudoHaptic
             // The most the weight's offset moves per metre of lift: 1 − G (a lead of G − 1 for a light object), or up to 1
             // where the height deceleration shapes the lift it carries.
             double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
-            double explained = Math.Abs(f.WeightHand - _state.LastHand) * slope; // the hand's motion, not the base's
-            double excess = change > explained ? change - explained : (change < -explained ? change + explained : 0);
+            double moved = f.WeightHand - _state.LastHand; // the hand's motion, not the base's
+            double explained = Math.Abs(moved) * slope, low = -explained, high = explained;
+            if (f.AcrossGap)
+            {
+                // Across a gap the object goes as far as the hand went, never further: the offset may change only with the hand's
+                // motion and by at most twice it (object step = hand step − offset change). A light object's lead on the hand's
+                // motion across the gap (the offset changing against it) glides, as a heavier object's would.
+                if (moved >= 0) { if (low < 0) low = 0; if (high > 2 * moved) high = 2 * moved; }
+                else { if (high > 0) high = 0; if (low < 2 * moved) low = 2 * moved; }
+            }
+            double excess = change > high ? change - high : (change < low ? change - low : 0);
             if (glide == 0 && excess == 0) return 0;
             double g = glide - excess;
             double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);

@@ -48,6 +48,11 @@ namespace Kosmos.PseudoHaptic
         double _px, _py, _pz, _pt;           // the followed point and pose time of the last frame (a new pose changes them)
         double _x1, _x2, _z1, _z2, _steadyX, _steadyZ; // the last followed points and their median
         int _steadyCount;
+        double _heldFor;                     // frame time the followed point has shown the same pose since the steady point last took it
+
+        // The plausibility gate: a hand farther than the workspace radius from the followed point at the grab is not tracked.
+        bool _hasCentre;
+        double _wx, _wy, _wz;
 
         // Break-away.
         bool _hasGrab, _beyond;
@@ -56,7 +61,7 @@ namespace Kosmos.PseudoHaptic
         public WeightSolver3D(WeightModel model, WeightProfile profile = null, double standardSpeed = WeightSolver.DefaultStandardSpeed)
         {
             profile = profile ?? NamedProfiles.Paper;
-            _y = new WeightSolver(model, profile, standardSpeed);
+            _y = new WeightSolver(model, profile, standardSpeed) { GatesWorkspace = false }; // each hand is judged here, in 3D
             Configure(model, profile, standardSpeed);
         }
 
@@ -217,6 +222,8 @@ namespace Kosmos.PseudoHaptic
             _hHas = false;
             _ax = _az = _ex = _ez = _sx = _sz = 0;
             _steadyCount = 0;
+            _heldFor = 0;
+            _hasCentre = false;
             _objX = objectX;
             _objZ = objectZ;
             _hasGrab = _beyond = false;
@@ -279,8 +286,8 @@ namespace Kosmos.PseudoHaptic
             bool u1 = first.IsUsable, u2 = second.IsUsable;
             _usableHands = (u1 ? 1 : 0) + (u2 ? 1 : 0);
             if (!_holding) return;
-            if (double.IsPositiveInfinity(dt)) dt = 3600;
-            else if (!(dt > 0)) dt = 0;
+            if (!(dt > 0)) dt = 0;
+            else if (dt > SolverLimits.LongestHitch) dt = SolverLimits.LongestHitch; // as the y solver counts it
 
             bool holdsBefore = _holds1 && _holds2;
             bool was1 = _in1, was2 = _in2;
@@ -310,16 +317,25 @@ namespace Kosmos.PseudoHaptic
             bool bridged = following && (was1 != _in1 || was2 != _in2);
             // Across a gap the steady point starts over at the hand: the lead it had joins the lag, so nothing steps.
             if (bridged && _hHas && _tau > 0) { _ex += leadX; _ez += leadZ; }
-            StepHorizontal(dt, newPose, bridged);
+            // The same pose shown for RepeatTime is the hand seen there again: the steady point takes it, so the lag it drives
+            // advances with time when a source repeats its last pose exactly.
+            bool again = false;
+            if (following && !newPose)
+            {
+                _heldFor += dt;
+                if (_heldFor >= SolverLimits.RepeatTime) { _heldFor = 0; again = true; }
+            }
+            else _heldFor = 0;
+            StepHorizontal(dt, newPose || again, bridged);
             if (_breakAway != null) CheckBreakAway(newPose);
         }
 
         /// <summary>Decides which hands are followed this frame and re-anchors the followed point when that changes.</summary>
         void Select(in HandPose first, in HandPose second, bool usable1, bool usable2, double dt, bool begin)
         {
-            bool f1 = _grip1 && usable1;
+            bool f1 = _grip1 && usable1 && InWorkspace(first);
             f1 = Reachable(f1, first, ref _reach1, dt);
-            bool f2 = _twoHands != null && _grip2 && usable2;
+            bool f2 = _twoHands != null && _grip2 && usable2 && InWorkspace(second);
             f2 = Reachable(f2, second, ref _reach2, dt);
             if (f1) { _k1x = first.X; _k1y = first.Y; _k1z = first.Z; }
             if (f2) { _k2x = second.X; _k2y = second.Y; _k2z = second.Z; }
@@ -372,6 +388,15 @@ namespace Kosmos.PseudoHaptic
             return false;
         }
 
+        /// <summary>The plausibility gate: a hand within <see cref="SolverLimits.WorkspaceRadius"/> of the followed point where
+        /// the hold began (any hand until a hold begun untracked follows its first).</summary>
+        bool InWorkspace(in HandPose hand)
+        {
+            if (!_hasCentre) return true;
+            double dx = hand.X - _wx, dy = hand.Y - _wy, dz = hand.Z - _wz, r = _limits.WorkspaceRadius;
+            return dx * dx + dy * dy + dz * dz <= r * r;
+        }
+
         /// <summary>Steady for the settle time yet? The wait restarts whenever the hand cannot be followed (Select).</summary>
         bool Settled(ref double waited, double dt)
         {
@@ -409,6 +434,7 @@ namespace Kosmos.PseudoHaptic
         void Anchor()
         {
             _hHas = true;
+            if (!_hasCentre) { _hasCentre = true; _wx = _vx; _wy = _vy; _wz = _vz; }
             _ax = _objX - _vx;
             _az = _objZ - _vz;
             _px = _vx; _py = _vy; _pz = _vz; _pt = double.NaN;

@@ -50,7 +50,7 @@ namespace Kosmos.PseudoHaptic
             if (_hasPose) _reach.TryAccept(0, handY, 0, double.PositiveInfinity);
         }
 
-        /// <summary>Fills HandBefore/After, HandDelta, HandSpeed, MotionInterval, NewPose, Bridged and Reanchored; clears
+        /// <summary>Fills HandBefore/After, HandDelta, HandSpeed, MotionInterval, NewPose, Bridged, AcrossGap and Reanchored; clears
         /// Usable for a pose no hand could have reached.</summary>
         public void Update(ref MotionFrame f, SolverLimits limits)
         {
@@ -91,6 +91,7 @@ namespace Kosmos.PseudoHaptic
             }
 
             f.Bridged = _lost;
+            f.AcrossGap = _lost || _sincePose > SolverLimits.GapTime;
             f.HandDelta = delta;
             f.HandSpeed = _speed = delta / interval;
             f.MotionInterval = interval;
