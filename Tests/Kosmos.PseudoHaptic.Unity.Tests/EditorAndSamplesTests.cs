@@ -75,7 +75,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Object.FindObjectsByType<PinchGrab>(FindObjectsSortMode.None), Has.Length.EqualTo(2), "one grab per hand, added once");
             Assert.That(Object.FindObjectsByType<StandardSpeedCalibrator>(FindObjectsSortMode.None), Has.Length.EqualTo(1));
             Assert.That(Object.FindObjectsByType<FingertipPoker>(FindObjectsSortMode.None), Has.Length.EqualTo(2));
-            Assert.That(PseudoHapticWeight.Enabled.Count, Is.EqualTo(3 + 5 + 8 + 2));
+            Assert.That(PseudoHapticWeight.Enabled.Count, Is.EqualTo(3 + 5 + 8 + 2 + 2), "the calibration's cue-strength staircase has two balls (issue 31)");
             Frames.Run(3);
         }
 

@@ -75,6 +75,8 @@ namespace Kosmos.PseudoHaptic
             Error = null;
             if (_task == null) { Error = "no discrimination task"; Show(Error); return false; }
             _task.Use(CueStrengthStep.Settings());
+            // A file per run: every run's answers are kept, and a new run never resumes a finished one.
+            _task.TrialsFile = "cue-strength-" + DateTime.UtcNow.ToString("yyyyMMdd-HHmmss-fff", System.Globalization.CultureInfo.InvariantCulture) + ".csv";
             _task.Participant = UserId;
             _task.Condition = CueStrengthStep.Condition;
             _running = _task.Begin();

@@ -136,6 +136,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The staircase these settings give for a participant and condition (the same for the same seed).</summary>
         public Staircase MakeStaircase(string participant, string condition) => Settings.MakeStaircase(participant, condition);
 
+        /// <summary>The trials file as set (a relative path is taken under Kosmos.PseudoHaptic in persistentDataPath).</summary>
+        public string TrialsFile { get => _trialsFile; set => _trialsFile = value; }
+
         /// <summary>The trials file's full path.</summary>
         public string TrialsPath => DiscriminationTaskModel.TrialsPath(_trialsFile, Application.persistentDataPath);
 

@@ -59,6 +59,36 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AFormatOneFileIsStillReadWithTheDefaultCueStrength()
+        {
+            Directory.CreateDirectory(_folder);
+            File.WriteAllText(UserCalibrationStore.PathFor("old"), "{\"format\":1,\"userId\":\"old\",\"standardSpeed\":0.6,\"liftsUsed\":5,\"liftsOffered\":5}");
+            Assert.That(UserCalibrationStore.TryLoad("old", out UserCalibration c, out string error), Is.True, error);
+            Assert.That(c.standardSpeed, Is.EqualTo(0.6));
+            Assert.That(c.cueStrength, Is.EqualTo(1.0));
+            Assert.That(c.format, Is.EqualTo(UserCalibration.CurrentFormat), "brought to the current format when read");
+
+            File.WriteAllText(UserCalibrationStore.PathFor("future"), "{\"format\":3,\"standardSpeed\":0.6}");
+            Assert.That(UserCalibrationStore.TryLoad("future", out _, out error), Is.False);
+            Assert.That(error, Does.Contain("format 3"));
+        }
+
+        [Test]
+        public void TheCueStrengthIsStoredBesideTheStandardSpeedWithinItsBounds()
+        {
+            UserCalibrationStore.Save(Calibration("bo", 0.58));
+            UserCalibrationStore.SaveCueStrength("bo", 0.7, 0.12);
+            Assert.That(UserCalibrationStore.TryLoad("bo", out UserCalibration c, out string error), Is.True, error);
+            Assert.That((c.standardSpeed, c.cueStrength, c.cueWeber), Is.EqualTo((0.58, 0.7, 0.12)));
+            Assert.Throws<System.ArgumentException>(() => UserCalibrationStore.SaveCueStrength("bo", 5, 0.9));
+            Assert.That(UserCalibrationStore.TryLoad("bo", out c, out _), Is.True);
+            Assert.That(c.cueStrength, Is.EqualTo(0.7), "a refused strength leaves the file as it was");
+            File.WriteAllText(UserCalibrationStore.PathFor("wild"), "{\"format\":2,\"standardSpeed\":0.6,\"cueStrength\":0}");
+            Assert.That(UserCalibrationStore.TryLoad("wild", out _, out error), Is.False);
+            Assert.That(error, Does.Contain("cueStrength"));
+        }
+
+        [Test]
         public void SavingTheCurrentUserTellsTheComponents()
         {
             int changes = 0;

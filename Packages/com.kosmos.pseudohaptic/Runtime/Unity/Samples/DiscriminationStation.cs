@@ -42,10 +42,13 @@ namespace Kosmos.PseudoHaptic.Samples
             return task;
         }
 
-        /// <summary>A fingertip poker for <paramref name="hand"/>: following a simulated hand itself, else looking for its index tip under it.</summary>
+        /// <summary>A fingertip poker for <paramref name="hand"/>: following a simulated hand itself, else looking for its index tip
+        /// under it. A hand that already has one (another station of the scene made it) keeps it: one poker per hand.</summary>
         public static FingertipPoker Poker(Transform root, IHandPoseSource hand)
         {
             if (!(hand is Component c)) return null;
+            foreach (FingertipPoker existing in Object.FindObjectsByType<FingertipPoker>(FindObjectsSortMode.None))
+                if (ReferenceEquals(existing.Hand, hand)) return existing;
             var go = new GameObject("Fingertip Poker (" + c.name + ")");
             go.transform.SetParent(root, false);
             var poker = go.AddComponent<FingertipPoker>();

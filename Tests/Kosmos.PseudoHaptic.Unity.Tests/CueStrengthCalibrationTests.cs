@@ -1,0 +1,91 @@
+using System.IO;
+using Kosmos.PseudoHaptic.Evaluation;
+using Kosmos.PseudoHaptic.Samples;
+using NUnit.Framework;
+using UnityDouble;
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// Issue 31, the glue under the double: the calibration sample's cue-strength staircase runs at the default strength,
+    /// stores the tuned strength beside the user's standard speed, and every weight of that user then applies it.
+    /// </summary>
+    public sealed class CueStrengthCalibrationTests
+    {
+        string _folder;
+
+        [SetUp]
+        public void UseTemporaryStore()
+        {
+            _folder = Path.Combine(Path.GetTempPath(), "kosmos-pseudohaptic-cue-" + System.Guid.NewGuid().ToString("N"));
+            UserCalibrationStore.SetRootForTests(_folder);
+        }
+
+        [TearDown]
+        public void RemoveTemporaryStore()
+        {
+            UserCalibrationStore.SetRootForTests(null);
+            if (Directory.Exists(_folder)) Directory.Delete(_folder, true);
+        }
+
+        [Test]
+        public void TheStaircaseRunsAtTheDefaultStrengthAndItsStrengthIsStoredAndApplied()
+        {
+            // The user has a standard speed from the golf-ball lifts and an old strength, which the staircase must not render.
+            UserCalibrationStore.Save(UserCalibration.From(UserCalibrationStore.CurrentUserId, new CalibrationResult(true, 0.62, 5, 5, 0.05, null)));
+            UserCalibrationStore.SaveCueStrength(UserCalibrationStore.CurrentUserId, 2.5, 0.5);
+
+            var root = new GameObject("Sample").transform;
+            var handObject = new GameObject("Hand");
+            handObject.transform.position = new Vector3(0.3f, 1.2f, 0.2f);
+            var hand = handObject.AddComponent<TransformHandPoseSource>();
+            SampleContent.CalibrationStation(root, hand);
+            Frames.Run(2);
+            var cue = GameObject.Find("Cue Strength Calibrator").GetComponent<CueStrengthCalibrator>();
+            Assert.That(cue.Begin(), Is.True, cue.Error);
+            DiscriminationTask task = cue.Task;
+
+            // A participant who calls the comparison heavier from 2.5 kg up (a threshold half a kilogram above the standard).
+            for (int trial = 0; trial < 100 && !task.Session.IsFinished; trial++)
+            {
+                foreach (PseudoHapticWeight ball in PseudoHapticWeight.Enabled)
+                {
+                    Assert.That(ball.BeginHold(ball.transform.position), Is.True, ball.ConfigurationError);
+                    Assert.That(ball.CueStrength, Is.EqualTo(1.0), "the staircase renders the default strength");
+                    ball.EndHold();
+                }
+                double left = task.Session.MassAt(PairSide.Left), right = task.Session.MassAt(PairSide.Right);
+                double comparison = task.Session.Current.Comparison;
+                bool comparisonHeavier = comparison >= 2.5;
+                bool comparisonLeft = left == comparison && right != comparison || (left == right && task.Session.Current.ComparisonFirst);
+                PairSide heavier = comparisonHeavier == comparisonLeft ? PairSide.Left : PairSide.Right;
+                Assert.That(task.Answer(heavier), Is.True, task.Error);
+            }
+            Assert.That(task.Session.IsFinished, Is.True);
+            cue.Tick();
+            Assert.That(cue.Result, Is.Not.Null, cue.Error);
+
+            // What is stored is the engine-free step's tuning of that staircase, beside the standard speed.
+            var expected = CueStrengthStep.Tune(task.Session.Staircase, CueStrengthTuning.ExperimentOneBoxes, 0.62, out _);
+            Assert.That(UserCalibrationStore.TryLoad(UserCalibrationStore.CurrentUserId, out UserCalibration stored, out string error), Is.True, error);
+            Assert.That(stored.format, Is.EqualTo(UserCalibration.CurrentFormat));
+            Assert.That(stored.standardSpeed, Is.EqualTo(0.62));
+            Assert.That(stored.cueStrength, Is.EqualTo(expected.CueStrength));
+            Assert.That(stored.cueStrength, Is.Not.EqualTo(2.5));
+
+            // A weight of this user applies it; one told not to stays at 1.
+            var box = new GameObject("Box");
+            box.transform.position = new Vector3(0, 1, 0.5f);
+            box.AddComponent<BoxCollider>();
+            var weight = box.AddComponent<PseudoHapticWeight>();
+            weight.Mass = MassSource.Explicit;
+            weight.ExplicitMassKg = 2;
+            Assert.That(weight.Configure(), Is.True, weight.ConfigurationError);
+            Assert.That(weight.CueStrength, Is.EqualTo(stored.cueStrength));
+            weight.UserCueStrength = false;
+            Assert.That(weight.Configure(), Is.True, weight.ConfigurationError);
+            Assert.That(weight.CueStrength, Is.EqualTo(1.0));
+        }
+    }
+}
