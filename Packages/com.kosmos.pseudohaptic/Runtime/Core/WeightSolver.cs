@@ -267,11 +267,13 @@ namespace Kosmos.PseudoHaptic
             f.Usable = sample.IsUsable && InWorkspace(sample.Y);
             f.ObjectY = _state.HeldY;
             f.OffsetCeiling = double.PositiveInfinity;
+            // …and a pose no hand could have reached since the last is refused (Reach): the input effects see neither as tracked.
+            _state.Estimator.Screen(ref f, limits);
 
             var effects = Profile.InputEffects;
             for (int i = 0; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            _state.Estimator.Update(ref f, limits);
+            _state.Estimator.Follow(ref f);
             if (f.Reanchored)
             {
                 // The first pose of a hold begun untracked: the grab is here; the object has not moved.

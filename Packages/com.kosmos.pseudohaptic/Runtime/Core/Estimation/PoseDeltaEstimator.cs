@@ -51,10 +51,34 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Fills HandBefore/After, HandDelta, HandSpeed, MotionInterval, NewPose, Bridged, AcrossGap and Reanchored; clears
-        /// Usable for a pose no hand could have reached.</summary>
+        /// Usable for a pose no hand could have reached (<see cref="Screen"/>, then <see cref="Follow"/>).</summary>
         public void Update(ref MotionFrame f, SolverLimits limits)
         {
+            Screen(ref f, limits);
+            Follow(ref f);
+        }
+
+        /// <summary>The frame's time passes, and a new pose no hand could have reached is refused: Usable is cleared, so
+        /// that everything after (the input effects, then <see cref="Follow"/>) treats it as not tracked. The solver calls
+        /// this before its input effects.</summary>
+        public void Screen(ref MotionFrame f, SolverLimits limits)
+        {
             Advance(f.Dt, limits.MaxFrameTime);
+            if (!f.Usable || !_hasPose || !IsNewPose(in f)) return;
+            if (!_reach.TryAccept(0, f.PoseY, 0, limits.MaxHandSpeed)) f.Usable = false;
+        }
+
+        /// <summary>A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.</summary>
+        bool IsNewPose(in MotionFrame f)
+        {
+            bool hasTime = double.IsFinite(f.PoseTime);
+            return f.PoseY != _poseY || (hasTime && !(double.IsFinite(_poseTime) && f.PoseTime == _poseTime));
+        }
+
+        /// <summary>Follows the frame <see cref="Screen"/> has screened: fills HandBefore/After, HandDelta, HandSpeed,
+        /// MotionInterval, NewPose, Bridged, AcrossGap and Reanchored.</summary>
+        public void Follow(ref MotionFrame f)
+        {
             f.HandBefore = f.HandAfter = _poseY;
             f.HandDelta = f.HandSpeed = f.MotionInterval = 0;
 
@@ -70,25 +94,15 @@ namespace Kosmos.PseudoHaptic
                 Accept(ref f);
                 return;
             }
-
-            bool hasTime = double.IsFinite(f.PoseTime);
-            bool hadTime = double.IsFinite(_poseTime);
-            // A new timestamp or a new value is a new pose: a source whose timestamps stick must not freeze the object.
-            bool newPose = f.PoseY != _poseY || (hasTime && !(hadTime && f.PoseTime == _poseTime));
-            if (!newPose) return;
+            if (!IsNewPose(in f)) return;
 
             // Speed is measured against the poses' own clock; without it (or when it steps back), against the frames'
             // time since the last pose, but never less than a 60 Hz pose period: two poses can land in one short frame.
+            bool hasTime = double.IsFinite(f.PoseTime), hadTime = double.IsFinite(_poseTime);
             double interval = hasTime && hadTime && f.PoseTime > _poseTime ? f.PoseTime - _poseTime
                 : Math.Max(_sincePose, MinPosePeriod);
             interval = Math.Max(interval, 1e-4);
             double delta = f.PoseY - _poseY;
-            if (!_reach.TryAccept(0, f.PoseY, 0, limits.MaxHandSpeed))
-            {
-                f.Usable = false;
-                Lose();
-                return;
-            }
 
             f.Bridged = _lost;
             f.AcrossGap = _lost || _sincePose > SolverLimits.GapTime;

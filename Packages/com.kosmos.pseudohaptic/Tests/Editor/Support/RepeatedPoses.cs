@@ -63,6 +63,21 @@ namespace Kosmos.PseudoHaptic.Tests
             return frames;
         }
 
+        /// <summary>A carry from (0.1, 1, 0.3) along the unit direction (<paramref name="ux"/>, <paramref name="uy"/>,
+        /// <paramref name="uz"/>) as one hand's frames.</summary>
+        public static Headset3D.Frames Carry(double frameRate, double ux, double uy, double uz, double speed, double distance, double duration, AfterTheStop after)
+        {
+            Render(frameRate, speed, distance, duration, after, out var time, out var along, out var poseTime);
+            var f = new Headset3D.Frames { T = time, Dt = new double[time.Length], A = new HandPose[time.Length], B = new HandPose[time.Length] };
+            for (int i = 0; i < time.Length; i++)
+            {
+                if (i > 0) f.Dt[i] = time[i] - time[i - 1];
+                f.A[i] = new HandPose(0.1 + ux * along[i], 1.0 + uy * along[i], 0.3 + uz * along[i], true, true, poseTime[i]);
+                f.B[i] = HandPose.Lost;
+            }
+            return f;
+        }
+
         /// <summary>A sideways carry along x at height 1 m as one hand's frames.</summary>
         public static Headset3D.Frames Sideways(double frameRate, double speed, double distance, double duration, AfterTheStop after)
         {
