@@ -22,8 +22,9 @@ public class CliExamplesTests
     {
         if (!OperatingSystem.IsLinux() && !OperatingSystem.IsMacOS()) Assert.Ignore("the examples are sh");
         _sandbox = Path.Combine(Path.GetTempPath(), "ph-examples-" + Guid.NewGuid().ToString("N"));
-        string examples = Path.Combine("Packages", "com.kosmos.pseudohaptic", "Documentation~", "examples");
-        Copy(Path.Combine(RepositoryRoot.Path, examples), Path.Combine(_sandbox, examples));
+        // The whole package (3 MB): its examples, and its files for unity-package's example.
+        string package = Path.Combine("Packages", "com.kosmos.pseudohaptic");
+        Copy(Path.Combine(RepositoryRoot.Path, package), Path.Combine(_sandbox, package));
         Directory.CreateDirectory(Path.Combine(_sandbox, "bin"));
         string shim = Path.Combine(_sandbox, "bin", "pseudohaptic");
         File.WriteAllText(shim, $"#!/bin/sh\nexec dotnet '{Path.Combine(AppContext.BaseDirectory, "pseudohaptic.dll")}' \"$@\"\n");

@@ -31,7 +31,7 @@ public class ToolInstallTests
 
             (code, output) = Run(elsewhere, home, tool, "--version");
             Assert.That(code, Is.EqualTo(0), output);
-            Assert.That(output.Trim(), Does.Match(@"^0\.1\.\d+\+[0-9a-f]{7,}"), "the version and the commit");
+            Assert.That(output.Trim(), Does.Match(@"^0\.2\.\d+\+[0-9a-f]{7,}"), "the version and the commit");
             (code, output) = Run(elsewhere, home, tool, "replay", "--help");
             Assert.That(code, Is.EqualTo(0), output);
             Assert.That(output, Does.Contain("--mass-kg"));

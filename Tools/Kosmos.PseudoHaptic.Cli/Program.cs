@@ -36,6 +36,7 @@ namespace Kosmos.PseudoHaptic.Cli
             PsychometricCommand.Define(),
             CompareCommand.Define(),
             CompletionCommand.Define(),
+            Commands.UnityPackageCommand.Define(),
         };
 
         public static int Run(string[] args)

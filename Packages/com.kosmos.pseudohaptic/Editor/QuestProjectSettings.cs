@@ -3,6 +3,7 @@ using System.Collections.Generic;
 using UnityEditor;
 using UnityEditor.Build;
 using UnityEngine;
+using UnityEngine.Rendering;
 #if KOSMOS_XR_MANAGEMENT && KOSMOS_XR_OCULUS
 using UnityEditor.XR.Management;
 using UnityEditor.XR.Management.Metadata;
@@ -15,7 +16,8 @@ namespace Kosmos.PseudoHaptic.Editor
     /// The project settings a Quest 2 APK and Play over Link need, each set only where it is not already: colour space
     /// Linear (Meta XR Core's Android build refuses Gamma), IL2CPP, ARM64 only, API level ≥ 29, ASTC textures, XR Plug-in
     /// Management's Oculus loader initialised on startup for Android and for Standalone (Play over Link), and hand tracking
-    /// in Meta's project config. Each call returns what it changed, in words, for the log.
+    /// in Meta's project config; and Meta's Project Setup Tool recommendations that a build can take without a choice of
+    /// the user (<see cref="ApplyRecommended"/>). Each call returns what it changed, in words, for the log.
     /// </summary>
     public static class QuestProjectSettings
     {
@@ -27,6 +29,7 @@ namespace Kosmos.PseudoHaptic.Editor
         {
             var changes = new List<string>();
             ApplyPlayer(changes);
+            ApplyRecommended(changes);
             ApplyXRLoader(BuildTargetGroup.Android, strict, changes);
             ApplyXRLoader(BuildTargetGroup.Standalone, strict, changes);
             ApplyHandTracking(strict, changes);
@@ -62,6 +65,67 @@ namespace Kosmos.PseudoHaptic.Editor
                 changes.Add("Android textures ASTC");
                 EditorUserBuildSettings.androidBuildSubtarget = MobileTextureSubtarget.ASTC;
             }
+        }
+
+        /// <summary>The Android target API level Meta's Project Setup Tool recommends (Meta XR Core SDK 68.0.2: 32).</summary>
+        public const AndroidSdkVersions TargetApiLevel = AndroidSdkVersions.AndroidApiLevel32;
+
+        /// <summary>
+        /// Meta's Project Setup Tool recommendations (Meta XR Core SDK 68.0.2, OVRProjectSetupCompatibilityTasks and
+        /// OVRProjectSetupRenderingTasks), each where it is not met yet: Android target API level 32; Android TV compatibility
+        /// off (Meta: required, the Store refuses it); Android graphics APIs chosen explicitly, Vulkan, unless the list is
+        /// already explicit and holds Vulkan or OpenGLES3 (Meta's check, and its fix); stereo rendering Instancing, with the
+        /// Oculus plug-in's Multiview on Android and Single Pass Instanced on desktop (when its settings exist).
+        /// </summary>
+        public static void ApplyRecommended(List<string> changes)
+        {
+            if (PlayerSettings.Android.targetSdkVersion != TargetApiLevel)
+            {
+                changes.Add("Android target API level 32 (was " + PlayerSettings.Android.targetSdkVersion + ")");
+                PlayerSettings.Android.targetSdkVersion = TargetApiLevel;
+            }
+            if (PlayerSettings.Android.androidTVCompatibility)
+            {
+                changes.Add("Android TV compatibility off");
+                PlayerSettings.Android.androidTVCompatibility = false;
+            }
+            if (!HasExplicitQuestGraphicsApi())
+            {
+                changes.Add("Android graphics APIs chosen explicitly: Vulkan");
+                PlayerSettings.SetUseDefaultGraphicsAPIs(BuildTarget.Android, false);
+                PlayerSettings.SetGraphicsAPIs(BuildTarget.Android, new[] { GraphicsDeviceType.Vulkan });
+            }
+            if (PlayerSettings.stereoRenderingPath != StereoRenderingPath.Instancing)
+            {
+                changes.Add("stereo rendering Instancing (was " + PlayerSettings.stereoRenderingPath + ")");
+                PlayerSettings.stereoRenderingPath = StereoRenderingPath.Instancing;
+            }
+#if KOSMOS_XR_OCULUS
+            if (EditorBuildSettings.TryGetConfigObject("Unity.XR.Oculus.Settings", out global::Unity.XR.Oculus.OculusSettings oculus))
+            {
+                if (oculus.m_StereoRenderingModeAndroid != global::Unity.XR.Oculus.OculusSettings.StereoRenderingModeAndroid.Multiview)
+                {
+                    oculus.m_StereoRenderingModeAndroid = global::Unity.XR.Oculus.OculusSettings.StereoRenderingModeAndroid.Multiview;
+                    EditorUtility.SetDirty(oculus);
+                    changes.Add("Oculus stereo rendering on Android Multiview");
+                }
+                if (oculus.m_StereoRenderingModeDesktop != global::Unity.XR.Oculus.OculusSettings.StereoRenderingModeDesktop.SinglePassInstanced)
+                {
+                    oculus.m_StereoRenderingModeDesktop = global::Unity.XR.Oculus.OculusSettings.StereoRenderingModeDesktop.SinglePassInstanced;
+                    EditorUtility.SetDirty(oculus);
+                    changes.Add("Oculus stereo rendering on desktop Single Pass Instanced");
+                }
+            }
+#endif
+        }
+
+        /// <summary>Meta's check: the Android graphics APIs are chosen explicitly (not Unity's default list) and hold Vulkan or OpenGLES3.</summary>
+        public static bool HasExplicitQuestGraphicsApi()
+        {
+            if (PlayerSettings.GetUseDefaultGraphicsAPIs(BuildTarget.Android)) return false;
+            foreach (GraphicsDeviceType api in PlayerSettings.GetGraphicsAPIs(BuildTarget.Android))
+                if (api == GraphicsDeviceType.Vulkan || api == GraphicsDeviceType.OpenGLES3) return true;
+            return false;
         }
 
         /// <summary>

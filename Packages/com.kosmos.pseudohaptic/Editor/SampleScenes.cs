@@ -60,7 +60,7 @@ namespace Kosmos.PseudoHaptic.Editor
         public static void Experiment1()
         {
             if (!NewScene(out Scene scene, out Transform root, out _)) return;
-            SampleContent.Experiment1(root, TwoHandedExperimentProfile()); // both hands, as the paper's participants lifted
+            SampleContent.Experiment1(root, Profile(PaperExperiment1.ProfileName, PaperExperiment1.ProfileName)); // the experiment's profile, Two Hands included
             Save(scene, "Experiment1");
         }
 
@@ -93,10 +93,10 @@ namespace Kosmos.PseudoHaptic.Editor
             Save(scene, "Discrimination");
         }
 
-        /// <summary>"paper-experiment" with Two Hands switched on (each hand carries half), saved as Experiment-TwoHands.</summary>
+        /// <summary>"paper-experiment" (its Two Hands on: each hand carries half), saved as paper-experiment, the profile Experiment 1 uses too.</summary>
         internal static PseudoHapticProfile TwoHandedExperimentProfile()
         {
-            PseudoHapticProfile profile = Profile("Experiment-TwoHands", NamedProfiles.PaperExperimentName);
+            PseudoHapticProfile profile = Profile(NamedProfiles.PaperExperimentName, NamedProfiles.PaperExperimentName);
             SampleContent.LiftWithBothHands(profile);
             EditorUtility.SetDirty(profile);
             AssetDatabase.SaveAssets();

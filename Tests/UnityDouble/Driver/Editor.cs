@@ -56,3 +56,29 @@ namespace UnityDouble
         public static void Click(string buttonText) => UnityEngine.GUILayout.Clicked = buttonText;
     }
 }
+
+namespace UnityDouble
+{
+    /// <summary>Meta's Project Setup Tool: the tasks registered with OVRProjectSetup.AddTask, by message.</summary>
+    public static class ProjectSetupTool
+    {
+        public static System.Collections.Generic.IEnumerable<string> Messages
+        {
+            get { foreach (OVRProjectSetup.Task t in OVRProjectSetup.Tasks) yield return t.Message; }
+        }
+
+        static OVRProjectSetup.Task Find(string message)
+        {
+            foreach (OVRProjectSetup.Task t in OVRProjectSetup.Tasks)
+                if (t.Message == message) return t;
+            throw new System.ArgumentException("no task '" + message + "'");
+        }
+
+        public static bool IsDone(string message, UnityEditor.BuildTargetGroup group) => Find(message).IsDone(group);
+        public static void Fix(string message, UnityEditor.BuildTargetGroup group) => Find(message).Fix(group);
+        public static bool CanFix(string message) => Find(message).Fix != null;
+        public static OVRProjectSetup.TaskLevel Level(string message) => Find(message).Level;
+        public static OVRProjectSetup.TaskGroup Group(string message) => Find(message).Group;
+        public static UnityEditor.BuildTargetGroup Platform(string message) => Find(message).Platform;
+    }
+}

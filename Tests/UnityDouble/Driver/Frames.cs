@@ -30,3 +30,26 @@ namespace UnityDouble
         }
     }
 }
+
+namespace UnityDouble
+{
+    /// <summary>Entering play mode, as far as the package sees it.</summary>
+    public static class PlayMode
+    {
+        /// <summary>
+        /// Runs the static [RuntimeInitializeOnLoadMethod] methods of <paramref name="assembly"/> in Unity's order of load
+        /// types (SubsystemRegistration, AfterAssembliesLoaded, BeforeSplashScreen, BeforeSceneLoad, AfterSceneLoad), as
+        /// Unity does each time play mode starts (with or without a domain reload).
+        /// </summary>
+        public static void Enter(System.Reflection.Assembly assembly)
+        {
+            var order = new[] { RuntimeInitializeLoadType.SubsystemRegistration, RuntimeInitializeLoadType.AfterAssembliesLoaded, RuntimeInitializeLoadType.BeforeSplashScreen, RuntimeInitializeLoadType.BeforeSceneLoad, RuntimeInitializeLoadType.AfterSceneLoad };
+            const System.Reflection.BindingFlags Static = System.Reflection.BindingFlags.Static | System.Reflection.BindingFlags.Public | System.Reflection.BindingFlags.NonPublic;
+            foreach (RuntimeInitializeLoadType when in order)
+                foreach (Type t in assembly.GetTypes())
+                    foreach (System.Reflection.MethodInfo m in t.GetMethods(Static))
+                        if (m.GetCustomAttributes(typeof(RuntimeInitializeOnLoadMethodAttribute), false) is { Length: > 0 } a && ((RuntimeInitializeOnLoadMethodAttribute)a[0]).loadType == when)
+                            m.Invoke(null, null);
+        }
+    }
+}

@@ -7,6 +7,22 @@ namespace Unity.XR.Oculus
 {
     public class OculusSettings : ScriptableObject
     {
+        public enum StereoRenderingModeDesktop
+        {
+            MultiPass = 0,
+            SinglePassInstanced = 1,
+        }
+
+        public enum StereoRenderingModeAndroid
+        {
+            MultiPass = 0,
+            Multiview = 2,
+        }
+
+        /// <summary>The defaults of Unity 2021.2 and later (UNITY_2021_2_OR_NEWER in the source).</summary>
+        public StereoRenderingModeDesktop m_StereoRenderingModeDesktop = StereoRenderingModeDesktop.SinglePassInstanced;
+        public StereoRenderingModeAndroid m_StereoRenderingModeAndroid = StereoRenderingModeAndroid.Multiview;
+
         public bool TargetQuest2 = true;
     }
 }

@@ -9,12 +9,14 @@
 //   (BuildOptions, BuildPlayerOptions, BuildPipeline), Modules/BuildReportingEditor/Managed/BuildReport.bindings.cs,
 //   BuildSummary.cs, BuildResult.cs, Editor/Mono/BuildPipeline/NamedBuildTarget.cs,
 //   Editor/Mono/PlayerSettings.bindings.cs (ScriptingImplementation, SetScriptingBackend),
-//   Editor/Mono/PlayerSettingsAndroid.bindings.cs (PlayerSettings.Android, AndroidArchitecture, AndroidSdkVersions)
+//   Editor/Mono/PlayerSettingsAndroid.bindings.cs (PlayerSettings.Android, AndroidArchitecture, AndroidSdkVersions),
+//   Editor/Mono/PlayerSettings.bindings.cs (stereoRenderingPath, Get/SetUseDefaultGraphicsAPIs, Get/SetGraphicsAPIs), StereoRenderingPath
 using System;
 using System.Collections.Generic;
 using UnityEditor.Build;
 using UnityEditor.Build.Reporting;
 using UnityEngine;
+using UnityEngine.Rendering;
 using UnityEngine.SceneManagement;
 using Object = UnityEngine.Object;
 
@@ -237,8 +239,18 @@ namespace UnityEditor
     /// <summary>Only the levels the package names.</summary>
     public enum AndroidSdkVersions
     {
+        AndroidApiLevelAuto = 0,
         AndroidApiLevel22 = 22,
         AndroidApiLevel29 = 29,
+        AndroidApiLevel32 = 32,
+    }
+
+    /// <summary>Editor/Mono/PlayerSettings.bindings.cs.</summary>
+    public enum StereoRenderingPath
+    {
+        MultiPass = 0,
+        SinglePass = 1,
+        Instancing = 2,
     }
 
     public sealed partial class PlayerSettings : Object
@@ -253,11 +265,34 @@ namespace UnityEditor
 
         public static void SetScriptingBackend(NamedBuildTarget buildTarget, ScriptingImplementation backend) => Backends[buildTarget.TargetName] = backend;
 
+        /// <summary>A new project's: multi pass.</summary>
+        public static StereoRenderingPath stereoRenderingPath { get; set; } = StereoRenderingPath.MultiPass;
+
+        internal static readonly Dictionary<BuildTarget, GraphicsDeviceType[]> GraphicsApis = new Dictionary<BuildTarget, GraphicsDeviceType[]>();
+        internal static readonly HashSet<BuildTarget> ExplicitGraphicsApis = new HashSet<BuildTarget>();
+
+        /// <summary>A new project's: automatic (Unity picks the list).</summary>
+        public static bool GetUseDefaultGraphicsAPIs(BuildTarget platform) => !ExplicitGraphicsApis.Contains(platform);
+
+        public static void SetUseDefaultGraphicsAPIs(BuildTarget platform, bool automatic)
+        {
+            if (automatic) ExplicitGraphicsApis.Remove(platform);
+            else ExplicitGraphicsApis.Add(platform);
+        }
+
+        /// <summary>With automatic selection, Unity's default list (for Android in 2022.3: Vulkan, then OpenGLES3).</summary>
+        public static GraphicsDeviceType[] GetGraphicsAPIs(BuildTarget platform) =>
+            (GraphicsApis.TryGetValue(platform, out GraphicsDeviceType[] apis) ? apis : new[] { GraphicsDeviceType.Vulkan, GraphicsDeviceType.OpenGLES3 }).Clone() as GraphicsDeviceType[];
+
+        public static void SetGraphicsAPIs(BuildTarget platform, GraphicsDeviceType[] apis) => GraphicsApis[platform] = (GraphicsDeviceType[])apis.Clone();
+
         public partial class Android
         {
-            /// <summary>A new 2022.3 project's: API level 22, ARMv7 only.</summary>
+            /// <summary>A new 2022.3 project's: API level 22, ARMv7 only, target API Automatic, Android TV compatible (older projects' default; the check that follows turns it off).</summary>
             public static AndroidSdkVersions minSdkVersion { get; set; } = AndroidSdkVersions.AndroidApiLevel22;
             public static AndroidArchitecture targetArchitectures { get; set; } = AndroidArchitecture.ARMv7;
+            public static AndroidSdkVersions targetSdkVersion { get; set; } = AndroidSdkVersions.AndroidApiLevelAuto;
+            public static bool androidTVCompatibility { get; set; } = true;
         }
     }
 }
@@ -322,6 +357,11 @@ namespace UnityEditor
             PlayerSettings.Backends.Clear();
             PlayerSettings.Android.minSdkVersion = AndroidSdkVersions.AndroidApiLevel22;
             PlayerSettings.Android.targetArchitectures = AndroidArchitecture.ARMv7;
+            PlayerSettings.Android.targetSdkVersion = AndroidSdkVersions.AndroidApiLevelAuto;
+            PlayerSettings.Android.androidTVCompatibility = true;
+            PlayerSettings.stereoRenderingPath = StereoRenderingPath.MultiPass;
+            PlayerSettings.GraphicsApis.Clear();
+            PlayerSettings.ExplicitGraphicsApis.Clear();
             EditorUserBuildSettings.ActiveBuildTarget = BuildTarget.Android;
             EditorUserBuildSettings.androidBuildSubtarget = MobileTextureSubtarget.Generic;
             EditorBuildSettings.scenes = new EditorBuildSettingsScene[0];

@@ -1,7 +1,8 @@
 // Test double (attributes carry their arguments). Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Runtime/Export/Serialization/Serialization.cs (SerializeField), Runtime/Export/PropertyDrawer/PropertyAttribute.cs
 //   (PropertyAttribute, TooltipAttribute, HeaderAttribute), Runtime/Export/Scripting/Attributes.cs (AddComponentMenu,
-//   DisallowMultipleComponent, CreateAssetMenuAttribute, ContextMenu, HideInInspector), Runtime/Export/Scripting/RuntimeInitializeOnLoadAttribute.cs
+//   DisallowMultipleComponent, CreateAssetMenuAttribute, ContextMenu, HideInInspector), Runtime/Export/Scripting/RuntimeInitializeOnLoadAttribute.cs,
+//   Runtime/Export/Application/BeforeRenderHelper.cs (BeforeRenderOrderAttribute)
 // Attribute targets as declared there, so misplaced attributes fail here as they would in Unity.
 using System;
 
@@ -82,6 +83,15 @@ namespace UnityEngine
     {
         public DefaultExecutionOrder(int order) => this.order = order;
         public int order { get; }
+    }
+
+    /// <summary>The order of a method subscribed to Application.onBeforeRender: lower first, 0 without the attribute.</summary>
+    [AttributeUsage(AttributeTargets.Method)]
+    public class BeforeRenderOrderAttribute : Attribute
+    {
+        public int order { get; private set; }
+
+        public BeforeRenderOrderAttribute(int order) => this.order = order;
     }
 
     public enum RuntimeInitializeLoadType

@@ -282,3 +282,13 @@ namespace UnityEngine
         Linear = 1,
     }
 }
+
+namespace UnityEngine.Rendering
+{
+    /// <summary>Runtime/Export/Graphics/GraphicsEnums.cs: only the APIs the package names, with their real numbers.</summary>
+    public enum GraphicsDeviceType
+    {
+        OpenGLES3 = 11,
+        Vulkan = 21,
+    }
+}

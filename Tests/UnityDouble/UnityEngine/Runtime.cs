@@ -1,6 +1,7 @@
 // Test double of UnityEngine's runtime services, with Unity's documented semantics: Debug's messages reach
 // Application.logMessageReceived (the Test Framework's LogAssert listens there); Time advances per frame and reads the
-// fixed step inside FixedUpdate; Application.onBeforeRender runs after LateUpdate; JsonUtility writes and reads the
+// fixed step inside FixedUpdate; Application.onBeforeRender runs after LateUpdate, its callbacks by their method's
+// [BeforeRenderOrder] (0 without it), in subscription order within one order (Runtime/Export/Application/BeforeRenderHelper.cs); JsonUtility writes and reads the
 // public and [SerializeField] fields of a [Serializable] class and throws ArgumentException on malformed JSON. Public
 // members are those of UnityCsReference 2022.3 (Runtime/Export/Debug/Debug.bindings.cs, Runtime/Export/BaseClass.cs,
 // Runtime/Export/Application/Application.bindings.cs, Runtime/Export/Time/Time.bindings.cs,
@@ -50,8 +51,16 @@ namespace UnityEngine
         public static event LogCallback logMessageReceived;
         public static event LogCallback logMessageReceivedThreaded;
 
-        /// <summary>Called after LateUpdate, before the frame renders (where XR rigs late-latch their poses).</summary>
-        public static event UnityEngine.Events.UnityAction onBeforeRender;
+        /// <summary>
+        /// Called after LateUpdate, before the frame renders (where XR rigs late-latch their poses). As Unity's
+        /// BeforeRenderHelper: a callback's order is its method's [BeforeRenderOrder] (0 without), lower orders run
+        /// first, callbacks of one order in the order they subscribed.
+        /// </summary>
+        public static event UnityEngine.Events.UnityAction onBeforeRender
+        {
+            add => BeforeRenderBlocks.Register(value);
+            remove => BeforeRenderBlocks.Unregister(value);
+        }
 
         /// <summary>A folder of its own per test run (under the system's temporary folder) until a driver sets another.</summary>
         public static string persistentDataPath => s_persistentDataPath ??= Path.Combine(Path.GetTempPath(), "unity-double-" + Guid.NewGuid().ToString("N"));
@@ -75,7 +84,7 @@ namespace UnityEngine
         {
             try
             {
-                onBeforeRender?.Invoke();
+                BeforeRenderBlocks.Invoke();
             }
             catch (Exception e)
             {
@@ -85,9 +94,56 @@ namespace UnityEngine
 
         internal static void Reset()
         {
-            onBeforeRender = null;
+            BeforeRenderBlocks.Clear();
             IsPlayingState = true;
         }
+    }
+
+    /// <summary>Unity's BeforeRenderHelper: one multicast delegate per order, the orders sorted.</summary>
+    static class BeforeRenderBlocks
+    {
+        static readonly List<KeyValuePair<int, UnityEngine.Events.UnityAction>> s_blocks = new List<KeyValuePair<int, UnityEngine.Events.UnityAction>>();
+
+        static int Order(UnityEngine.Events.UnityAction callback)
+        {
+            object[] attributes = callback.Method.GetCustomAttributes(typeof(BeforeRenderOrderAttribute), true);
+            return attributes.Length > 0 ? ((BeforeRenderOrderAttribute)attributes[0]).order : 0;
+        }
+
+        internal static void Register(UnityEngine.Events.UnityAction callback)
+        {
+            if (callback == null) return;
+            int order = Order(callback);
+            int i = 0;
+            for (; i < s_blocks.Count && s_blocks[i].Key <= order; i++)
+            {
+                if (s_blocks[i].Key != order) continue;
+                s_blocks[i] = new KeyValuePair<int, UnityEngine.Events.UnityAction>(order, s_blocks[i].Value + callback);
+                return;
+            }
+            s_blocks.Insert(i, new KeyValuePair<int, UnityEngine.Events.UnityAction>(order, callback));
+        }
+
+        internal static void Unregister(UnityEngine.Events.UnityAction callback)
+        {
+            if (callback == null) return;
+            int order = Order(callback);
+            for (int i = 0; i < s_blocks.Count && s_blocks[i].Key <= order; i++)
+            {
+                if (s_blocks[i].Key != order) continue;
+                UnityEngine.Events.UnityAction rest = s_blocks[i].Value - callback;
+                if (rest == null) s_blocks.RemoveAt(i);
+                else s_blocks[i] = new KeyValuePair<int, UnityEngine.Events.UnityAction>(order, rest);
+                return;
+            }
+        }
+
+        internal static void Invoke()
+        {
+            for (int i = 0; i < s_blocks.Count; i++) s_blocks[i].Value?.Invoke();
+        }
+
+        internal static void Clear() => s_blocks.Clear();
     }
 
     public class Time

@@ -133,15 +133,10 @@ public static class DemoCommand
         var liftAndPlace = headset.Render(HandPath.StartAt(0.80).Hold(0.5).MoveTo(1.15, 0.9).Hold(1.0).MoveTo(0.80, 0.9).Hold(0.7));
         var highLift = headset.Render(HandPath.StartAt(0.75).Hold(0.5).MoveTo(1.45, 1.4).Hold(1.5));
 
-        // Experiment 1: three boxes of the same size (20 cm cube, 8 L), different densities; B heaviest.
-        const double boxVolume = 0.2 * 0.2 * 0.2;
-        var boxes = new List<Item>
-        {
-            new("golf ball", PhysicalConstants.StandardMassKg, "the standard weight"),
-            new("box A", 75 * boxVolume, "75 kg/m³"),
-            new("box B", 250 * boxVolume, "250 kg/m³"),
-            new("box C", 125 * boxVolume, "125 kg/m³"),
-        };
+        // Experiment 1 (PaperExperiment1, the samples' too): three boxes of the same size, different densities; B heaviest.
+        var boxes = new List<Item> { new("golf ball", PhysicalConstants.StandardMassKg, "the standard weight") };
+        for (int b = 0; b < PaperExperiment1.BoxNames.Length; b++)
+            boxes.Add(new("box " + PaperExperiment1.BoxNames[b], PaperExperiment1.Mass(PaperExperiment1.BoxDensities[b]), $"{PaperExperiment1.BoxDensities[b]:0} kg/m³"));
         // Experiment 2: water bottles by size (water plus the bottle).
         var bottles = new List<Item>
         {
@@ -152,7 +147,7 @@ public static class DemoCommand
         };
         var scenes = new List<Scene>
         {
-            new("experiment-1-boxes", "Experiment 1: boxes A, B, C (paper-experiment)", NamedProfiles.PaperExperiment, boxes, liftAndPlace),
+            new("experiment-1-boxes", $"Experiment 1: boxes A, B, C ({PaperExperiment1.ProfileName})", NamedProfiles.Get(PaperExperiment1.ProfileName), boxes, liftAndPlace),
             new("experiment-1-literal", "Experiment 1: boxes A, B, C, the paper as printed (paper-literal)", NamedProfiles.PaperLiteral, boxes, liftAndPlace),
             new("experiment-2-bottles", "Experiment 2: water bottles (paper-experiment)", NamedProfiles.PaperExperiment, bottles, liftAndPlace),
             new("offset-correction", "A high lift with the offset correction (paper)", NamedProfiles.Paper,

@@ -66,6 +66,17 @@ namespace Kosmos.PseudoHaptic
             return Offset;
         }
 
+        /// <summary>
+        /// The same frame's offset with the lag measured again: after a rig re-posed the tracked hand before the frame
+        /// renders (OVRCameraRig's before-render update), the drawn hand is placed from the new hand, so it stays on the
+        /// object. No time passes: the return does not advance, a hold neither begins nor ends. Non-finite: kept.
+        /// </summary>
+        public Vector3d Remeasure(Vector3d lag)
+        {
+            if (_holding && lag.IsFinite) _lag = lag;
+            return Offset;
+        }
+
         void Return(double dt)
         {
             double left = _residual.Length;

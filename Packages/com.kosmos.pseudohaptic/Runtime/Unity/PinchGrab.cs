@@ -10,7 +10,9 @@ namespace Kosmos.PseudoHaptic
     /// object's profile). Two of these (one per hand) on one weight are one two-handed hold. x and z follow the hand,
     /// unless the weight's profile has lateral inertia (then they are its solver's); y comes from the weight's
     /// solver. A break-away reported by the solver releases the grab, and the Rigidbody falls. Runs in LateUpdate, after the
-    /// hand SDK has updated its pose; nothing is allocated per frame.
+    /// hand SDK has updated its pose; the hand visual is placed again in <c>Application.onBeforeRender</c> after the rigs'
+    /// own before-render updates (<see cref="BeforeRenderOrder"/>), from the hand as the rig re-posed it, so a hand drawn
+    /// on the object stays on it. Nothing is allocated per frame.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pinch Grab")]
     public sealed class PinchGrab : MonoBehaviour, IGrabDriver, IGrabCandidates
@@ -25,6 +27,13 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] bool _followHorizontal = true;
         [Tooltip("Optional: the hand's visual root (a transform the hand SDK does not drive, above the hand mesh), offset to the object when the held object's profile draws the hand on the object.")]
         [SerializeField] Transform _handVisual;
+
+        /// <summary>
+        /// Where the hand visual is placed in <c>Application.onBeforeRender</c> (Unity's <c>[BeforeRenderOrder]</c>, lower
+        /// first): after OVRCameraRig's late anchor update (its <c>OnBeforeRenderCallback</c> has no order: 0), after
+        /// XR Interaction Toolkit's interaction manager (100), and after the weights re-place their objects (0).
+        /// </summary>
+        public const int BeforeRenderOrder = 200;
 
         static int s_nextId;
         int _id;
@@ -80,7 +89,16 @@ namespace Kosmos.PseudoHaptic
             if (_hand != null && Hand == null) Debug.LogError("Pinch Grab on '" + name + "': '" + _hand.name + "' has no IPinchHandPoseSource.", this);
         }
 
-        void OnDisable() => Release();
+        UnityEngine.Events.UnityAction _beforeRender;
+
+        void OnEnable() => Application.onBeforeRender += _beforeRender ?? (_beforeRender = PlaceVisualBeforeRender);
+
+        void OnDisable()
+        {
+            Application.onBeforeRender -= _beforeRender;
+            Release();
+        }
+
         void LateUpdate() => Tick(Time.deltaTime);
 
         /// <summary>One frame of the grab; LateUpdate calls it, tests may too.</summary>
@@ -92,12 +110,34 @@ namespace Kosmos.PseudoHaptic
             _dt = dt;
             _grab.Tick(hand.IsTracked, PinchSources.Strength(hand), dt, this);
             // The lag in the hold's frame (the rig at the grab), turned back into the world with the rig.
-            Vector3d lag = _held != null
-                ? _held.OutOfHoldFrame(GrabFollow.Lag(_held.InHoldFrame(_held.transform.position).ToDouble(), _held.InHoldFrame(_position).ToDouble(), _grabOffset.ToDouble()).ToUnity()).ToDouble()
-                : Vector3d.Zero;
+            Vector3d lag = HeldLag(_position);
             Vector3d offset = _drawing.Update(_held != null ? _held.HandDrawing : HandDrawingMode.HandTrue, _held != null, lag, dt);
-            if (_handVisual != null) _handVisual.localPosition = _visualRest;
-            if (_handVisual != null) _handVisual.position += offset.ToUnity();
+            DrawVisual(offset);
+        }
+
+        Vector3d HeldLag(Vector3 hand) => _held != null
+            ? _held.OutOfHoldFrame(GrabFollow.Lag(_held.InHoldFrame(_held.transform.position).ToDouble(), _held.InHoldFrame(hand).ToDouble(), _grabOffset.ToDouble()).ToUnity()).ToDouble()
+            : Vector3d.Zero;
+
+        void DrawVisual(Vector3d offset)
+        {
+            if (_handVisual == null) return;
+            _handVisual.localPosition = _visualRest;
+            _handVisual.position += offset.ToUnity();
+        }
+
+        /// <summary>
+        /// Before the frame renders, after the rig re-posed its hand anchors (and the weights their objects): the visual
+        /// from the hand where it is now, the same frame's drawing (<see cref="HandDrawing.Remeasure"/>).
+        /// </summary>
+        [BeforeRenderOrder(BeforeRenderOrder)]
+        void PlaceVisualBeforeRender()
+        {
+            if (_handVisual == null || !isActiveAndEnabled) return;
+            IPinchHandPoseSource hand = Hand;
+            if (hand == null) return;
+            Vector3 now = hand.Position;
+            DrawVisual(_drawing.Remeasure(_held != null ? HeldLag(now) : Vector3d.Zero));
         }
 
         /// <summary>Lets go of the held object, if any.</summary>

@@ -18,13 +18,9 @@ namespace Kosmos.PseudoHaptic.SampleScenes
             IHandPoseSource hand = HandSourceField.Resolve<IHandPoseSource>(_hand);
             if (hand == null)
             {
-                var hands = SampleContent.HandsInScene();
-                if (hands.Count > 0) hand = hands[hands.Count - 1];
-            }
-            if (hand == null)
-            {
-                Debug.LogError("Calibration sample: no hand pose source in the scene (add OvrHandPoseSource to an OVRHand).", this);
-                return;
+                var hands = SampleContent.HandsInScene("Calibration sample", this); // warns, naming what is missing, when it finds none
+                if (hands.Count == 0) return;
+                hand = hands[hands.Count - 1];
             }
             SampleContent.CalibrationStation(transform, hand);
         }

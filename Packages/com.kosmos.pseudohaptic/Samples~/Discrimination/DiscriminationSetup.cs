@@ -18,7 +18,7 @@ namespace Kosmos.PseudoHaptic.SampleScenes
 
         void Awake()
         {
-            var hands = new System.Collections.Generic.List<IHandPoseSource>(SampleContent.HandsInScene());
+            var hands = new System.Collections.Generic.List<IHandPoseSource>(SampleContent.HandsInScene("Discrimination sample", this));
             PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
             DiscriminationStation.Build(transform, profile, _participant, hands); // a fingertip poker per hand answers the buttons
         }

@@ -4,9 +4,10 @@ using UnityEngine;
 namespace Kosmos.PseudoHaptic.SampleScenes
 {
     /// <summary>
-    /// Builds Experiment 1 of Son et al. 2022 (§4.1) when the scene starts: boxes A, B and C of the same size and
-    /// different densities (B heaviest) on a table, under the "paper-experiment" profile (no offset correction,
-    /// as the experiment ran). Put it on an empty GameObject in a scene that has a hand rig.
+    /// Builds Experiment 1 of Son et al. 2022 (§6) when the scene starts: boxes A, B and C of the same size and
+    /// different densities (B heaviest; PaperExperiment1) on a table, under the "paper-experiment" profile (no offset
+    /// correction, both hands sharing the weight, as the experiment ran). Put it on an empty GameObject in a scene that
+    /// has a hand rig (Meta's stock OVRCameraRig with OVRHandPrefabs will do).
     /// </summary>
     public sealed class Experiment1Setup : MonoBehaviour
     {
@@ -15,8 +16,8 @@ namespace Kosmos.PseudoHaptic.SampleScenes
 
         void Awake()
         {
-            SampleContent.HandsInScene();
-            PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(NamedProfiles.PaperExperimentName);
+            SampleContent.HandsInScene("Experiment 1 sample", this);
+            PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(PaperExperiment1.ProfileName);
             SampleContent.Experiment1(transform, profile);
         }
     }

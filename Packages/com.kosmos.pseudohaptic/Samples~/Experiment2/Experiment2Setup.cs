@@ -15,7 +15,7 @@ namespace Kosmos.PseudoHaptic.SampleScenes
 
         void Awake()
         {
-            SampleContent.HandsInScene();
+            SampleContent.HandsInScene("Experiment 2 sample", this);
             PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(NamedProfiles.PaperExperimentName);
             SampleContent.Experiment2(transform, profile);
         }

@@ -16,7 +16,7 @@ namespace Kosmos.PseudoHaptic.SampleScenes
 
         void Awake()
         {
-            var hands = new List<IHandPoseSource>(SampleContent.HandsInScene());
+            var hands = new List<IHandPoseSource>(SampleContent.HandsInScene("Playground sample", this));
             PseudoHapticProfile profile = _profile != null ? _profile : PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
             SampleContent.Playground(transform, profile, hands);
         }

@@ -13,11 +13,11 @@ namespace Kosmos.PseudoHaptic.Samples
     {
         public const float TableHeight = 0.75f;
 
-        /// <summary>Densities of Experiment 1's boxes, kg/m³: same size, B heaviest. The paper gives no values; these are wood-like.</summary>
-        public const float BoxADensity = 300f, BoxBDensity = 800f, BoxCDensity = 500f;
+        /// <summary>Densities of Experiment 1's boxes, kg/m³: same size, B heaviest (<see cref="PaperExperiment1"/>, the one definition).</summary>
+        public const float BoxADensity = (float)PaperExperiment1.BoxADensity, BoxBDensity = (float)PaperExperiment1.BoxBDensity, BoxCDensity = (float)PaperExperiment1.BoxCDensity;
 
-        /// <summary>Edge of Experiment 1's boxes, m.</summary>
-        public const float BoxSize = 0.15f;
+        /// <summary>Edge of Experiment 1's boxes, m (<see cref="PaperExperiment1.BoxEdge"/>).</summary>
+        public const float BoxSize = (float)PaperExperiment1.BoxEdge;
 
         /// <summary>Experiment 2's water bottles, litres.</summary>
         public static readonly float[] BottleLitres = { 0.33f, 0.5f, 1.0f, 1.5f, 2.0f };
@@ -179,10 +179,13 @@ namespace Kosmos.PseudoHaptic.Samples
             if (profile != null) profile.SetEnabled<TwoHands>(true);
         }
 
-        /// <summary>Experiment 1 (paper §4.1): boxes A, B, C of one size and different densities, B heaviest, lifted with both hands.</summary>
+        /// <summary>
+        /// Experiment 1 (paper §6, <see cref="PaperExperiment1"/>): boxes A, B, C of one size and different densities, B
+        /// heaviest, mass = density × the box collider's volume, under <paramref name="profile"/> (the samples give it the
+        /// experiment's, "paper-experiment", whose Two Hands shares the weight when both hands lift).
+        /// </summary>
         public static List<PseudoHapticWeight> Experiment1(Transform root, PseudoHapticProfile profile)
         {
-            LiftWithBothHands(profile);
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.0f, 0.5f));
             var size = Vector3.one * BoxSize;
             return new List<PseudoHapticWeight>
@@ -248,19 +251,34 @@ namespace Kosmos.PseudoHaptic.Samples
             return objects;
         }
 
+        static System.Func<int> s_ovrHands;
+
+        /// <summary>
+        /// Called by the Meta assembly (<c>Kosmos.PseudoHaptic.Meta.OvrRigHands</c>, when the Meta XR Core SDK is installed)
+        /// as play mode starts: <paramref name="addPoseSources"/> gives every enabled <c>OVRHand</c> that no pose source reads
+        /// an <c>OvrHandPoseSource</c> and returns how many <c>OVRHand</c>s it found. Null: none (Meta's hands are not looked for).
+        /// </summary>
+        public static void RegisterOvrHands(System.Func<int> addPoseSources) => s_ovrHands = addPoseSources;
+
         /// <summary>
         /// The scene's pinch hands (every enabled <see cref="IPinchHandPoseSource"/>), each given a <see cref="PinchGrab"/>
-        /// if it has none. For setup scripts dropped into a scene that already has a rig; not for per-frame use.
+        /// if it has none, after Meta's stock rig (an <c>OVRCameraRig</c> with an <c>OVRHandPrefab</c> per hand anchor) got
+        /// a pose source on each <c>OVRHand</c>. When it finds none, logs one warning naming what is missing
+        /// (<see cref="RigHands.MissingHandsWarning"/>). For setup scripts dropped into a scene that already has a rig;
+        /// not for per-frame use.
         /// </summary>
-        public static List<IPinchHandPoseSource> HandsInScene()
+        public static List<IPinchHandPoseSource> HandsInScene(string sample = null, Object context = null)
         {
+            int ovrHands = s_ovrHands != null ? s_ovrHands() : 0;
             var hands = new List<IPinchHandPoseSource>();
-            foreach (MonoBehaviour b in Object.FindObjectsByType<MonoBehaviour>(FindObjectsSortMode.None))
+            foreach (MonoBehaviour b in Object.FindObjectsByType<MonoBehaviour>(FindObjectsSortMode.InstanceID))
             {
-                if (!(b is IPinchHandPoseSource hand)) continue;
+                if (!(b is IPinchHandPoseSource hand) || !b.enabled) continue; // enabled, not isActiveAndEnabled: a source not yet awake still counts
                 hands.Add(hand);
                 if (b.GetComponent<PinchGrab>() == null) b.gameObject.AddComponent<PinchGrab>().InjectHand(hand);
             }
+            string warning = RigHands.MissingHandsWarning(sample, hands.Count, s_ovrHands != null, ovrHands);
+            if (warning != null) Debug.LogWarning(warning, context);
             return hands;
         }
 

@@ -139,5 +139,18 @@ namespace Kosmos.PseudoHaptic.Tests
             while (drawing.Offset.Length > 0 && t < 1) { drawing.Update(HandDrawingMode.HandTrue, true, new Vector3d(0, -0.05, 0), 0.011); t += 0.011; }
             Assert.That(t, Is.LessThanOrEqualTo(ReturnWithin + 0.011));
         }
+
+        [Test]
+        public void RemeasuringTheLagLetsNoTimePass()
+        {
+            var drawing = new HandDrawing();
+            drawing.Update(HandDrawingMode.HandOnObject, true, new Vector3d(0, -0.05, 0), 0.011);
+            Assert.That(drawing.Remeasure(new Vector3d(0, -0.06, 0)).Y, Is.EqualTo(-0.06).Within(1e-12), "holding: the new lag is drawn");
+            Assert.That(drawing.Remeasure(new Vector3d(double.NaN, 0, 0)).Y, Is.EqualTo(-0.06).Within(1e-12), "a lost hand keeps it");
+            drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.Zero, 0.011); // released: the return begins
+            Vector3d returning = drawing.Offset;
+            for (int i = 0; i < 10; i++) Assert.That(drawing.Remeasure(new Vector3d(0, 0.3, 0)).Y, Is.EqualTo(returning.Y).Within(1e-12), "not holding: a remeasure neither moves nor returns it");
+            Assert.That(drawing.IsReturning, Is.True);
+        }
     }
 }

@@ -1,0 +1,137 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using System.Text.RegularExpressions;
+using Kosmos.PseudoHaptic.Meta;
+using Kosmos.PseudoHaptic.Samples;
+using Kosmos.PseudoHaptic.SampleScenes;
+using Kosmos.PseudoHaptic.Tests.Stock;
+using NUnit.Framework;
+using UnityDouble;
+using UnityEngine;
+using UnityEngine.TestTools;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// Issue 34 item 2: every sample's setup finds the hands of Meta's stock rig (OVRCameraRig with an OVRHandPrefab under
+    /// each hand anchor, nothing of this package on it) and a hand grabs there; with no hand, one warning names what is
+    /// missing. Play mode is entered as Unity enters it (the [RuntimeInitializeOnLoadMethod]s run), which registers the
+    /// Meta assembly's hand finder.
+    /// </summary>
+    public sealed class StockRigTests
+    {
+        static readonly Type[] Setups = { typeof(CalibrationSetup), typeof(Experiment1Setup), typeof(Experiment2Setup), typeof(PlaygroundSetup), typeof(DiscriminationSetup) };
+
+        readonly List<string> _warnings = new List<string>();
+
+        void Collect(string message, string stack, LogType type)
+        {
+            if (type == LogType.Warning) _warnings.Add(message);
+        }
+
+        [SetUp]
+        public void EnterPlayMode()
+        {
+            PlayMode.Enter(typeof(OvrRigHands).Assembly);
+            _warnings.Clear();
+            Application.logMessageReceived += Collect;
+        }
+
+        [TearDown]
+        public void StopCollecting() => Application.logMessageReceived -= Collect;
+
+        static double MinimumJerk(double u)
+        {
+            u = Math.Min(1, Math.Max(0, u));
+            return u * u * u * (10 - 15 * u + 6 * u * u);
+        }
+
+        [TestCaseSource(nameof(Setups))]
+        public void EverySampleFindsTheStockRigsHandsAndAHandGrabsThere(Type setup)
+        {
+            var (rig, left, right) = StockOvrRig.Build();
+            Assert.That(UnityEngine.Object.FindObjectsByType<OvrHandPoseSource>(FindObjectsSortMode.None), Is.Empty, "the stock rig has none of the package's components");
+            new GameObject(setup.Name).AddComponent(setup);
+
+            OvrHandPoseSource[] sources = UnityEngine.Object.FindObjectsByType<OvrHandPoseSource>(FindObjectsSortMode.None);
+            Assert.That(sources.Select(s => s.gameObject), Is.EquivalentTo(new[] { left.gameObject, right.gameObject }), "a pose source on each OVRHand");
+            Assert.That(sources.Select(s => s.OvrHand), Is.EquivalentTo(new[] { left, right }));
+            Assert.That(sources.All(s => s.GetComponent<PinchGrab>() != null), Is.True, "and a Pinch Grab");
+            Assert.That(sources.Select(s => s.Rig), Is.All.SameAs(rig.trackingSpace), "the hold is solved in the rig's tracking space");
+            Assert.That(_warnings, Is.Empty, "hands were found: no warning");
+
+            if (setup == typeof(CalibrationSetup))
+            {
+                StandardSpeedCalibrator calibrator = UnityEngine.Object.FindObjectsByType<StandardSpeedCalibrator>(FindObjectsSortMode.None).Single();
+                Assert.That(calibrator.Hand, Is.InstanceOf<OvrHandPoseSource>(), "the calibration reads an OVR hand");
+                Assert.That(((OvrHandPoseSource)calibrator.Hand).OvrHand, Is.SameAs(left).Or.SameAs(right));
+                return; // nothing to grab at the calibration station: the real golf ball is lifted
+            }
+
+            PseudoHapticWeight weight = PseudoHapticWeight.Enabled[0];
+            Vector3 at = weight.Collider.bounds.center;
+            Vector3 farLeft = new Vector3(-1.5f, 1.2f, -0.6f);
+            float startY = weight.transform.position.y;
+            Frames.Run(1); // the OVR rig's Start
+            for (int i = 0; i < 110; i++)
+            {
+                double t = i * Frames.DefaultDuration;
+                OvrHands.Track(rig, farLeft, at + new Vector3(0, (float)(0.25 * MinimumJerk((t - 0.1) / 0.6)), 0));
+                OvrHands.Report(left, tracked: true);
+                OvrHands.Report(right, tracked: true, pinching: i >= 3); // the pinch closes at the object
+                Frames.Run(1);
+            }
+            Assert.That(weight.IsHeld, Is.True, weight.name + " is held by the stock rig's right hand");
+            Assert.That(weight.transform.position.y - startY, Is.GreaterThan(0.05f), weight.name + " was lifted (m)");
+        }
+
+        [Test]
+        public void WithoutAnyHandASampleWarnsOnceNamingTheMissingOVRHand()
+        {
+            new GameObject("Experiment 1").AddComponent<Experiment1Setup>();
+            Assert.That(_warnings, Has.Count.EqualTo(1));
+            Assert.That(_warnings[0], Does.StartWith("Experiment 1 sample: no hand to grab with").And.Contain("no enabled OVRHand").And.Contain("OVRHandPrefab under TrackingSpace/LeftHandAnchor"));
+        }
+
+        [Test]
+        public void WithoutTheMetaSdkTheWarningNamesIt()
+        {
+            SampleContent.RegisterOvrHands(null); // as when Kosmos.PseudoHaptic.Meta is not compiled
+            new GameObject("Calibration").AddComponent<CalibrationSetup>();
+            Assert.That(_warnings, Has.Count.EqualTo(1), "the calibration no longer logs an error of its own");
+            Assert.That(_warnings[0], Does.StartWith("Calibration sample: no hand").And.Contain("Meta XR Core SDK (com.meta.xr.sdk.core) is not installed"));
+        }
+
+        [Test]
+        public void TheExperiment1SampleBuildsPaperExperiment1()
+        {
+            StockOvrRig.Build();
+            new GameObject("Experiment 1").AddComponent<Experiment1Setup>();
+            Assert.That(PseudoHapticWeight.Enabled.Select(w => w.name), Is.EqualTo(PaperExperiment1.BoxNames.Select(n => "Box " + n)));
+            for (int i = 0; i < PseudoHapticWeight.Enabled.Count; i++)
+            {
+                PseudoHapticWeight w = PseudoHapticWeight.Enabled[i];
+                Assert.That(w.Configure(), Is.True, w.ConfigurationError);
+                Assert.That(w.GetComponent<BoxCollider>().size, Is.EqualTo(Vector3.one * (float)PaperExperiment1.BoxEdge));
+                Assert.That(w.GetComponent<Rigidbody>().mass, Is.EqualTo(PaperExperiment1.Mass(PaperExperiment1.BoxDensities[i])).Within(1e-4), "density × the collider's volume, kg");
+                Assert.That(w.Profile.name, Is.EqualTo(PaperExperiment1.ProfileName));
+                Assert.That(w.Profile.IsEnabled(new TwoHands().Name), Is.True);
+                Assert.That(w.Profile.IsEnabled(new OffsetCorrection().Name), Is.False);
+            }
+        }
+
+        [Test]
+        public void AHandTheRigBuilderAlreadyGaveASourceGetsNoSecond()
+        {
+            var (rig, left, right) = StockOvrRig.Build();
+            var own = left.gameObject.AddComponent<OvrHandPoseSource>();
+            own.InjectHand(left);
+            Assert.That(OvrRigHands.AddPoseSources(), Is.EqualTo(2));
+            Assert.That(left.GetComponents<OvrHandPoseSource>(), Has.Length.EqualTo(1));
+            Assert.That(right.GetComponents<OvrHandPoseSource>(), Has.Length.EqualTo(1));
+            right.enabled = false;
+            Assert.That(OvrRigHands.AddPoseSources(), Is.EqualTo(1), "a disabled OVRHand is not a hand");
+        }
+    }
+}

@@ -1,0 +1,39 @@
+using UnityEngine;
+
+namespace Kosmos.PseudoHaptic.Tests.Stock
+{
+    // Stand-ins for the components Meta's OVRHandPrefab carries beside OVRHand (Meta XR Core SDK 68.0.2: OVRSkeleton,
+    // OVRSkeletonRenderer, OVRMesh, OVRMeshRenderer). The package never names them, so the double does not declare them;
+    // they are here only so the stock prefab's GameObject holds what Meta's holds.
+    public sealed class OVRSkeleton : MonoBehaviour { }
+    public sealed class OVRSkeletonRenderer : MonoBehaviour { }
+    public sealed class OVRMesh : MonoBehaviour { }
+    public sealed class OVRMeshRenderer : MonoBehaviour { }
+
+    /// <summary>
+    /// Meta's stock rig as its prefabs lay it out: <c>OVRCameraRig</c> (its Awake makes TrackingSpace with LeftHandAnchor,
+    /// RightHandAnchor and CenterEyeAnchor), and, as Meta's hand-tracking set-up says, an <c>OVRHandPrefab</c> (OVRHand,
+    /// OVRSkeleton, OVRSkeletonRenderer, OVRMesh, OVRMeshRenderer on one GameObject; its SkinnedMeshRenderer is left out, the double has none) under each hand
+    /// anchor; nothing of this package on it.
+    /// </summary>
+    public static class StockOvrRig
+    {
+        public static (OVRCameraRig Rig, OVRHand Left, OVRHand Right) Build()
+        {
+            var rig = new GameObject("OVRCameraRig").AddComponent<OVRCameraRig>();
+            return (rig, Hand(rig.leftHandAnchor, "OVRHandPrefab"), Hand(rig.rightHandAnchor, "OVRHandPrefab"));
+        }
+
+        static OVRHand Hand(Transform anchor, string name)
+        {
+            var go = new GameObject(name);
+            go.transform.SetParent(anchor, false);
+            OVRHand hand = go.AddComponent<OVRHand>();
+            go.AddComponent<OVRSkeleton>();
+            go.AddComponent<OVRSkeletonRenderer>();
+            go.AddComponent<OVRMesh>();
+            go.AddComponent<OVRMeshRenderer>();
+            return hand;
+        }
+    }
+}
