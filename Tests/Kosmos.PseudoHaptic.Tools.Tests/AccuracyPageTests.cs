@@ -51,6 +51,85 @@ public class AccuracyPageTests : CliTestFolder
         Assert.That(differ, Is.Zero, $"{AccuracyMarkdown.ChartPath} is stale ({differ} pixels differ): rerun {AccuracyMarkdown.Command}");
     }
 
+    /// <summary>A 1.5 s lift of 0.1 m at 90 Hz: enough to be a source, quick to measure.</summary>
+    string ShortTrace()
+    {
+        var sb = new System.Text.StringBuilder("t,hand_y\n");
+        for (int i = 0; i <= 135; i++)
+        {
+            double t = i / 90.0;
+            sb.Append(System.FormattableString.Invariant($"{t:R},{0.9 + 0.05 * (1 - Math.Cos(Math.PI * Math.Min(t, 1)))}\n"));
+        }
+        return Write("short.csv", sb.ToString());
+    }
+
+    (int Code, string Stderr) Accuracy(params string[] args)
+    {
+        var (code, stderr, _) = Capture(() => Cli.Cli.Run(args.Prepend("accuracy").ToArray()));
+        return (code, stderr);
+    }
+
+    [Test]
+    public void A_page_or_chart_made_from_other_inputs_is_refused_unless_overwrite_is_given()
+    {
+        // Issue 32: run without ../shared, the page's command silently rewrote the committed page from 3 sources, not 4.
+        string trace = ShortTrace(), page = Path.Combine(_dir, "page.md"), chart = Path.Combine(_dir, "chart.png");
+        string costs = Path.Combine(RepositoryRoot.Path, AccuracyMarkdown.CostsPath);
+        string[] common = { "--trace", trace, "--lifts", "none", "--mocap", "none", "--long-minutes", "0", "--costs", costs };
+        var (code, stderr) = Accuracy(common.Concat(new[] { "--markdown", page, "--chart", chart }).ToArray());
+        Assert.That(code, Is.EqualTo(0), stderr);
+        byte[] pageBefore = File.ReadAllBytes(page), chartBefore = File.ReadAllBytes(chart);
+        Assert.That(File.ReadAllText(page), Does.Contain("<!-- " + AccuracyInputs.Marker + ": sources trace; 1 kg;"), "the page records its inputs");
+        Assert.That(AccuracyInputs.OfChart(chart), Does.StartWith("sources trace; 1 kg;"), "the chart records its inputs");
+
+        // Other inputs: another mass, the lifts added (another source list), another trace.
+        foreach (var other in new[] { new[] { "--mass-kg", "2" }, new[] { "--lifts", "all" }, new[] { "--standard-speed", "0.6" } })
+        {
+            var args = common.Where((_, i) => !(other[0] == "--lifts" && i >= 2 && i <= 3)).Concat(other);
+            foreach (var (option, path) in new[] { ("--markdown", page), ("--chart", chart) })
+            {
+                var watch = System.Diagnostics.Stopwatch.StartNew();
+                (code, stderr) = Accuracy(args.Concat(new[] { option, path }).ToArray());
+                Assert.That(code, Is.EqualTo(2), string.Join(" ", other) + ": " + stderr);
+                Assert.That(stderr, Does.StartWith($"pseudohaptic accuracy: {option} {path} was made from other inputs (sources trace; 1 kg;").And.Contain("--overwrite"));
+                Assert.That(stderr.TrimEnd('\n').Split('\n'), Has.Length.EqualTo(1), "one line");
+                Assert.That(watch.Elapsed.TotalSeconds, Is.LessThan(5), "refused before the study");
+            }
+        }
+        Assert.That(File.ReadAllBytes(page), Is.EqualTo(pageBefore), "the page untouched");
+        Assert.That(File.ReadAllBytes(chart), Is.EqualTo(chartBefore), "the chart untouched");
+
+        // The same inputs rewrite it; --overwrite writes it from other inputs, which it then records.
+        (code, stderr) = Accuracy(common.Concat(new[] { "--markdown", page }).ToArray());
+        Assert.That(code, Is.EqualTo(0), stderr);
+        Assert.That(File.ReadAllBytes(page), Is.EqualTo(pageBefore), "seeded: the same inputs write the same page");
+        (code, stderr) = Accuracy(common.Concat(new[] { "--markdown", page, "--chart", chart, "--mass-kg", "2", "--overwrite" }).ToArray());
+        Assert.That(code, Is.EqualTo(0), stderr);
+        Assert.That(File.ReadAllText(page), Does.Contain(": sources trace; 2 kg;"));
+        Assert.That(AccuracyInputs.OfChart(chart), Does.StartWith("sources trace; 2 kg;"));
+    }
+
+    [Test]
+    public void The_committed_page_is_not_rewritten_without_the_motion_capture()
+    {
+        // The documented command where ../shared is missing (no motion capture, 3 sources): refused at once, both
+        // files as they were. Run on copies of the committed page and chart.
+        string page = Path.Combine(_dir, "accuracy-results.md"), chart = Path.Combine(_dir, "accuracy-pareto.png");
+        File.Copy(Path.Combine(RepositoryRoot.Path, AccuracyMarkdown.PagePath), page);
+        File.Copy(Path.Combine(RepositoryRoot.Path, AccuracyMarkdown.ChartPath), chart);
+        Assert.That(AccuracyInputs.OfPage(page), Does.StartWith("sources lift-slow, lift-medium, lift-fast, mocap;"), "the committed page records its four sources");
+        Assert.That(AccuracyInputs.OfChart(chart), Is.EqualTo(AccuracyInputs.OfPage(page)), "the committed chart records the page's inputs");
+        string costs = Path.Combine(RepositoryRoot.Path, AccuracyMarkdown.CostsPath);
+        foreach (var (option, path) in new[] { ("--markdown", page), ("--chart", chart) })
+        {
+            var (code, stderr) = Accuracy(option, path, "--costs", costs, "--mocap", "none");
+            Assert.That(code, Is.EqualTo(2), stderr);
+            Assert.That(stderr, Does.Contain("than this run's (sources lift-slow, lift-medium, lift-fast; "));
+        }
+        Assert.That(File.ReadAllBytes(page), Is.EqualTo(File.ReadAllBytes(Path.Combine(RepositoryRoot.Path, AccuracyMarkdown.PagePath))));
+        Assert.That(File.ReadAllBytes(chart), Is.EqualTo(File.ReadAllBytes(Path.Combine(RepositoryRoot.Path, AccuracyMarkdown.ChartPath))));
+    }
+
     [Test]
     public void The_same_hand_scores_the_same_whatever_its_name_or_place()
     {

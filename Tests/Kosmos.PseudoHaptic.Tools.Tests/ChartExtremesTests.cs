@@ -29,7 +29,7 @@ public class ChartExtremesTests : CliTestFolder
     }
 
     /// <summary>No ink in the outermost pixels: text or lines cut by the image's edge.</summary>
-    static void AssertNothingClipped(string png)
+    public static void AssertNothingClipped(string png)
     {
         using var bitmap = SKBitmap.Decode(png);
         Assert.That(bitmap, Is.Not.Null, png);

@@ -102,15 +102,85 @@ public class CliExamplesTests
         // The accuracy page's command takes two minutes and is AccuracyPageTests' to run.
         if (script.Contains(AccuracyMarkdown.Command, StringComparison.Ordinal)) script = script.Replace(AccuracyMarkdown.Command, "");
         Directory.CreateDirectory(Path.Combine(_sandbox, block.Folder));
+        var before = Snapshot(_sandbox);
         var (code, output) = Bash(block.Folder, script);
         Assert.That(code, Is.EqualTo(0), $"{block}:\n{script}\n{output}");
+        AssertWroteOnlyUnderOut(before, block.ToString());
     }
 
     [TestCaseSource(nameof(HelpExamples))]
     public void Every_help_example_runs(string example)
     {
+        // As the help says: from the repository's root, after mkdir -p out.
+        Directory.CreateDirectory(Path.Combine(_sandbox, "out"));
+        var before = Snapshot(_sandbox);
         var (code, output) = Bash(".", example);
         Assert.That(code, Is.EqualTo(0), example + "\n" + output);
+        AssertWroteOnlyUnderOut(before, example);
+    }
+
+    /// <summary>Every file and folder below <paramref name="root"/> with its size and time of last change.</summary>
+    static Dictionary<string, (long Size, DateTime Changed)> Snapshot(string root)
+    {
+        var files = new Dictionary<string, (long, DateTime)>(StringComparer.Ordinal);
+        foreach (var entry in new DirectoryInfo(root).EnumerateFileSystemInfos("*", SearchOption.AllDirectories))
+            files[Path.GetRelativePath(root, entry.FullName)] = (entry is FileInfo f ? f.Length : -1, entry is FileInfo ? entry.LastWriteTimeUtc : DateTime.MinValue);
+        return files;
+    }
+
+    /// <summary>
+    /// Issue 32: an example writes only under the repository's ignored <c>out/</c> (not <c>demo-lift/</c> at the
+    /// root, not <c>out/</c> inside Documentation~): every file created, changed or removed elsewhere fails.
+    /// </summary>
+    void AssertWroteOnlyUnderOut(Dictionary<string, (long Size, DateTime Changed)> before, string example)
+    {
+        var after = Snapshot(_sandbox);
+        var stray = after.Where(e => !UnderOut(e.Key) && (!before.TryGetValue(e.Key, out var was) || was != e.Value)).Select(e => e.Key)
+            .Concat(before.Keys.Where(k => !UnderOut(k) && !after.ContainsKey(k)))
+            .OrderBy(k => k, StringComparer.Ordinal).ToList();
+        Assert.That(stray, Is.Empty, $"{example} writes outside out/: {string.Join(", ", stray)}");
+    }
+
+    static bool UnderOut(string path) => path == "out" || path.StartsWith("out" + Path.DirectorySeparatorChar, StringComparison.Ordinal);
+
+    /// <summary>The check above can fail: a file written beside out/ is named.</summary>
+    [Test]
+    public void The_out_check_sees_a_file_written_outside_out()
+    {
+        var before = Snapshot(_sandbox);
+        var (code, _) = Bash(".", "mkdir -p out && echo x > out/fine.txt && mkdir -p demo-lift && echo x > demo-lift/stray.csv");
+        Assert.That(code, Is.Zero);
+        try
+        {
+            var e = Assert.Throws<AssertionException>(() => AssertWroteOnlyUnderOut(before, "stray"));
+            Assert.That(e!.Message, Does.Contain("demo-lift").And.Not.Contain("fine.txt"));
+        }
+        finally
+        {
+            Directory.Delete(Path.Combine(_sandbox, "demo-lift"), true);
+        }
+    }
+
+    /// <summary>
+    /// examples/study/run.sh regenerates the worked example: its working files go under out/, and besides them it
+    /// writes only the copies it keeps in its own folder.
+    /// </summary>
+    [Test]
+    public void The_study_example_script_writes_only_under_out_and_its_copies()
+    {
+        string study = Path.Combine("Packages", "com.kosmos.pseudohaptic", "Documentation~", "examples", "study");
+        var before = Snapshot(_sandbox);
+        var (code, output) = Bash(study, "sh run.sh");
+        Assert.That(code, Is.EqualTo(0), output);
+        var copies = File.ReadAllLines(Path.Combine(_sandbox, study, "run.sh"))
+            .Select(l => Regex.Match(l, "^cp \".+\" \"\\$HERE/([^\"]+)\"$")).Where(m => m.Success).Select(m => m.Groups[1].Value).ToList();
+        Assert.That(copies, Has.Count.GreaterThanOrEqualTo(5), "the copies run.sh keeps");
+        foreach (var copy in copies) before.Remove(Path.Combine(study, copy));
+        var after = Snapshot(_sandbox);
+        foreach (var copy in copies) after.Remove(Path.Combine(study, copy));
+        Assert.That(Directory.Exists(Path.Combine(_sandbox, "out", "study-example", "fits")), "its working files under out/");
+        var stray = after.Where(e => !UnderOut(e.Key) && (!before.TryGetValue(e.Key, out var was) || was != e.Value)).Select(e => e.Key).ToList();
+        Assert.That(stray, Is.Empty, "run.sh writes outside out/: " + string.Join(", ", stray));
     }
 
     [Test]

@@ -56,6 +56,7 @@ public class CommandLineTests : CliTestFolder
     }
 
     [TestCase(new[] { "frob" }, "pseudohaptic: unknown command 'frob'; expected demo, replay, profiles, tune, personalization, accuracy, score, report, psychometric, compare, completion, unity-package")]
+    [TestCase(new[] { "--versoin" }, "pseudohaptic: unknown option '--versoin'; expected --help, --version or a command: demo, replay, profiles, tune, personalization, accuracy, score, report, psychometric, compare, completion, unity-package")]
     [TestCase(new[] { "demo", "--bogus" }, "pseudohaptic demo: unknown option '--bogus'; expected --out, --trace, --user, --svg")]
     [TestCase(new[] { "accuracy", "--bogus", "1" }, "pseudohaptic accuracy: unknown option '--bogus'; expected --trace, --lifts, --mass-kg, --standard-speed, --mocap, --long-minutes, --csv, --costs, --markdown, --chart, --svg")]
     [TestCase(new[] { "replay", "--trace", "a.csv", "--out", "b.csv" }, "pseudohaptic replay: option --mass-kg is required")]
@@ -122,6 +123,26 @@ public class CommandLineTests : CliTestFolder
         (code, stderr, _) = Run("report", "--scores", scores, "--out", "/sys/ph-report");
         Assert.That(code, Is.EqualTo(1), stderr);
         Assert.That(stderr, Does.StartWith("pseudohaptic report: --out /sys/ph-report: cannot write: "));
+    }
+
+    [Test]
+    public void An_output_in_a_folder_that_allows_no_new_files_says_so_not_that_it_does_not_exist()
+    {
+        if (!ToolProcess.IsLinux) Assert.Ignore("/proc is Linux's");
+        // /proc exists but creating a file in it fails with ENOENT (issue 32: it said "does not exist").
+        string scores = Write("S.csv", "participant,questionnaire,score\nP1,immersion,3\n");
+        string trace = Write("in.csv", "t,hand_y\n0,1\n0.1,1.05\n");
+        foreach (var (command, args) in new[]
+                 {
+                     ("demo", new[] { "demo", "--out", "/proc/x" }),
+                     ("report", new[] { "report", "--scores", scores, "--out", "/proc/x" }),
+                     ("replay", new[] { "replay", "--trace", trace, "--out", "/proc/x", "--mass-kg", "1" }),
+                 })
+        {
+            var (code, stderr, _) = Run(args);
+            Assert.That(code, Is.EqualTo(1), stderr);
+            Assert.That(stderr, Is.EqualTo($"pseudohaptic {command}: --out /proc/x: cannot write: cannot create files in /proc (the folder exists, but its file system does not allow new files)\n"));
+        }
     }
 
     [Test]

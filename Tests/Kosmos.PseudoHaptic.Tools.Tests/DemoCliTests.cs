@@ -21,7 +21,7 @@ public class DemoCliTests
     static int SceneHeight(string scene) => Path.GetFileNameWithoutExtension(scene) switch
     {
         "offset-correction" or "recorded-hand" => 560 + 520,
-        "xyz-carry-lift" => 330 + 330 + 400,
+        "xyz-carry-lift" => 330 + 300 + 600,
         _ => 600,
     };
 

@@ -110,6 +110,11 @@ public class StudyCliTests : CliTestFolder
     [TestCase("participant,standard,comparison,response\nP1,1,abc,1\n", "T.csv:2: comparison 'abc' is not a number")]
     [TestCase("participant,standard,comparison,response\nP1,NaN,1,1\n", "T.csv:2: standard 'NaN' is not a finite number")]
     [TestCase("participant,standard,comparison,response\n,1,1,1\n", "T.csv:2: participant is empty")]
+    // Issue 32: a weight is positive; a standard of -0.5 kg exited 0 with a Weber fraction of -0.131.
+    [TestCase("participant,standard,comparison,response\nP1,0.5,0.4,0\nP1,-0.5,0.6,1\nP1,0.5,0.7,1\n", "T.csv:3: standard -0.5 is not a positive weight (kg)")]
+    [TestCase("participant,standard,comparison,response\nP1,0.5,0.4,0\nP1,0,0.6,1\n", "T.csv:3: standard 0 is not a positive weight (kg)")]
+    [TestCase("participant,standard,comparison,response\nP1,0.5,0.4,0\nP1,0.5,-0.0,1\n", "T.csv:3: comparison -0.0 is not a positive weight (kg)")]
+    [TestCase("participant,standard,comparison,response\nP1,0.5,-0.4,0\n", "T.csv:2: comparison -0.4 is not a positive weight (kg)")]
     [TestCase("participant,standard,comparison,response\nP1,1,1\n", "T.csv:2: expected 4 fields")]
     [TestCase("", "T.csv:1: empty file")]
     public void MalformedTrialsAreRefusedNamingTheLineAndNothingIsWritten(string text, string expected)

@@ -36,4 +36,27 @@ public static class NumberText
 
     /// <summary>Fixed decimals for tables.</summary>
     public static string Fixed(double v, int decimals) => v.ToString("F" + decimals, CultureInfo.InvariantCulture);
+
+    /// <summary>
+    /// A p value as a reader expects it (APA style): "p &lt; 0.001" below 0.001, else "p = " and three significant
+    /// digits in plain decimals (0.00781, 0.918, 1.00), never E notation; "p = n/a" when not finite.
+    /// </summary>
+    public static string P(double p)
+    {
+        if (!double.IsFinite(p)) return "p = n/a";
+        if (p < 0.001) return "p < 0.001";
+        return "p = " + Plain(p, 3);
+    }
+
+    /// <summary><paramref name="v"/> to <paramref name="digits"/> significant digits in plain decimals (no E notation).</summary>
+    public static string Plain(double v, int digits)
+    {
+        if (!double.IsFinite(v)) return "n/a";
+        if (v == 0) return "0";
+        int magnitude = (int)Math.Floor(Math.Log10(Math.Abs(v)));
+        double rounded = Math.Round(v, Math.Clamp(digits - 1 - magnitude, 0, 15), MidpointRounding.AwayFromZero);
+        magnitude = (int)Math.Floor(Math.Log10(Math.Abs(rounded))); // 0.9996 rounds up to 1.00
+        int decimals = Math.Clamp(digits - 1 - magnitude, 0, 15);
+        return rounded.ToString("F" + decimals.ToString(CultureInfo.InvariantCulture), CultureInfo.InvariantCulture);
+    }
 }

@@ -23,10 +23,12 @@ public static class AccuracyMarkdown
     /// <summary>Issue 4's accuracy targets for the default pipeline.</summary>
     public const double RmsTargetMm = 5, AddedLagTargetMs = 40, CreepTargetMm = 10;
 
-    public static void Write(TextWriter w, AccuracyReport main, AccuracyReport golfBall, IReadOnlyDictionary<string, double>? costs)
+    public static void Write(TextWriter w, AccuracyReport main, AccuracyReport golfBall, IReadOnlyDictionary<string, double>? costs, AccuracyInputs inputs)
     {
         w.Write("# Accuracy of the hand-motion estimators (generated)\n\n");
-        w.Write("<!-- Generated: do not edit. AccuracyPageTests fails when this page differs from what the code produces. -->\n\n");
+        w.Write("<!-- Generated: do not edit. AccuracyPageTests fails when this page differs from what the code produces. -->\n");
+        // What the page was made from: the command refuses to rewrite it from other inputs (without --overwrite).
+        w.Write(inputs.PageComment + "\n\n");
         w.Write($"Written by one command, from the repository's root (the figures are seeded: the same code writes the same page; about two minutes):\n\n```sh\n{Command}\n```\n\n");
         w.Write("What is measured and why is in [accuracy-vs-time.md](accuracy-vs-time.md#accuracy); the columns are explained there. ");
         w.Write($"Each true hand is degraded as a Quest 2 delivers it ({Degradation.PoseRate:0} Hz poses, {Degradation.Latency * 1000:0} ms late, jitter of ");

@@ -8,11 +8,15 @@ namespace Kosmos.PseudoHaptic.Cli.Accuracy;
 /// summary), log x, each labelled with its key and added lag. Lower-left is better; the default is drawn in
 /// its own colour, the paper-literal baseline in another. Points far above the rest (more than 3× the median
 /// error) are drawn on the top edge, their labels giving the true error, so the cluster that matters is not
-/// squashed. Labels are placed beside their point where they overlap no other label, point or the legend.
+/// squashed. Labels are placed beside their point where they overlap no other label, point, bar or the legend.
+/// Each point is its own marker; the default is a ring drawn around its point, so an estimator at the same place (the
+/// default is no-filter plus a deadband that seldom acts) shows inside it. The 95 % bars stand 14 px right of their (the default's left of its)
+/// point with caps, so an interval narrower than the marker still shows. The right edge keeps room for the last tick
+/// label (issue 32: "1000" was cut).
 /// </summary>
 public static class ParetoChart
 {
-    const int Width = 1000, Height = 600, Gap = 7;
+    const int Width = 1000, Height = 600, Gap = 7, BarOffset = 14, Cap = 4;
 
     sealed record Point(string Key, double Ns, double RmsMm, double Low, double High, string Label, int Group);
 
@@ -50,14 +54,24 @@ public static class ParetoChart
             "ns per update (BenchmarkDotNet, log scale)",
             "RMS error vs reference (mm; bars: 95 % interval)");
         plot.Axes.Bottom.TickGenerator = Charts.LogTicks(xMin, xMax);
+        // One marker per point (the legend named once per group); the default's ring goes on last.
         for (int g = 0; g < groups.Length; g++)
         {
-            var mine = points.Where(p => p.Group == g).ToList();
-            if (mine.Count == 0) continue;
-            var onScale = mine.Where(p => !Off(p)).ToList();
-            Charts.ErrorBars(plot, onScale.Select(p => Math.Log10(p.Ns)).ToList(), onScale.Select(p => p.Low).ToList(), onScale.Select(p => p.High).ToList(), groups[g].Colour);
-            Charts.Points(plot, mine.Select(p => Math.Log10(p.Ns)).ToList(), mine.Select(Y).ToList(), groups[g].Label, groups[g].Colour, shape: g);
+            bool named = false;
+            foreach (var p in points.Where(p => p.Group == g))
+            {
+                var marker = Charts.Points(plot, new[] { Math.Log10(p.Ns) }, new[] { Y(p) }, named ? "" : groups[g].Label, groups[g].Colour, shape: g);
+                if (g == 1)
+                {
+                    marker.MarkerShape = ScottPlot.MarkerShape.OpenCircle;
+                    marker.MarkerSize = 17;
+                    marker.MarkerLineWidth = 2.5f;
+                }
+                named = true;
+            }
         }
+        // The last tick label (centred on the right edge) needs half its width beyond the data area.
+        plot.Axes.Right.MinimumSize = (float)(Charts.NoteWidth(xMax.ToString("G6", CultureInfo.InvariantCulture)) * 15 / Charts.NoteSize / 2 + 12);
         plot.Legend.Alignment = ScottPlot.Alignment.LowerRight;
         plot.Axes.SetLimits(Math.Log10(xMin), Math.Log10(xMax), 0, top);
 
@@ -77,8 +91,31 @@ public static class ParetoChart
         foreach (var p in points)
         {
             var (px, py) = Pixel(p);
-            taken.Add((px - 6, py - 6, px + 6, py + 6));
+            taken.Add((px - (p.Group == 1 ? 10 : 6), py - (p.Group == 1 ? 10 : 6), px + (p.Group == 1 ? 10 : 6), py + (p.Group == 1 ? 10 : 6)));
         }
+        // The 95 % bars, beside their points (taken too, so no label covers them).
+        bool barNamed = false;
+        foreach (var p in points.Where(p => !Off(p) && double.IsFinite(p.Low) && double.IsFinite(p.High)))
+        {
+            var (px, _) = Pixel(p);
+            double bx = p.Group == 1 ? px - BarOffset : px + BarOffset; // the default's on the left: it may share its point
+            var low = plot.GetPixel(new ScottPlot.Coordinates(0, p.Low)).Y;
+            var high = plot.GetPixel(new ScottPlot.Coordinates(0, p.High)).Y;
+            var x = plot.GetCoordinates(new ScottPlot.Pixel((float)bx, 0)).X;
+            double capLeft = plot.GetCoordinates(new ScottPlot.Pixel((float)(bx - Cap), 0)).X, capRight = plot.GetCoordinates(new ScottPlot.Pixel((float)(bx + Cap), 0)).X;
+            var colour = groups[p.Group].Colour;
+            // One path per bar, an I: the low cap, up the bar, the high cap.
+            var bar = plot.Add.ScatterLine(new[] { capLeft, capRight, x, x, capLeft, capRight }, new[] { p.Low, p.Low, p.Low, p.High, p.High, p.High }, colour);
+            bar.LineWidth = 2;
+            bar.MarkerSize = 0;
+            bar.LegendText = barNamed ? "" : "95 % interval (beside its point)";
+            barNamed = true;
+            taken.Add((bx - Cap - 1, Math.Min(low, high) - 2, bx + Cap + 1, Math.Max(low, high) + 2));
+        }
+
+        // The legend now has the bars' entry too.
+        using (var legendImage = plot.GetLegendImage()) { legendW = legendImage.Width; legendH = legendImage.Height; }
+        taken.Add((frame.Right - legendW - 14, frame.Bottom - legendH - 14, frame.Right, frame.Bottom));
 
         const double h = Charts.NoteHeight;
         foreach (var p in points.OrderBy(p => p.Ns))

@@ -20,7 +20,7 @@ public sealed class HelpWithExamples(HelpAction standard, IReadOnlyList<CliComma
         var command = commands.FirstOrDefault(c => c.Command == result.CommandResult.Command);
         if (command is { Examples.Length: > 0 })
         {
-            w.WriteLine("Examples (from the repository's root):");
+            w.WriteLine("Examples (from the repository's root; they write under out/: run mkdir -p out first):");
             foreach (var e in command.Examples) w.WriteLine("  " + e);
             w.WriteLine();
         }

@@ -20,6 +20,8 @@ public static partial class ParseErrors
         if (Unrecognized().Match(message) is { Success: true } u)
         {
             string token = u.Groups[1].Value;
+            if (command is RootCommand && token.StartsWith('-'))
+                return $"unknown option '{token}'; expected --help, --version or a command: {string.Join(", ", command.Subcommands.Select(c => c.Name))}";
             if (command is RootCommand)
                 return $"unknown command '{token}'; expected {string.Join(", ", command.Subcommands.Select(c => c.Name))}";
             string known = string.Join(", ", command.Options.Where(o => !o.Name.StartsWith("-?", StringComparison.Ordinal) && o.Name != "--help").Select(o => o.Name));

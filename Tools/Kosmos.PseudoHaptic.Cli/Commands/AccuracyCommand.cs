@@ -28,7 +28,7 @@ public static class AccuracyCommand
         new[]
         {
             "pseudohaptic accuracy --long-minutes 0 --mocap none",
-            "pseudohaptic accuracy --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --lifts none --mocap none --long-minutes 0 --csv accuracy.csv",
+            "pseudohaptic accuracy --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --lifts none --mocap none --long-minutes 0 --csv out/accuracy.csv",
         },
         CliCommand.Value("--trace", "FILE", "also measure on this recorded hand (replay's CSV format; usable rows spanning at most 120 s)"),
         CliCommand.Choice("--lifts", "measure on the synthetic lifts (default all)", "all", "none"),
@@ -40,7 +40,8 @@ public static class AccuracyCommand
         CliCommand.Value("--costs", "BENCH_RESULTS", "BenchmarkDotNet's results folder or report CSV: the time each estimator costs, for --chart (default: none, no chart)"),
         CliCommand.Value("--markdown", "OUT.md", "also write the generated page accuracy-results.md: the summaries at this mass and the golf ball's, per source, the long runs, the verdicts, with 95 % intervals"),
         CliCommand.Value("--chart", "OUT.png", "also draw the accuracy-against-time (Pareto) chart; needs --costs"),
-        CliCommand.Flag("--svg", "write an SVG beside the chart"));
+        CliCommand.Flag("--svg", "write an SVG beside the chart"),
+        CliCommand.Flag("--overwrite", "write --markdown and --chart even where the existing page or chart records other inputs (sources, mass, speed, long runs, costs); without it such a file is refused, exit 2"));
 
     static int Run(Options o)
     {
@@ -96,6 +97,14 @@ public static class AccuracyCommand
             notes.Add("--trace is the motion-capture trace: measured once, as mocap");
         else if (mocap != null) sources.Add(AccuracySource.FromTrace("mocap", mocap, "--mocap"));
         if (sources.Count == 0) throw new CliException("nothing to measure: --lifts none without --trace or a motion-capture trace");
+        // A generated page or chart is rewritten only from the inputs it records (issue 32: without ../shared the
+        // committed page lost a source), checked before the study runs.
+        var inputsRecord = AccuracyInputs.Of(mass, speed, minutes, sources, costs);
+        if (!o.Flag("--overwrite"))
+        {
+            if (markdownOut != null && !markdownOut.IsStandardOutput) inputsRecord.Check("--markdown", markdown!, AccuracyInputs.OfPage(markdown!));
+            if (chartOut != null && !chartOut.IsStandardOutput) inputsRecord.Check("--chart", chartPath!, AccuracyInputs.OfChart(chartPath!));
+        }
 
         var model = WeightModel.FromMass(mass);
         var report = AccuracyStudy.Run(new AccuracyStudy.Settings(model, speed, sources, minutes, notes), Progress.Writer);
@@ -109,11 +118,15 @@ public static class AccuracyCommand
         AccuracyTable.Write(say, report);
 
         csvOut?.Write(w => AccuracyTable.WriteCsv(w, report));
-        markdownOut?.Write(w => AccuracyMarkdown.Write(w, report, golfBall!, costs));
+        markdownOut?.Write(w => AccuracyMarkdown.Write(w, report, golfBall!, costs, inputsRecord));
         if (chartOut != null && costs != null)
         {
             // The PNG is written atomically; the SVG (--svg) is written beside the final path.
-            chartOut.WriteWith(temp => ParetoChart.Save(temp, report, costs, false));
+            chartOut.WriteWith(temp =>
+            {
+                ParetoChart.Save(temp, report, costs, false);
+                File.WriteAllBytes(temp, PngText.With(File.ReadAllBytes(temp), AccuracyInputs.Marker, inputsRecord.Line));
+            });
             if (svg) ParetoChart.Save(chartPath!, report, costs, true);
         }
         var written = new[] { csv, markdown, chartPath }.Where(p => p != null).Select(p => Messages.Path(p!)).ToList();

@@ -23,7 +23,7 @@ public static class CompareCommand
         Run,
         new[]
         {
-            "pseudohaptic compare --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/psychophysics.csv --out compare",
+            "pseudohaptic compare --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/psychophysics.csv --out out/compare",
         },
         CliCommand.Value("--scores", "S.csv", "participant,condition,questionnaire,score (what score writes from answers with a condition column)", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true));
@@ -59,9 +59,9 @@ public static class CompareCommand
         foreach (var r in rows)
         {
             if (r.Friedman != null)
-                Console.Out.WriteLine($"  {Messages.OneLine(r.Questionnaire)}: Friedman χ² = {G(r.Friedman.Statistic)}, df = {r.Friedman.DegreesOfFreedom}, p = {G(r.Friedman.P)} (n = {r.Friedman.N})");
+                Console.Out.WriteLine($"  {Messages.OneLine(r.Questionnaire)}: Friedman χ² = {G(r.Friedman.Statistic)}, df = {r.Friedman.DegreesOfFreedom}, {NumberText.P(r.Friedman.P)} (n = {r.Friedman.N})");
             else
-                Console.Out.WriteLine($"  {Messages.OneLine(r.Questionnaire)}: {Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)} = {G(r.Pair.MeanDifference)} (n = {r.Pair.N}), t p = {G(r.Pair.TP)}, Wilcoxon p = {G(r.Pair.WP)}, Holm p = {G(r.PHolm)}");
+                Console.Out.WriteLine($"  {Messages.OneLine(r.Questionnaire)}: {Messages.OneLine(r.ConditionB)} − {Messages.OneLine(r.ConditionA)} = {G(r.Pair.MeanDifference)} (n = {r.Pair.N}), t test {NumberText.P(r.Pair.TP)}, Wilcoxon {NumberText.P(r.Pair.WP)}, Holm-corrected {NumberText.P(r.PHolm)}");
         }
         return 0;
     }
@@ -104,6 +104,8 @@ public static class CompareCommand
     static string Report(string scoresPath, IReadOnlyList<ConditionScore> scores, IReadOnlyList<ComparisonRow> rows, List<(string File, string Questionnaire)> charts)
     {
         string cell(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "—";
+        // p plainly: "< 0.001" or three significant digits, never E notation.
+        string pcell(double v) => !double.IsFinite(v) ? "—" : v < 0.001 ? "< 0.001" : NumberText.Plain(v, 3);
         var md = new StringBuilder("# Condition comparisons\n\n");
         md.Append($"Source: `{Messages.OneLine(Path.GetFileName(scoresPath))}`, {scores.Count} scores, {scores.Select(s => s.Participant).Distinct().Count()} participants, conditions {string.Join(", ", scores.Select(s => "'" + Messages.OneLine(s.Condition) + "'").Distinct())}.\n\n");
         md.Append("Per questionnaire and pair of conditions (a, b), over the participants with a complete score in both, on the differences b − a: ");
@@ -115,13 +117,13 @@ public static class CompareCommand
         {
             md.Append($"## {Cell(q)}\n\n");
             foreach (var r in rows.Where(r => r.Questionnaire == q && r.Friedman != null))
-                md.Append($"Friedman: χ² = {cell(r.Friedman.Statistic)}, df = {r.Friedman.DegreesOfFreedom}, p = {cell(r.Friedman.P)}, n = {r.Friedman.N}.\n\n");
+                md.Append($"Friedman: χ² = {cell(r.Friedman.Statistic)}, df = {r.Friedman.DegreesOfFreedom}, {NumberText.P(r.Friedman.P)}, n = {r.Friedman.N}.\n\n");
             md.Append("| a | b | n | mean b − a | 95 % CI | t | p (t) | W | p (W) | d_z | r | p (Holm) | method |\n");
             md.Append("|---|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n");
             foreach (var r in rows.Where(r => r.Questionnaire == q && r.Pair != null))
             {
                 var p = r.Pair;
-                md.Append($"| {Cell(r.ConditionA)} | {Cell(r.ConditionB)} | {p.N} | {cell(p.MeanDifference)} | {(double.IsFinite(p.DifferenceLow) ? $"[{cell(p.DifferenceLow)}, {cell(p.DifferenceHigh)}]" : "—")} | {cell(p.T)} | {cell(p.TP)} | {cell(p.W)} | {cell(p.WP)} | {cell(p.Dz)} | {cell(p.R)} | {cell(r.PHolm)} | {r.Method} |\n");
+                md.Append($"| {Cell(r.ConditionA)} | {Cell(r.ConditionB)} | {p.N} | {cell(p.MeanDifference)} | {(double.IsFinite(p.DifferenceLow) ? $"[{cell(p.DifferenceLow)}, {cell(p.DifferenceHigh)}]" : "—")} | {cell(p.T)} | {pcell(p.TP)} | {cell(p.W)} | {pcell(p.WP)} | {cell(p.Dz)} | {cell(p.R)} | {pcell(r.PHolm)} | {r.Method} |\n");
             }
             md.Append($"\n![{Cell(q)}: paired lines per participant]({file})\n\n");
         }

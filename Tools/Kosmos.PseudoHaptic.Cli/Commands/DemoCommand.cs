@@ -29,7 +29,7 @@ public static class DemoCommand
         new[]
         {
             "pseudohaptic demo",
-            "pseudohaptic demo --out demo-lift --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --svg",
+            "pseudohaptic demo --out out/demo-lift --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --svg",
         },
         CliCommand.Value("--out", "DIR", $"the folder to write (default {DefaultOut}, whose parents it creates); it appears whole or not at all"),
         CliCommand.Value("--trace", "FILE", "also replay this recorded hand (replay's CSV format, usable rows spanning at most 300 s), degraded to 30 Hz poses"),
@@ -186,8 +186,11 @@ public static class DemoCommand
 
     /// <summary>
     /// A scene's chart: each object's height (its own colour, line pattern and width), the hand over them (black,
-    /// dashed, drawn last), the legend under the plot. With the offset correction, a second panel shows the offset
-    /// (hand − object) against the correction's threshold, and each object's offset without the correction.
+    /// dashed, drawn last), the legend under the plot. An object that follows the hand (gain 1: the golf ball) is
+    /// drawn as markers, so it shows beside the hand's line rather than under it. With the offset correction, a second
+    /// panel shows the offset (hand − object) with the correction (lines), without it (light wide bands, drawn first,
+    /// left out where the correction never acts), and each mass's own threshold T(m) from the core
+    /// (<see cref="OffsetCorrection.ThresholdFor"/>, thin dashed in its colour).
     /// </summary>
     static void Plot(string path, Scene scene, List<Result> results, bool svg, double standardSpeed)
     {
@@ -195,7 +198,11 @@ public static class DemoCommand
         var hand = scene.Frames.Select(f => f.Tracked ? f.HandY : double.NaN).ToArray();
         var plot = Charts.Create(scene.Title, "time (s)", "height (m)");
         for (int i = 0; i < results.Count; i++)
-            Charts.Series(plot, t, results[i].ObjectY, $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg", i);
+        {
+            string label = $"{results[i].Item.Name} {results[i].Item.MassKg:0.###} kg";
+            if (FollowsHand(hand, results[i].ObjectY)) Charts.Markers(plot, t, results[i].ObjectY, label + " (with the hand: markers)", i, every: 0.1);
+            else Charts.Series(plot, t, results[i].ObjectY, label, i);
+        }
         Charts.Hand(plot, t, hand, "hand (30 Hz poses)");
         Charts.LegendBelow(plot);
         var correction = scene.Profile.Find<OffsetCorrection>();
@@ -204,18 +211,43 @@ public static class DemoCommand
             Charts.Save(plot, path, 1000, 600, svg);
             return;
         }
-        // What the correction does: the offset with and without it, and the threshold it acts beyond.
+        // What the correction does: the offset with and without it, and the threshold it acts beyond, per mass.
         var uncorrected = scene.Profile.Without<OffsetCorrection>("paper without the offset correction");
-        var offsets = Charts.Create("Offset, hand − object, with the correction and without it (thin dashed)", "time (s)", "offset (m)");
-        Charts.Threshold(offsets, correction.Threshold, $"threshold {correction.Threshold:0.##} m");
+        var offsets = Charts.Create("Offset, hand − object: with the correction (lines), without it (light bands)", "time (s)", "offset (m)");
+        var corrected = new List<double[]>();
+        var same = new bool[results.Count];
         for (int i = 0; i < results.Count; i++)
         {
             var free = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(results[i].Item.MassKg), uncorrected, standardSpeed), scene.Frames);
-            Charts.Series(offsets, t, hand.Select((h, k) => h - results[i].ObjectY[k]).ToArray(), $"{results[i].Item.Name}", i);
-            Charts.Line(offsets, t, hand.Select((h, k) => h - free[k]).ToArray(), $"{results[i].Item.Name}, uncorrected", Charts.Colour(i), dashed: true);
+            var mine = hand.Select((h, k) => h - results[i].ObjectY[k]).ToArray();
+            var without = hand.Select((h, k) => h - free[k]).ToArray();
+            corrected.Add(mine);
+            double acts = 0;
+            for (int k = 0; k < t.Length; k++) if (double.IsFinite(mine[k]) && double.IsFinite(without[k])) acts = Math.Max(acts, Math.Abs(mine[k] - without[k]));
+            // Drawn first and wide, so the corrected line lies on it and both show; where the correction never acts
+            // the two are one line, drawn once and named so.
+            same[i] = acts < 0.001;
+            if (!same[i]) Charts.Band(offsets, t, without, $"{results[i].Item.Name} without the correction", i);
+            double threshold = correction.ThresholdFor(results[i].Item.MassKg);
+            Charts.Threshold(offsets, threshold, $"{results[i].Item.Name}: threshold {threshold:0.###} m", Charts.Colour(i));
         }
+        for (int i = 0; i < results.Count; i++)
+            Charts.Series(offsets, t, corrected[i], same[i] ? $"{results[i].Item.Name} (never past its threshold: the same without)" : results[i].Item.Name, i);
         Charts.LegendBelow(offsets);
         Charts.SavePanels(new[] { plot, offsets }, path, 1000, new[] { 560, 520 }, svg);
+    }
+
+    /// <summary>Whether an object keeps within 2 mm of the hand in at least 80 % of the tracked frames (gain 1).</summary>
+    static bool FollowsHand(double[] hand, double[] y)
+    {
+        int near = 0, all = 0;
+        for (int k = 0; k < hand.Length; k++)
+        {
+            if (!double.IsFinite(hand[k])) continue;
+            all++;
+            if (Math.Abs(hand[k] - y[k]) <= 0.002) near++;
+        }
+        return all > 0 && near >= 0.8 * all;
     }
 
     static void PrintSummary(List<Result> results, double standardSpeed, string outDir, double cueStrength)
@@ -235,10 +267,10 @@ public static class DemoCommand
     static void PrintSummary3D(List<DemoThreeDimensions.Result> results)
     {
         Console.WriteLine();
-        Console.WriteLine($"{DemoThreeDimensions.Slug} (xyz): one hand carries 0.4 m sideways and lifts 0.8 m; then two hands lift 0.4 m");
-        Console.WriteLine($"{"object",-14} {"mass kg",8} {"max x lag m",12} {"high lift max offset m",23} {"two-hand max offset m",22}");
+        Console.WriteLine($"{DemoThreeDimensions.Slug} (xyz): one hand carries 0.4 m sideways (0.3 m forward) and lifts 0.8 m; then two hands lift 0.4 m and carry it back");
+        Console.WriteLine($"{"object",-14} {"mass kg",8} {"max x lag m",12} {"high lift max offset m",23} {"two-hand max offset m",22} {"two-hand carry max x lag m",27}");
         foreach (var r in results)
-            Console.WriteLine($"{r.Name,-14} {NumberText.Fixed(r.MassKg, 3),8} {NumberText.Fixed(r.MaxLateralLag, 3),12} {NumberText.Fixed(r.MaxHighLiftOffset, 3),23} {NumberText.Fixed(r.MaxTwoHandOffset, 3),22}");
+            Console.WriteLine($"{r.Name,-14} {NumberText.Fixed(r.MassKg, 3),8} {NumberText.Fixed(r.MaxLateralLag, 3),12} {NumberText.Fixed(r.MaxHighLiftOffset, 3),23} {NumberText.Fixed(r.MaxTwoHandOffset, 3),22} {NumberText.Fixed(r.MaxTwoHandLateralLag, 3),27}");
     }
 
     static string Slug(string name) => new string(name.ToLowerInvariant().Select(c => char.IsLetterOrDigit(c) || c == '.' ? c : '-').ToArray()).Trim('-');

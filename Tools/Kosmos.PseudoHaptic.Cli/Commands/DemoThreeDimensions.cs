@@ -18,7 +18,10 @@ public static class DemoThreeDimensions
     /// <summary>When the second hand takes hold, s.</summary>
     const double SecondHandFrom = 6.6;
 
-    public sealed record Result(string Name, double MassKg, double MaxLateralLag, double MaxHighLiftOffset, double MaxTwoHandOffset);
+    public sealed record Result(string Name, double MassKg, double MaxLateralLag, double MaxHighLiftOffset, double MaxTwoHandOffset, double MaxTwoHandLateralLag);
+
+    /// <summary>When both hands carry the box back sideways, s (from the x path below).</summary>
+    const double TwoHandCarryFrom = 8.5;
 
     sealed record Frames(double[] T, HandPose[] A, HandPose[] B);
 
@@ -65,7 +68,8 @@ public static class DemoThreeDimensions
         var y1 = HandPath.StartAt(0.80).Hold(3.0).MoveTo(1.60, 1.2)        // high lift to a shelf, 0.8 m
             .Hold(0.8).MoveTo(0.80, 1.2).Hold(0.8)                            // put back down
             .MoveTo(1.20, 1.0).Hold(2.7);                                     // two-hand lift, 0.4 m
-        var z = HandPath.StartAt(0.35).Hold(12);
+        // Forward 0.3 m with the sideways carry and back with the two-hand carry: z shows motion, not only jitter.
+        var z = HandPath.StartAt(0.35).Hold(0.5).MoveTo(0.65, 2.0).Hold(8.5 - 2.5).MoveTo(0.35, 1.2).Hold(1.0);
         double duration = Math.Max(x1.Duration, y1.Duration);
         var headset = new Func<int, HeadsetSimulator>(seed => new HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.001, Seed = seed });
         var ax = headset(31).Render(x1, duration - x1.Duration);
@@ -99,7 +103,7 @@ public static class DemoThreeDimensions
 
     static Result Measure(string name, double mass, Frames f, double[] x, double[] y)
     {
-        double lateral = 0, high = 0, two = 0;
+        double lateral = 0, high = 0, two = 0, twoLateral = 0;
         for (int i = 0; i < x.Length; i++)
         {
             var a = f.A[i];
@@ -109,8 +113,9 @@ public static class DemoThreeDimensions
             if (t < 3.0) lateral = Math.Max(lateral, Math.Abs((a.X - f.A[0].X) - (x[i] - x[0])));
             if (t >= 3.0 && t < 6.2) high = Math.Max(high, hy - y[i]);
             if (t >= SecondHandFrom) two = Math.Max(two, hy - y[i]);
+            if (t >= TwoHandCarryFrom) twoLateral = Math.Max(twoLateral, Math.Abs((a.X - f.A[0].X) - (x[i] - x[0])));
         }
-        return new Result(name, mass, lateral, high, two);
+        return new Result(name, mass, lateral, high, two, twoLateral);
     }
 
     static void WriteCsv(string path, Frames f, double[] x, double[] y, double[] z, int[] hands)
@@ -125,27 +130,36 @@ public static class DemoThreeDimensions
         }
     }
 
-    /// <summary>The scene's chart: x, y and z in their own panels over the same time, each object's path (colour,
-    /// pattern), both hands over them (black dashed: the first; grey dotted: the second, from when it takes hold).</summary>
+    /// <summary>Smallest span of a panel's y axis, m: a still axis shows as still, not as its millimetres of jitter.</summary>
+    const double MinSpan = 0.1;
+
+    /// <summary>
+    /// The scene's chart, three panels over one time axis (aligned by <see cref="Charts.SavePanels"/>): the sideways
+    /// (x) and forward (z) lag of each object behind the first hand (the hand's displacement since the grab minus the
+    /// object's: where the masses differ; the positions themselves would lie on one another), then the height (y) of each object with both hands over them (black dashed:
+    /// the first; grey: the second, from when it takes hold). Each y axis spans at least <see cref="MinSpan"/>.
+    /// </summary>
     static void Plot(string path, Frames f, List<(string Label, double[] X, double[] Y, double[] Z)> runs, bool svg)
     {
-        var axes = new (string Name, Func<HandPose, double> Hand, Func<(string Label, double[] X, double[] Y, double[] Z), double[]> Object)[]
+        double[] Lag(Func<HandPose, double> hand, double[] o) => f.A.Select((a, i) => (hand(a) - hand(f.A[0])) - (o[i] - o[0])).ToArray();
+        var x = Charts.Create(Title, "", "x: hand − object (m)");
+        for (int i = 0; i < runs.Count; i++) Charts.Series(x, f.T, Lag(p => p.X, runs[i].X), runs[i].Label, i);
+        var y = Charts.Create("", "time (s)", "y: height (m)");
+        for (int i = 0; i < runs.Count; i++) Charts.Series(y, f.T, runs[i].Y, runs[i].Label, i);
+        Charts.Line(y, f.T, f.B.Select(p => p.IsUsable ? p.Y : double.NaN).ToArray(), $"second hand (from {SecondHandFrom:0.0} s)", Charts.Colour(7), dashed: false);
+        Charts.Hand(y, f.T, f.A.Select(p => p.Y).ToArray(), "first hand (30 Hz poses)");
+        var z = Charts.Create("", "", "z: hand − object (m)");
+        for (int i = 0; i < runs.Count; i++) Charts.Series(z, f.T, Lag(p => p.Z, runs[i].Z), runs[i].Label, i);
+        Charts.LegendBelow(y);
+        x.HideLegend();
+        z.HideLegend();
+        foreach (var panel in new[] { x, z, y })
         {
-            ("x (sideways)", p => p.X, r => r.X),
-            ("y (height)", p => p.Y, r => r.Y),
-            ("z (forward)", p => p.Z, r => r.Z),
-        };
-        var panels = new List<ScottPlot.Plot>();
-        for (int k = 0; k < axes.Length; k++)
-        {
-            var panel = Charts.Create(k == 0 ? Title : "", k == axes.Length - 1 ? "time (s)" : "", axes[k].Name + " (m)");
-            for (int i = 0; i < runs.Count; i++) Charts.Series(panel, f.T, axes[k].Object(runs[i]), runs[i].Label, i);
-            Charts.Line(panel, f.T, f.B.Select(p => p.IsUsable ? axes[k].Hand(p) : double.NaN).ToArray(), "second hand (from 6.6 s)", Charts.Colour(7), dashed: false);
-            Charts.Hand(panel, f.T, f.A.Select(axes[k].Hand).ToArray(), "first hand (30 Hz poses)");
-            if (k == axes.Length - 1) Charts.LegendBelow(panel);
-            else panel.HideLegend();
-            panels.Add(panel);
+            var values = panel.GetPlottables().OfType<ScottPlot.Plottables.Scatter>().SelectMany(sc => sc.Data.GetScatterPoints()).Select(c => c.Y).Where(double.IsFinite).ToList();
+            double low = values.Min(), high = values.Max(), mid = (low + high) / 2, half = Math.Max(high - low, MinSpan) / 2 * 1.08;
+            panel.Axes.SetLimitsY(mid - half, mid + half);
+            panel.Axes.SetLimitsX(f.T[0], f.T[^1]);
         }
-        Charts.SavePanels(panels, path, 1000, new[] { 330, 330, 400 }, svg);
+        Charts.SavePanels(new[] { x, z, y }, path, 1000, new[] { 330, 300, 600 }, svg);
     }
 }

@@ -29,7 +29,8 @@ static class EvaluationCharts
         var q = part.Questionnaire;
         var scores = part.Scores;
         int n = scores.Count;
-        var plot = Charts.Create($"Table {part.Number}. {q.Title}", "participant",
+        // A figure of the part's scores (the report's Table N holds the numbers): titled as a figure, not a table.
+        var plot = Charts.Create($"{q.Title}: score per participant", "participant",
             $"score ({NumberText.Format(q.ScaleMin)} to {NumberText.Format(q.ScaleMax)})");
 
         var colour = Charts.Colour(part.Number - 1);

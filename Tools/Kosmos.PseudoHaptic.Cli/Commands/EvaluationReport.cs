@@ -171,7 +171,7 @@ sealed class EvaluationReport
         var incomplete = p.Scores.Where(s => !s.IsComplete).Select(s => Cell(s.Participant)).ToList();
         if (incomplete.Count > 0) md.Append($"Incomplete, so not scored: {string.Join(", ", incomplete)}.\n\n");
         md.Append($"Data: [{p.TableFile}]({p.TableFile}).\n\n");
-        md.Append($"![Table {p.Number} as a chart]({p.ChartFile})\n\n");
+        md.Append($"![{Cell(q.Title)}: score per participant]({p.ChartFile})\n\n");
     }
 
     /// <summary>A cell of Tables 1–3: one decimal at least for multi-item means (4.6, 5.0), up to two (3.33); a single item's answer as it is (8).</summary>

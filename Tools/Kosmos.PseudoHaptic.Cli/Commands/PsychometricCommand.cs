@@ -26,7 +26,7 @@ public static class PsychometricCommand
         Run,
         new[]
         {
-            "pseudohaptic psychometric --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --out fits --seed 1",
+            "pseudohaptic psychometric --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --out out/fits --seed 1",
         },
         CliCommand.Value("--trials", "T.csv", "the answers: participant,standard,comparison,response (1 = comparison judged heavier), optional condition; standard and comparison in kg", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),

@@ -18,7 +18,7 @@ public static class ReplayCommand
         Run,
         new[]
         {
-            "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --out replayed.csv --mass-kg 2",
+            "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/lift.csv --out out/replayed.csv --mass-kg 2",
             "pseudohaptic replay --trace Packages/com.kosmos.pseudohaptic/Documentation~/examples/walk-and-turn.csv --out - --mass-kg 0.5 --profile xyz --break-away 0.3",
         },
         CliCommand.Value("--trace", "IN.csv", "the recorded hand: columns t (s), hand_y (m), optional tracked, pose_t, hand_x, hand_z, a second hand hand2_*, and the rig's world pose rig_x, rig_y, rig_z (m), rig_yaw (degrees)", required: true),

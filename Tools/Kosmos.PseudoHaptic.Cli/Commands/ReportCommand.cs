@@ -20,7 +20,7 @@ public static class ReportCommand
         Run,
         new[]
         {
-            "pseudohaptic report --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/scores.csv --out report --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv",
+            "pseudohaptic report --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/scores.csv --out out/report --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv",
         },
         CliCommand.Value("--scores", "S.csv", "the scores score wrote (one per participant and part, at most 100,000 participants)", required: true),
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),

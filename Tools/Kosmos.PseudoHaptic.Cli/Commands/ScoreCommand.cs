@@ -24,7 +24,7 @@ public static class ScoreCommand
         Run,
         new[]
         {
-            "pseudohaptic score --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv --out scores.csv",
+            "pseudohaptic score --responses Packages/com.kosmos.pseudohaptic/Documentation~/examples/responses.csv --out out/scores.csv",
         },
         CliCommand.Value("--responses", "R.csv", "the answers: participant,questionnaire,item,response (optional condition); any number of rows, at most 100,000 participants", required: true),
         CliCommand.Value("--out", "S.csv", "the scores: participant,[condition,]questionnaire,score ('-': standard output)", required: true),

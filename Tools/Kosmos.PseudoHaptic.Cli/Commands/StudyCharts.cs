@@ -21,7 +21,8 @@ static class StudyCharts
     /// <summary>
     /// One participant × condition: the proportion judged heavier at each comparison level with its 95 % Wilson
     /// interval, the fitted curve, the PSE (50 %) and the JND (to 75 %), the standard marked. The axis spans the
-    /// levels that carry most trials; catch levels far outside are drawn at its edge as open markers, named.
+    /// levels that carry most trials; catch levels far outside are not drawn (at the edge they would look like data)
+    /// but named, with their answers, in a note at the upper left.
     /// </summary>
     public static byte[] Psychometric(string participant, string condition, IReadOnlyList<PsychometricRow> rows, IReadOnlyList<TrialAnswer> answers)
     {
@@ -37,7 +38,6 @@ static class StudyCharts
         foreach (var r in rows) { xmin = Math.Min(xmin, r.Standard); xmax = Math.Max(xmax, r.Standard); }
         if (!(xmax > xmin)) { xmin -= 0.5; xmax += 0.5; }
         double pad = 0.08 * (xmax - xmin);
-        double Clamp(double x) => Math.Clamp(x, xmin - 0.6 * pad, xmax + 0.6 * pad);
         bool Outside(double x) => x < xmin - 0.6 * pad || x > xmax + 0.6 * pad;
 
         var standards = rows.Select(r => r.Standard).Distinct().ToList();
@@ -67,12 +67,9 @@ static class StudyCharts
             }
             Charts.Points(plot, inside.Select(l => l.Level).ToArray(), inside.Select(l => l.Proportion).ToArray(), std + "proportion (95 % Wilson)", colour, shape: s);
             if (barX.Count > 0) Charts.Line(plot, barX, barY, "", colour);
+            // Catch levels far off the axis are not drawn (at the edge they would read as data): the note names them.
             var off = levels.Where(l => Outside(l.Level)).ToList();
-            if (off.Count > 0)
-            {
-                var marks = Charts.Points(plot, off.Select(l => Clamp(l.Level)).ToArray(), off.Select(l => l.Proportion).ToArray(), std + "catch trials (off scale, at the edge)", colour, shape: 4);
-                catchNotes.AddRange(off.Select(l => $"catch trials at {G(l.Level)} kg: {l.Heavier} of {l.Trials} heavier"));
-            }
+            catchNotes.AddRange(off.Select(l => $"{std}catch trials at {G(l.Level)} kg: {l.Heavier} of {l.Trials} heavier"));
             if (!r.Fit.Estimable)
             {
                 catchNotes.Add($"{std}not estimable: {r.Fit.Reason}");
@@ -95,11 +92,12 @@ static class StudyCharts
             if (r.Bootstrap.HasIntervals)
                 Charts.Line(plot, new[] { r.Bootstrap.PseLow, r.Bootstrap.PseHigh }, new[] { 0.5, 0.5 }, $"{std}PSE 95 % CI [{G(r.Bootstrap.PseLow)}, {G(r.Bootstrap.PseHigh)}] kg", Charts.Black);
         }
-        if (catchNotes.Count > 0) plot.XLabel(Charts.Wrap("comparison weight (kg); " + string.Join("; ", catchNotes), 110));
         Charts.LegendBelow(plot);
         plot.Axes.SetLimits(xmin - pad, xmax + pad, -0.03, 1.03);
+        // The catch trials and any unfitted standard in a note at the upper left (low weights judged heavier: empty).
+        if (catchNotes.Count > 0) Charts.Note(plot, xmin - 0.85 * pad, 0.99, string.Join("\n", catchNotes.Select(n => Charts.Wrap(n, 60))));
         FixedTicks(plot.Axes.Bottom, xmax - xmin + 2 * pad);
-        return Charts.Png(plot, Width, Height + 40 * (rows.Count - 1) + 20 * catchNotes.Count / 4);
+        return Charts.Png(plot, Width, Height + 40 * (rows.Count - 1));
     }
 
     /// <summary>
@@ -122,6 +120,8 @@ static class StudyCharts
         var pbx = new List<double>(); var pby = new List<double>();
         var jbx = new List<double>(); var jby = new List<double>();
         var ticks = new List<double>(); var labels = new List<string>();
+        // Names wrapped to what a column's width holds (about 8.5 px a character), never beyond LabelChars.
+        int chars = Math.Clamp((int)((SummaryWidth(ordered.Count) - 150) / (double)Math.Max(1, ordered.Count) / 8.5), 4, LabelChars);
         for (int i = 0; i < ordered.Count; i++)
         {
             var r = ordered[i];
@@ -129,7 +129,7 @@ static class StudyCharts
             ticks.Add(x);
             string name = Messages.OneLine(r.Participant) + (manyStandards ? " @" + G(r.Standard) + " kg" : "");
             bool firstOfGroup = i == 0 || ordered[i - 1].Condition != r.Condition;
-            labels.Add(Charts.Wrap(name, LabelChars) + (conditions.Count > 1 && firstOfGroup ? "\n" + Charts.Wrap("[" + Messages.OneLine(r.Condition) + "]", LabelChars) : ""));
+            labels.Add(Charts.Wrap(name, chars) + (conditions.Count > 1 && firstOfGroup ? "\n" + Charts.Wrap("[" + Messages.OneLine(r.Condition) + "]", LabelChars) : ""));
             if (i > 0 && firstOfGroup)
             {
                 var separator = plot.Add.VerticalLine(x - 0.5);
@@ -151,9 +151,13 @@ static class StudyCharts
         Charts.Points(plot, jx, jy, "JND", Charts.Colour(1), shape: 1);
         if (jbx.Count > 0) Charts.Line(plot, jbx, jby, "", Charts.Colour(1));
         int lines = labels.Count > 0 ? labels.Max(l => l.Split('\n').Length) : 1;
-        if (ordered.Count <= 60)
+        if (ordered.Count <= 40)
         {
             plot.Axes.Bottom.SetTicks(ticks.ToArray(), labels.ToArray());
+            // The first and last labels are centred on their columns: room for half of their widest line at the sides.
+            double Half(string label) => label.Split('\n').Max(l => Charts.NoteWidth(l)) * 15 / Charts.NoteSize / 2;
+            plot.Axes.Right.MinimumSize = (float)Math.Max(10, Half(labels[^1]) - 0.5 * (SummaryWidth(ordered.Count) - 150) / ordered.Count + 10);
+            plot.Axes.Left.MinimumSize = (float)Math.Max(0, Half(labels[0]) - 0.5 * (SummaryWidth(ordered.Count) - 150) / ordered.Count + 10);
             plot.Axes.Bottom.MinimumSize = 30 + 20 * lines;
         }
         Charts.LegendBelow(plot);
@@ -161,8 +165,14 @@ static class StudyCharts
         var all = py.Concat(jy).Concat(pby).Concat(jby).Where(double.IsFinite).Append(0.0).ToList();
         double low = all.Min(), high = all.Max(), span = Math.Max(high - low, 1e-9);
         plot.Axes.SetLimitsY(low - 0.08 * span, high + 0.08 * span);
-        return Charts.Png(plot, Math.Clamp(300 + 110 * ordered.Count, 900, 4000), Height + 20 * lines);
+        return Charts.Png(plot, SummaryWidth(ordered.Count), Height + 20 * lines);
     }
+
+    /// <summary>Widest summary, px: a two-column paper's full text width (about 7 in) at about 170 dpi, one column (3.5 in) at 340 dpi.</summary>
+    public const int MaxSummaryWidth = 1200;
+
+    /// <summary>The summary's width for <paramref name="columns"/> participant × condition columns: 110 px each, 900 to <see cref="MaxSummaryWidth"/>.</summary>
+    public static int SummaryWidth(int columns) => Math.Clamp(300 + 110 * columns, 900, MaxSummaryWidth);
 
     /// <summary>
     /// One line per participant through their scores in each condition, the conditions' means in black; under the
@@ -173,7 +183,7 @@ static class StudyCharts
     {
         var conditions = scores.Select(s => s.Condition).Distinct().ToList();
         string title = Charts.Wrap(Messages.OneLine($"{questionnaire}: score per participant and condition"), 70);
-        var plot = Charts.Create(title, "condition", "score (in the units of the scores file)");
+        var plot = Charts.Create(title, "condition", ScoreAxis(questionnaire));
         var participants = ParticipantOrder.Sort(scores.Select(s => s.Participant).Distinct(), p => p);
         var lookup = scores.Where(s => s.Score.HasValue).ToDictionary(s => (s.Participant, s.Condition), s => s.Score!.Value);
         var lx = new List<double>();
@@ -226,7 +236,7 @@ static class StudyCharts
         if (coded) tests.Add("Conditions: " + string.Join("; ", full.Select((n, i) => $"C{i + 1} = {n}")));
         var friedman = rows.FirstOrDefault(r => r.Friedman != null)?.Friedman;
         if (friedman != null)
-            tests.Add($"Friedman test over {friedman.K} conditions: χ²({friedman.DegreesOfFreedom}) = {G(friedman.Statistic)}, p = {G(friedman.P)} (n = {friedman.N} complete participants)");
+            tests.Add($"Friedman test over {friedman.K} conditions: χ²({friedman.DegreesOfFreedom}) = {G(friedman.Statistic)}, {NumberText.P(friedman.P)} (n = {friedman.N} complete participants)");
         else if (conditions.Count >= 3)
             tests.Add("Friedman test: not computed (too few participants complete in every condition)");
         foreach (var r in rows.Where(r => r.Pair != null))
@@ -234,8 +244,8 @@ static class StudyCharts
             var pr = r.Pair;
             string pair = $"{Name(r.ConditionB)} − {Name(r.ConditionA)}";
             if (!double.IsFinite(pr.MeanDifference)) { tests.Add($"{pair}: too few pairs (n = {pr.N})"); continue; }
-            string wilcoxon = conditions.Count >= 3 && double.IsFinite(r.PHolm) ? $"Wilcoxon signed-rank p = {G(pr.WP)}, Holm-corrected p = {G(r.PHolm)}" : $"Wilcoxon signed-rank p = {G(pr.WP)}";
-            tests.Add($"{pair} = {G(pr.MeanDifference)} (n = {pr.N}): paired t test p = {G(pr.TP)}; {wilcoxon}");
+            string wilcoxon = conditions.Count >= 3 && double.IsFinite(r.PHolm) ? $"Wilcoxon signed-rank {NumberText.P(pr.WP)}, Holm-corrected {NumberText.P(r.PHolm)}" : $"Wilcoxon signed-rank {NumberText.P(pr.WP)}";
+            tests.Add($"{pair} = {G(pr.MeanDifference)} (n = {pr.N}): paired t test {NumberText.P(pr.TP)}; {wilcoxon}");
         }
         if (tests.Count == 0) return Charts.Png(plot, width, Height + 20 * lines);
         var text = Charts.TextPanel(tests, width);
@@ -243,6 +253,23 @@ static class StudyCharts
     }
 
     static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "n/a";
+
+    /// <summary>
+    /// The y axis of a questionnaire's paired lines, with its unit: a built-in questionnaire's score on its scale
+    /// ("score (1 to 5)"); the psychometric figures run.sh and evaluation.md turn into scores, PSE and JND in kg and
+    /// the Weber fraction (no unit); anything else "score" with its name, the unit being the file's own.
+    /// </summary>
+    public static string ScoreAxis(string questionnaire)
+    {
+        switch (questionnaire.Trim().ToLowerInvariant())
+        {
+            case "pse": return "PSE (kg)";
+            case "jnd": return "JND (kg)";
+            case "weber": return "Weber fraction (JND / standard)";
+        }
+        var q = EvaluationInputs.Catalog(null).Questionnaires.FirstOrDefault(x => x.Id == questionnaire);
+        return q != null ? $"score ({NumberText.Format(q.ScaleMin)} to {NumberText.Format(q.ScaleMax)})" : Charts.Wrap($"{Messages.OneLine(questionnaire)} score", 40);
+    }
 
     /// <summary>Ticks every 1, 2 or 5 × 10^k (about eight across), each labelled with the decimals that step needs.</summary>
     static void FixedTicks(ScottPlot.IAxis axis, double range)

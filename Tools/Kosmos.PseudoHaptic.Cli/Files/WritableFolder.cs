@@ -17,6 +17,11 @@ public static class WritableFolder
         {
             Temporaries.Create(probe, p => new FileStream(p, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1, FileOptions.DeleteOnClose).Dispose());
         }
+        catch (Exception e) when ((e is FileNotFoundException or DirectoryNotFoundException) && Directory.Exists(existing))
+        {
+            // ENOENT from creating a file in a folder that exists: a file system that allows no new files (/proc).
+            throw new CliException($"{option} {Messages.Path(userPath)}: cannot write: cannot create files in {Messages.Path(existing)} (the folder exists, but its file system does not allow new files)", 1);
+        }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
             throw new CliException($"{option} {Messages.Path(userPath)}: cannot write: {Messages.Reason(e)}", 1);

@@ -149,14 +149,44 @@ public static class Charts
         plot.Legend.Orientation = Orientation.Horizontal;
     }
 
-    /// <summary>A horizontal reference line (a threshold) with its name in the legend.</summary>
-    public static void Threshold(Plot plot, double y, string label)
+    /// <summary>A horizontal reference line (a threshold) with its name in the legend; grey unless a colour is given (the object's).</summary>
+    public static void Threshold(Plot plot, double y, string label, Color? colour = null)
     {
         var line = plot.Add.HorizontalLine(y);
-        line.Color = Color.FromHex("#505050");
+        line.Color = colour ?? Color.FromHex("#505050");
         line.LineWidth = 1.5f;
-        line.LinePattern = LinePattern.DenselyDashed;
+        line.LinePattern = LinePattern.Dashed;
         line.LegendText = label;
+    }
+
+    /// <summary>
+    /// The i-th object's alternative path (what it does without an effect) as a light, wide band in its colour: drawn
+    /// before the objects' lines, it shows around them where they coincide and alone where they part.
+    /// </summary>
+    public static void Band(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, int i)
+        => Line(plot, xs, ys, label, Colour(i).WithAlpha(0.35), LinePattern.Solid, 7);
+
+    /// <summary>
+    /// The i-th object as markers (its colour and shape i) every <paramref name="every"/> of x (seconds), no line: for an
+    /// object that moves with the hand, so it shows beside the hand's line rather than under it.
+    /// </summary>
+    public static void Markers(Plot plot, IReadOnlyList<double> xs, IReadOnlyList<double> ys, string label, int i, double every)
+    {
+        CheckLengths(xs, ys);
+        var mx = new List<double>();
+        var my = new List<double>();
+        double next = double.NegativeInfinity;
+        for (int k = 0; k < xs.Count; k++)
+        {
+            if (!double.IsFinite(xs[k]) || !double.IsFinite(ys[k]) || xs[k] < next) continue;
+            mx.Add(xs[k]);
+            my.Add(ys[k]);
+            next = xs[k] + every;
+        }
+        var scatter = plot.Add.ScatterPoints(mx.ToArray(), my.ToArray(), Colour(i));
+        scatter.MarkerSize = MarkerSize;
+        scatter.MarkerShape = Shape(i);
+        scatter.LegendText = label;
     }
 
     /// <summary>A chart with nothing to draw: its title and one sentence saying why, instead of empty axes.</summary>
@@ -202,7 +232,7 @@ public static class Charts
 
     /// <summary>
     /// Panels stacked top to bottom into one PNG of <paramref name="width"/> pixels: one quantity per panel (x, y, z
-    /// apart), each laid out by ScottPlot on its own, their time axes the same.
+    /// apart), each laid out by ScottPlot on its own (<see cref="SavePanels"/> first aligns their data areas).
     /// </summary>
     public static byte[] PanelsPng(IReadOnlyList<Plot> panels, int width, IReadOnlyList<int> heights)
     {
@@ -219,6 +249,23 @@ public static class Charts
         using var image = surface.Snapshot();
         using var data = image.Encode(SkiaSharp.SKEncodedImageFormat.Png, 100);
         return data.ToArray();
+    }
+
+    /// <summary>
+    /// Gives stacked panels the same data-area left and right edges (issue 32: z's wider tick labels moved its time
+    /// axis 19 px right of the others'): each panel's left and right axes are widened to the widest's.
+    /// </summary>
+    public static void Align(IReadOnlyList<Plot> panels, int width, IReadOnlyList<int> heights)
+    {
+        // The data area starts after the figure's padding and the left axis (ticks, labels, title); widening every
+        // left axis to at least the largest start seen makes them all the same size, hence the same start.
+        var rects = panels.Select((p, i) => { Prepare(p, width, heights[i]); return p.RenderManager.LastRender.DataRect; }).ToList();
+        float left = (float)Math.Ceiling(rects.Max(r => r.Left)), right = (float)Math.Ceiling(rects.Max(r => width - r.Right));
+        foreach (var p in panels)
+        {
+            p.Axes.Left.MinimumSize = left;
+            p.Axes.Right.MinimumSize = right;
+        }
     }
 
     /// <summary>The panels of <see cref="PanelsPng"/> as one SVG document (each panel's SVG nested at its offset).</summary>
@@ -239,6 +286,7 @@ public static class Charts
     /// <summary><see cref="Save"/> for stacked panels.</summary>
     public static void SavePanels(IReadOnlyList<Plot> panels, string pngPath, int width, IReadOnlyList<int> heights, bool svg)
     {
+        Align(panels, width, heights);
         byte[] png = PanelsPng(panels, width, heights);
         string? svgText = svg ? PanelsSvg(panels, width, heights) : null;
         Kosmos.PseudoHaptic.Evaluation.AtomicFile.WriteWith(pngPath, temp => File.WriteAllBytes(temp, png));
@@ -371,11 +419,19 @@ public static class Charts
     }
 
 
+    /// <summary>
+    /// For tests (this thread only): called with every plot <see cref="Png"/> draws, laid out at its size, so a test can
+    /// inspect each chart's series (ChartInk in the tests: every series' ink visible against the others).
+    /// </summary>
+    [ThreadStatic] public static Action<Plot, int, int>? Drawing;
+
     /// <summary>The plot as PNG bytes of exactly <paramref name="width"/> x <paramref name="height"/> pixels.</summary>
     public static byte[] Png(Plot plot, int width, int height)
     {
         Prepare(plot, width, height);
-        return plot.GetImageBytes(width, height, ImageFormat.Png);
+        byte[] png = plot.GetImageBytes(width, height, ImageFormat.Png);
+        Drawing?.Invoke(plot, width, height);
+        return png;
     }
 
     /// <summary>The plot as an SVG document of <paramref name="width"/> x <paramref name="height"/> pixels.</summary>

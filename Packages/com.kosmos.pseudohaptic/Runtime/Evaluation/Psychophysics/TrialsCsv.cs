@@ -43,7 +43,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// Reads answered trials: columns by name (any order, case-insensitive), <c>participant</c>,
         /// <c>standard</c>, <c>comparison</c>, <c>response</c> required, <c>condition</c> optional (default ""),
         /// others ignored. A missing column, an empty participant, a number that does not parse or is not
-        /// finite, or a response other than 0 or 1 throws <see cref="EvaluationFormatException"/> naming the line.
+        /// finite, a standard or comparison weight that is not positive (a weight in kg: a Weber fraction of a
+        /// negative standard means nothing), or a response other than 0 or 1 throws
+        /// <see cref="EvaluationFormatException"/> naming the line.
         /// </summary>
         public static List<TrialAnswer> Read(TextReader reader, string sourceName, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
         {
@@ -53,14 +55,23 @@ namespace Kosmos.PseudoHaptic.Evaluation
             {
                 string participant = row[0].Trim();
                 if (participant.Length == 0) throw new EvaluationFormatException(sourceName, row.Line, "participant is empty");
-                double standard = Number(sourceName, row, "standard", row[1]);
-                double comparison = Number(sourceName, row, "comparison", row[2]);
+                double standard = Weight(sourceName, row, "standard", row[1]);
+                double comparison = Weight(sourceName, row, "comparison", row[2]);
                 string response = row[3].Trim();
                 if (response != "0" && response != "1")
                     throw new EvaluationFormatException(sourceName, row.Line, "response '" + row[3] + "' must be 1 (comparison judged heavier) or 0");
                 answers.Add(new TrialAnswer(participant, (row[4] ?? "").Trim(), standard, comparison, response == "1" ? 1 : 0, row.Line));
             }
             return answers;
+        }
+
+        /// <summary>A weight in kg: a finite number above zero.</summary>
+        static double Weight(string sourceName, CsvTable.Row row, string column, string text)
+        {
+            double value = Number(sourceName, row, column, text);
+            if (!(value > 0))
+                throw new EvaluationFormatException(sourceName, row.Line, column + " " + text.Trim() + " is not a positive weight (kg)");
+            return value;
         }
 
         static double Number(string sourceName, CsvTable.Row row, string column, string text)
