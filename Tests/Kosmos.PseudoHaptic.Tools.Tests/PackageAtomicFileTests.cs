@@ -89,4 +89,23 @@ public class PackageAtomicFileTests
         }
         Assert.That(Names().Where(n => n.StartsWith(".ph", StringComparison.Ordinal)), Is.Empty);
     }
+
+    [Test]
+    public void OnLinuxTheFolderIsSyncedThroughLibc()
+    {
+        if (!OperatingSystem.IsLinux()) Assert.Ignore("the folder is synced through libc on Linux, Android and macOS only");
+        AtomicFile.WriteAllText(Path.Combine(_dir, "a.csv"), "x");
+        Assert.That(AtomicFile.DirectorySync, Is.EqualTo(AtomicFile.DirectorySyncKind.Synced));
+        var e = Assert.Throws<IOException>(() => AtomicFile.SyncDirectory(Path.Combine(_dir, "missing")))!;
+        Assert.That(e.Message, Does.Contain("errno 2"), "ENOENT is reported, not swallowed");
+    }
+
+    [Test]
+    public void CreateDirectoryMakesEveryMissingParent()
+    {
+        string deep = Path.Combine(_dir, "p", "q", "r");
+        AtomicFile.CreateDirectory(deep);
+        Assert.That(Directory.Exists(deep), Is.True);
+        AtomicFile.CreateDirectory(deep); // there already: nothing to do
+    }
 }

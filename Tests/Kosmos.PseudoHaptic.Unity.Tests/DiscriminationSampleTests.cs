@@ -39,6 +39,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Transform button = GameObject.Find("Right Heavier").transform;
             right.transform.position = button.position; // the fingertip into the button
             Frames.For(0.2);
+            Assert.That(task.WaitForSaves(), Is.True, task.Error); // written in the background; a later frame's Update delivers it
             Assert.That(task.Session.AnsweredCount, Is.EqualTo(1), task.Error);
             Assert.That(File.ReadAllLines(task.TrialsPath), Has.Length.EqualTo(2), "the header and the answer");
         }

@@ -117,6 +117,7 @@ namespace Kosmos.PseudoHaptic.Tests
             pointable.Raise(new PointerEvent(3, PointerEventType.Hover, new Pose(panel.ScaleButtons[3].transform.position, Quaternion.identity)));
             Assert.That(panel.Session.AnsweredCount, Is.EqualTo(0), "hovering answers nothing");
             pointable.Raise(new PointerEvent(3, PointerEventType.Select, new Pose(panel.ScaleButtons[3].transform.position, Quaternion.identity)));
+            Assert.That(panel.WaitForSaves(), Is.True, panel.Error); // written in the background; a later frame's Update delivers it
             Assert.That(panel.Session.AnsweredCount, Is.EqualTo(1));
             Assert.That(surface.Panel, Is.SameAs(panel), "found on its own GameObject");
         }

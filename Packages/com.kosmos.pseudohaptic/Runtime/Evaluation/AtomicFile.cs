@@ -1,20 +1,35 @@
 using System;
 using System.IO;
+using System.Runtime.InteropServices;
 using System.Text;
 
 namespace Kosmos.PseudoHaptic.Evaluation
 {
     /// <summary>
-    /// Write-then-rename: the text goes to a temporary file in the destination's own folder (so the rename
-    /// stays on one file system), which then replaces the destination in one step. A crash or an error
-    /// leaves either the old file or the new one, never half of one; the temporary file is removed on error.
+    /// Durable write-then-rename: the text goes to a temporary file in the destination's own folder (so the
+    /// rename stays on one file system), its data is synced to the storage device (<c>fsync</c>, through
+    /// <see cref="FileStream.Flush(bool)"/>), the temporary file then replaces the destination in one step, and on
+    /// Linux, Android and macOS the folder itself is synced after the rename (<see cref="SyncDirectory"/>), so the
+    /// new name is on the device too. A crash or an error leaves either the old file or the new one, never half of
+    /// one; after this returns, a power cut leaves the new one. The temporary file is removed on error, and every
+    /// error (a failed write, sync or rename) is thrown, never swallowed.
     /// The temporary name is short and fixed in length (".ph" + 8 hex digits + ".tmp"), so any destination
     /// name the file system accepts works; two writers racing for one destination both succeed, the last
     /// rename wins.
     /// </summary>
+    /// <remarks>
+    /// Where the folder cannot be synced (Windows, where .NET cannot open a folder as a file; a file system that
+    /// refuses <c>fsync</c> on a folder with EINVAL or EOPNOTSUPP) the file's data is still synced before the
+    /// rename, so the destination is never empty or half-written after a power cut, but the rename itself may be
+    /// lost: the old file comes back. <see cref="DirectorySync"/> says what this platform does; evaluation.md,
+    /// "Session recording", says what survives what.
+    /// </remarks>
     public static class AtomicFile
     {
         static readonly UTF8Encoding Utf8NoBom = new UTF8Encoding(false);
+
+        /// <summary>Whether <see cref="WriteWith"/> syncs (default true). Off only for a measurement of what the sync costs.</summary>
+        public static bool Durable { get; set; } = true;
 
         /// <summary>A fresh temporary name in <paramref name="directory"/>: ".ph" + 8 hex digits + <paramref name="extension"/>.</summary>
         public static string TemporaryPath(string directory, string extension = ".tmp")
@@ -22,11 +37,25 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         public static void WriteAllText(string path, string text)
         {
-            WriteWith(path, temp => File.WriteAllText(temp, text ?? "", Utf8NoBom));
+            Write(path, synced: true, write: temp =>
+            {
+                using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 4096))
+                {
+                    byte[] bytes = Utf8NoBom.GetBytes(text ?? "");
+                    stream.Write(bytes, 0, bytes.Length);
+                    if (Durable) stream.Flush(true); // fsync: the data is on the device before the rename
+                }
+            });
         }
 
-        /// <summary>Lets <paramref name="write"/> create the temporary file (any content), then renames it to <paramref name="path"/>.</summary>
-        public static void WriteWith(string path, Action<string> write)
+        /// <summary>
+        /// Lets <paramref name="write"/> create the temporary file (any content), syncs it, renames it to
+        /// <paramref name="path"/> and syncs the folder.
+        /// </summary>
+        public static void WriteWith(string path, Action<string> write) => Write(path, false, write);
+
+        /// <summary>As <see cref="WriteWith(string, Action{string})"/>; <paramref name="synced"/>: <paramref name="write"/> syncs the temporary file itself (<see cref="FileStream.Flush(bool)"/> before closing it), so it is not synced again.</summary>
+        public static void Write(string path, bool synced, Action<string> write)
         {
             if (string.IsNullOrEmpty(path)) throw new ArgumentException("empty path", nameof(path));
             if (write == null) throw new ArgumentNullException(nameof(write));
@@ -35,16 +64,135 @@ namespace Kosmos.PseudoHaptic.Evaluation
             string directory = Path.GetDirectoryName(full);
             if (string.IsNullOrEmpty(directory)) directory = ".";
             string temp = TemporaryPath(directory);
+            bool renamed = false;
             try
             {
                 write(temp);
+                if (Durable && !synced) SyncFile(temp);
                 Rename(temp, full);
+                renamed = true;
+                if (Durable) SyncDirectory(directory);
             }
             catch
             {
-                try { if (File.Exists(temp)) File.Delete(temp); } catch (IOException) { } catch (UnauthorizedAccessException) { }
+                if (!renamed)
+                    try { if (File.Exists(temp)) File.Delete(temp); } catch (IOException) { } catch (UnauthorizedAccessException) { }
                 throw;
             }
+        }
+
+        /// <summary>Syncs an existing file's data and size to the device (<c>fsync</c>); throws <see cref="IOException"/> when the device refuses.</summary>
+        public static void SyncFile(string path)
+        {
+            using (var stream = new FileStream(path, FileMode.Open, FileAccess.Write, FileShare.ReadWrite, 1))
+                stream.Flush(true);
+        }
+
+        /// <summary>
+        /// Creates <paramref name="directory"/> and any missing parent, syncing the folder above each one created,
+        /// so that a folder made for a session is on the device before the first answer in it is acknowledged.
+        /// </summary>
+        public static void CreateDirectory(string directory)
+        {
+            if (string.IsNullOrEmpty(directory)) return;
+            string full = Path.GetFullPath(directory);
+            if (Directory.Exists(full)) return;
+            string parent = Path.GetDirectoryName(full);
+            if (!string.IsNullOrEmpty(parent)) CreateDirectory(parent);
+            Directory.CreateDirectory(full);
+            if (Durable && !string.IsNullOrEmpty(parent)) SyncDirectory(parent);
+        }
+
+        /// <summary>What <see cref="SyncDirectory"/> does on this platform.</summary>
+        public enum DirectorySyncKind
+        {
+            /// <summary>Not tried yet on this platform (the first sync decides).</summary>
+            Unknown,
+            /// <summary>The folder is opened and <c>fsync</c>ed (Linux, Android, macOS: libc <c>open</c>/<c>fsync</c>/<c>close</c>).</summary>
+            Synced,
+            /// <summary>Windows, or no libc to call: the rename is not synced (the file's data is).</summary>
+            Unsupported,
+            /// <summary>The file system refused <c>fsync</c> on a folder (EINVAL, EOPNOTSUPP): the rename is not synced.</summary>
+            Refused,
+        }
+
+        /// <summary>What the last <see cref="SyncDirectory"/> did.</summary>
+        public static DirectorySyncKind DirectorySync { get; private set; }
+
+        /// <summary>
+        /// Syncs the folder's entries (the names in it, so a rename into it) to the device. On Linux, Android and
+        /// macOS: open, fsync, close through libc; an error other than "not supported for a folder" throws
+        /// <see cref="IOException"/> naming the errno. On Windows it does nothing (<see cref="DirectorySync"/> =
+        /// <see cref="DirectorySyncKind.Unsupported"/>).
+        /// </summary>
+        public static void SyncDirectory(string directory)
+        {
+            if (!IsUnix)
+            {
+                DirectorySync = DirectorySyncKind.Unsupported;
+                return;
+            }
+            int fd, errno;
+            try
+            {
+                fd = Libc.Open(directory, OpenReadOnly | OpenCloseOnExec);
+                errno = fd < 0 ? Marshal.GetLastWin32Error() : 0;
+            }
+            catch (Exception e) when (e is DllNotFoundException || e is EntryPointNotFoundException)
+            {
+                DirectorySync = DirectorySyncKind.Unsupported;
+                return;
+            }
+            if (fd < 0) throw new IOException(directory + ": the folder could not be opened to sync it (errno " + errno + ")");
+            try
+            {
+                if (Libc.Fsync(fd) != 0)
+                {
+                    errno = Marshal.GetLastWin32Error();
+                    if (errno == EINVAL || errno == EOPNOTSUPP_Linux || (errno == ENOTSUP_Darwin && IsDarwin))
+                    {
+                        DirectorySync = DirectorySyncKind.Refused;
+                        return;
+                    }
+                    throw new IOException(directory + ": the folder could not be synced to the device (errno " + errno + ")");
+                }
+                DirectorySync = DirectorySyncKind.Synced;
+            }
+            finally
+            {
+                Libc.Close(fd);
+            }
+        }
+
+        // O_RDONLY and O_CLOEXEC have these values on Linux (x86, x86-64, ARM, ARM64: Android) and macOS differs only
+        // in O_CLOEXEC, which is then left out (it only keeps the descriptor from a child process). A folder opens
+        // read-only without O_DIRECTORY, whose value differs between x86-64 and ARM64.
+        const int OpenReadOnly = 0;
+        static int OpenCloseOnExec => IsDarwin ? 0 : 0x80000;
+        const int EINVAL = 22, EOPNOTSUPP_Linux = 95, ENOTSUP_Darwin = 45;
+
+        static bool IsUnix
+        {
+            get
+            {
+                var platform = Environment.OSVersion.Platform;
+                return platform == PlatformID.Unix || platform == PlatformID.MacOSX;
+            }
+        }
+
+        static bool IsDarwin => RuntimeInformation.IsOSPlatform(OSPlatform.OSX);
+
+        /// <summary>libc's open/fsync/close: plain DllImport (no marshalling beyond a string), which IL2CPP and Mono support.</summary>
+        static class Libc
+        {
+            [DllImport("libc", EntryPoint = "open", SetLastError = true)]
+            public static extern int Open([MarshalAs(UnmanagedType.LPStr)] string path, int flags);
+
+            [DllImport("libc", EntryPoint = "fsync", SetLastError = true)]
+            public static extern int Fsync(int fd);
+
+            [DllImport("libc", EntryPoint = "close", SetLastError = true)]
+            public static extern int Close(int fd);
         }
 
         /// <summary>

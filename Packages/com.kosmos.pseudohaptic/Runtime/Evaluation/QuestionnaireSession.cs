@@ -79,10 +79,19 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>The answer already given to the current item, if any.</summary>
         public int? CurrentAnswer => IsFinished ? (int?)null : AnswerAt(StepIndex);
 
-        public bool CanGoBack => StepIndex > 0;
+        public bool CanGoBack => !IsSaving && StepIndex > 0;
 
         /// <summary>The current item is answered and not the end: moving on skips nothing.</summary>
-        public bool CanGoForward => !IsFinished && answered[StepIndex];
+        public bool CanGoForward => !IsSaving && !IsFinished && answered[StepIndex];
+
+        /// <summary>
+        /// An answer was given (<see cref="Submit"/>) and is in <see cref="FileText"/>, but its write has not been
+        /// acknowledged (<see cref="Acknowledge"/>): the item stays shown, and no answer or paging is taken.
+        /// </summary>
+        public bool IsSaving { get; private set; }
+
+        int pendingStep, pendingValue, pendingRow;
+        string pendingPrevious;
 
         /// <summary>
         /// Starts or resumes <paramref name="participant"/>'s session over <paramref name="questionnaireIds"/> (all of
@@ -159,13 +168,37 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>
         /// Answers the current item with <paramref name="value"/>, writes the file, and moves on to the next item
         /// not yet answered (after this one, else the first before it, else the end). If the file cannot be
-        /// written the session stays as it was and the I/O error is thrown.
+        /// written the session stays as it was and the I/O error is thrown. (The headset does the same in two
+        /// steps, <see cref="Submit"/> and <see cref="Acknowledge"/>, with the write off the main thread.)
         /// </summary>
-        /// <exception cref="InvalidOperationException">The session is finished.</exception>
+        /// <exception cref="InvalidOperationException">The session is finished, or an answer is waiting for its write.</exception>
         /// <exception cref="ArgumentOutOfRangeException">The value is not on the questionnaire's scale.</exception>
         public void Answer(int value)
         {
+            Submit(value);
+            try
+            {
+                Save();
+            }
+            catch
+            {
+                Withdraw();
+                throw;
+            }
+            Acknowledge();
+        }
+
+        /// <summary>
+        /// Takes <paramref name="value"/> as the current item's answer into memory (it is then in
+        /// <see cref="FileText"/>, replacing an earlier answer to the item, and <see cref="IsSaving"/>): the item does not
+        /// move on until the file holding it has been written and <see cref="Acknowledge"/> is called.
+        /// </summary>
+        /// <exception cref="InvalidOperationException">The session is finished, or an answer is waiting for its write.</exception>
+        /// <exception cref="ArgumentOutOfRangeException">The value is not on the questionnaire's scale.</exception>
+        public void Submit(int value)
+        {
             if (IsFinished) throw new InvalidOperationException("the session is finished: every item is answered");
+            if (IsSaving) throw new InvalidOperationException("the last answer is still being saved");
             var questionnaire = CurrentQuestionnaire;
             var item = CurrentItem;
             string why = questionnaire.Reject(item.Number, value);
@@ -174,27 +207,40 @@ namespace Kosmos.PseudoHaptic.Evaluation
             int step = StepIndex;
             string row = ResponsesCsv.FormatRow(new Response(Participant, questionnaire.Id, item.Number, value));
             int at = rowOfStep[step];
-            string previous = at >= 0 ? rows[at] : null;
+            pendingPrevious = at >= 0 ? rows[at] : null;
             if (at >= 0) rows[at] = row;
-            else rows.Add(row);
-            try
+            else
             {
-                Save();
+                rows.Add(row);
+                at = rows.Count - 1;
             }
-            catch
+            pendingStep = step;
+            pendingValue = value;
+            pendingRow = at;
+            IsSaving = true;
+        }
+
+        /// <summary>The file holding the submitted answer was written: the answer counts and the next item is shown.</summary>
+        public void Acknowledge()
+        {
+            if (!IsSaving) throw new InvalidOperationException("no answer is waiting for its write");
+            IsSaving = false;
+            int step = pendingStep;
+            if (rowOfStep[step] < 0)
             {
-                if (at >= 0) rows[at] = previous;
-                else rows.RemoveAt(rows.Count - 1);
-                throw;
-            }
-            if (at < 0)
-            {
-                rowOfStep[step] = rows.Count - 1;
+                rowOfStep[step] = pendingRow;
                 AnsweredCount++;
             }
-            answers[step] = value;
+            answers[step] = pendingValue;
             answered[step] = true;
             StepIndex = NextUnanswered(step);
+        }
+
+        void Withdraw()
+        {
+            IsSaving = false;
+            if (rowOfStep[pendingStep] >= 0) rows[pendingRow] = pendingPrevious;
+            else rows.RemoveAt(pendingRow);
         }
 
         /// <summary>Shows the previous item (its answer can then be changed); false at the first.</summary>
@@ -222,13 +268,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return text.ToString();
         }
 
-        void Save()
-        {
-            string full = Path.GetFullPath(ResponsesPath);
-            string directory = Path.GetDirectoryName(full);
-            if (!string.IsNullOrEmpty(directory)) Directory.CreateDirectory(directory);
-            AtomicFile.WriteAllText(full, FileText());
-        }
+        void Save() => DiscriminationSession.Save(ResponsesPath, FileText());
 
         /// <summary>After <paramref name="from"/>, the first unanswered step; else the first unanswered before it; else the end.</summary>
         int NextUnanswered(int from)

@@ -44,7 +44,9 @@ namespace Kosmos.PseudoHaptic
 
         public string WaitingText = "Please wait for the experimenter.";
         public string DoneText = "Thank you. All your answers are saved.";
-        public string NotSavedText = "That answer could not be saved. Please tell the experimenter.";
+        public string NotSavedText = DefaultNotSavedText;
+        public string SavingText = "Saving…";
+        public const string DefaultNotSavedText = "That answer could not be saved yet. It is kept and tried again; please tell the experimenter.";
 
         public QuestionnaireSession Session { get; private set; }
         /// <summary>Why the panel cannot run or the last answer was not saved; null when all is well.</summary>
@@ -55,8 +57,27 @@ namespace Kosmos.PseudoHaptic
         public event Action<QuestionnaireSession> Completed, Answered;
         public event Action<string> Failed;
 
-        public QuestionnairePanelModel(double cooldown = PokeDebounce.DefaultCooldown, double releaseTime = PokeDebounce.DefaultReleaseTime)
-            => Debounce = new PokeDebounce(Math.Max(0, cooldown), Math.Max(0, releaseTime));
+        /// <summary>The one writer of the responses file: answers are written in order, acknowledged by <see cref="Update"/>.</summary>
+        public SaveQueue Saver { get; }
+
+        /// <summary>An answer was given and is not yet on disk (being written, or failed and waiting to be tried again).</summary>
+        public bool IsSaving => Session != null && Session.IsSaving;
+
+        /// <param name="saver">
+        /// Writes the file; default one that writes inside <see cref="Answer"/> and <see cref="Update"/> on the caller's
+        /// thread. The headset passes one writing in the background (<c>new SaveQueue(background: true)</c>).
+        /// </param>
+        public QuestionnairePanelModel(double cooldown = PokeDebounce.DefaultCooldown, double releaseTime = PokeDebounce.DefaultReleaseTime, SaveQueue saver = null)
+        {
+            Debounce = new PokeDebounce(Math.Max(0, cooldown), Math.Max(0, releaseTime));
+            Saver = saver ?? new SaveQueue(background: false);
+        }
+
+        /// <summary>Every frame (main thread): delivers finished writes and retries a failed one. True when an answer was saved (the page changed).</summary>
+        public bool Update() => Saver.Pump() > 0;
+
+        /// <summary>Waits up to <paramref name="timeoutMs"/> for the answer being written (a pause, quitting). True when nothing is left unsaved.</summary>
+        public bool Flush(int timeoutMs = 5000) => Saver.Drain(timeoutMs);
 
         /// <summary>Starts or resumes a session over named JSON definitions ("immersion.json", text); false, with <see cref="Error"/>, when they or the file cannot be used.</summary>
         public bool Begin(IReadOnlyList<KeyValuePair<string, string>> definitions, string participant, string responsesPath, IEnumerable<string> ids)
@@ -78,6 +99,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Starts or resumes <paramref name="participant"/>'s session; false, with <see cref="Error"/>, when the catalog or the file cannot be used.</summary>
         public bool Begin(QuestionnaireCatalog catalog, string participant, string responsesPath, IEnumerable<string> ids)
         {
+            if (IsSaving && !Saver.Drain()) return Fail("the last answer is not saved yet: " + Saver.LastError);
             Session = null;
             _completedRaised = false;
             Debounce.Reset();
@@ -120,26 +142,42 @@ namespace Kosmos.PseudoHaptic
             return changed;
         }
 
-        /// <summary>Answers the current item. True when the answer was saved; false (with <see cref="Error"/>) when it was not.</summary>
+        /// <summary>
+        /// Answers the current item: the answer is taken into memory and its write queued; the page moves on only when
+        /// the write returned (<see cref="Answered"/>, delivered here or by <see cref="Update"/>). True when the answer
+        /// was taken and nothing failed (saved, or being saved); false when none is taken now (no session, finished,
+        /// the last answer still being saved, a value off the scale) or its write failed: then <see cref="Error"/> says
+        /// so, the answer is kept, and it is written again every <see cref="SaveQueue.RetrySeconds"/> until it is saved.
+        /// </summary>
         public bool Answer(int value)
         {
-            if (Session == null || Session.IsFinished) return false;
+            if (Session == null || Session.IsFinished || Session.IsSaving) return false;
+            var session = Session;
             try
             {
-                Session.Answer(value);
+                session.Submit(value);
             }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentOutOfRangeException)
+            catch (ArgumentOutOfRangeException e)
             {
                 return Fail(e.Message);
             }
+            string path = session.ResponsesPath, text = session.FileText();
+            Saver.Enqueue(() => DiscriminationSession.Save(path, text), () => Acknowledged(session), e => Fail(e));
+            Saver.Pump();
+            return Error == null;
+        }
+
+        void Acknowledged(QuestionnaireSession session)
+        {
+            session.Acknowledge();
+            if (session != Session) return;
             Error = null;
-            Answered?.Invoke(Session);
-            if (Session.IsComplete && !_completedRaised)
+            Answered?.Invoke(session);
+            if (session.IsComplete && !_completedRaised)
             {
                 _completedRaised = true;
-                Completed?.Invoke(Session);
+                Completed?.Invoke(session);
             }
-            return true;
         }
 
         /// <summary>What the panel shows, its texts wrapped for a panel <paramref name="width"/> m wide at <paramref name="textSize"/>.</summary>
@@ -161,7 +199,8 @@ namespace Kosmos.PseudoHaptic
                 Main = TextWrap.Wrap(main, CharsPerLine(inner, textSize)),
                 MinLabel = q != null ? TextWrap.Wrap(q.ScaleMinLabel, CharsPerLine(labelWidth, small)) : "",
                 MaxLabel = q != null ? TextWrap.Wrap(q.ScaleMaxLabel, CharsPerLine(labelWidth, small)) : "",
-                Message = s != null && Error != null ? TextWrap.Wrap(NotSavedText, CharsPerLine(inner, small)) : "",
+                Message = s != null && Error != null ? TextWrap.Wrap(NotSavedText, CharsPerLine(inner, small))
+                    : s != null && s.IsSaving ? TextWrap.Wrap(SavingText, CharsPerLine(inner, small)) : "",
                 Points = points,
                 ScaleMin = q != null ? q.ScaleMin : 0,
                 Chosen = asking ? s.CurrentAnswer : null,

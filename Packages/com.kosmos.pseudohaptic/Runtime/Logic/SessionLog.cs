@@ -13,9 +13,12 @@ namespace Kosmos.PseudoHaptic
     /// it, the object's height, mass, profile) goes frame by frame into a preallocated <see cref="HoldRecording"/>
     /// (two ready, for two hands; reused), and is written when the hold ends as one CSV in the replay trace format,
     /// <c>&lt;folder&gt;/&lt;session&gt;/hold-001-&lt;object&gt;.csv</c>, with an index <c>holds.csv</c> naming each
-    /// hold's object, mass and profile. Files are written to a temporary name and renamed (<see cref="AtomicFile"/>);
-    /// <see cref="FlushActive"/> writes running holds as far as they got. Recording a frame allocates nothing
-    /// (until a hold outgrows its buffer, which then doubles).
+    /// hold's object, mass and profile. Files are written durably to a temporary name and renamed (<see cref="AtomicFile"/>)
+    /// by one writer (<see cref="Saver"/>, in order; on a background thread in the headset), and a hold counts as saved
+    /// (<see cref="HoldWritten"/>, its index row) only when its write returned, delivered on the main thread by
+    /// <see cref="Pump"/>; a failed write is kept and tried again (<see cref="LastError"/> says so meanwhile), its buffer
+    /// not reused until it is saved. <see cref="FlushActive"/> writes running holds as far as they got. Recording a frame
+    /// allocates nothing (until a hold outgrows its buffer, which then doubles, or a hold ends while two others wait to be written).
     /// </summary>
     public sealed class SessionLog
     {
@@ -27,22 +30,37 @@ namespace Kosmos.PseudoHaptic
             public object Key;
             public readonly HoldRecording Recording;
             public int Number;
-            public string File, ObjectName;
+            public string File, ObjectName, Folder;
             public double StartedAt;
+            public StringBuilder Index; // its session's index
             public Hold(int capacity) => Recording = new HoldRecording(capacity);
         }
 
         readonly List<Hold> _active = new List<Hold>(2);
         readonly Stack<Hold> _spare = new Stack<Hold>(2);
-        readonly StringBuilder _index = new StringBuilder();
+        StringBuilder _index = new StringBuilder();
         readonly int _capacity;
         string _folder = "", _sessionId = "", _sessionFolder;
 
-        public SessionLog(int framesPerHold = HoldRecording.DefaultCapacity)
+        /// <param name="saver">Writes the files; default one writing on the caller's thread (inside <see cref="Ended"/> and <see cref="Pump"/>). The headset passes a background one.</param>
+        public SessionLog(int framesPerHold = HoldRecording.DefaultCapacity, SaveQueue saver = null)
         {
             _capacity = Math.Max(64, framesPerHold);
             for (int i = 0; i < 2; i++) _spare.Push(new Hold(_capacity)); // two hands
+            Saver = saver ?? new SaveQueue(background: false);
         }
+
+        /// <summary>The one writer of this log's files.</summary>
+        public SaveQueue Saver { get; }
+
+        /// <summary>Files written but not yet acknowledged (being written, or failed and waiting to be tried again).</summary>
+        public int PendingWrites => Saver.Pending;
+
+        /// <summary>Every frame (main thread): delivers finished writes (<see cref="HoldWritten"/>, index rows) and retries a failed one.</summary>
+        public void Pump() => Saver.Pump();
+
+        /// <summary>Waits up to <paramref name="timeoutMs"/> for the queued writes (a pause, quitting). True when nothing is left unwritten.</summary>
+        public bool Drain(int timeoutMs = 5000) => Saver.Drain(timeoutMs);
 
         /// <summary>The folder sessions are written under (absolute).</summary>
         public string Folder { get => _folder; set { _folder = value ?? ""; _sessionFolder = null; } }
@@ -56,7 +74,7 @@ namespace Kosmos.PseudoHaptic
                 _sessionId = value ?? "";
                 _sessionFolder = null;
                 HoldCount = 0;
-                _index.Length = 0;
+                _index = new StringBuilder(); // holds of the last session still being written keep theirs
             }
         }
 
@@ -113,10 +131,23 @@ namespace Kosmos.PseudoHaptic
             if (at >= 0) Finish(at);
         }
 
-        /// <summary>Writes every running hold as far as it got (it goes on recording, and is written again at its end).</summary>
+        /// <summary>
+        /// Writes every running hold as far as it got (it goes on recording, and is written again at its end): its
+        /// text is taken now, on this thread (a pause or quitting), and queued. Then <see cref="Drain"/> waits for it.
+        /// </summary>
         public void FlushActive()
         {
-            for (int i = 0; i < _active.Count; i++) Write(_active[i]);
+            for (int i = 0; i < _active.Count; i++)
+            {
+                Hold hold = _active[i];
+                Name(hold);
+                string file = hold.File, folder = hold.Folder, text = hold.Recording.ToCsv();
+                int number = hold.Number;
+                string objectName = hold.ObjectName;
+                Saver.Enqueue(() => { AtomicFile.CreateDirectory(folder); AtomicFile.WriteAllText(file, text); },
+                    () => Written(file), e => NotWritten(number, objectName, e));
+            }
+            Saver.Pump();
         }
 
         /// <summary>Writes and ends every running hold (the recorder was disabled): later frames are not recorded.</summary>
@@ -136,41 +167,62 @@ namespace Kosmos.PseudoHaptic
         {
             Hold hold = _active[at];
             _active.RemoveAt(at);
-            Write(hold);
-            AppendIndex(hold);
             hold.Key = null;
+            Name(hold);
+            // The recording is no longer touched here until its write is acknowledged: the writer reads it.
+            Saver.Enqueue(() => WriteHold(hold), () => HoldSaved(hold), e => NotWritten(hold.Number, hold.ObjectName, e));
+            Saver.Pump();
+        }
+
+        void Name(Hold hold)
+        {
+            if (hold.File != null) return;
+            hold.Folder = SessionFolderPath();
+            hold.Index = _index;
+            hold.File = Path.Combine(hold.Folder, "hold-" + hold.Number.ToString("000", CultureInfo.InvariantCulture) + "-" + SafeName(hold.ObjectName) + ".csv");
+        }
+
+        static void WriteHold(Hold hold)
+        {
+            AtomicFile.CreateDirectory(hold.Folder);
+            HoldRecording recording = hold.Recording;
+            AtomicFile.Write(hold.File, synced: true, write: temp =>
+            {
+                using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 65536))
+                {
+                    using (var writer = new StreamWriter(stream, new UTF8Encoding(false), 65536, leaveOpen: true))
+                        recording.WriteCsv(writer);
+                    if (AtomicFile.Durable) stream.Flush(true);
+                }
+            });
+        }
+
+        void HoldSaved(Hold hold)
+        {
+            Written(hold.File);
+            AppendIndex(hold);
             hold.Recording.Clear();
+            hold.File = null;
+            hold.Index = null;
             _spare.Push(hold);
         }
 
-        void Write(Hold hold)
+        void Written(string file)
         {
-            try
-            {
-                if (hold.File == null)
-                    hold.File = Path.Combine(EnsureSessionFolder(), "hold-" + hold.Number.ToString("000", CultureInfo.InvariantCulture) + "-" + SafeName(hold.ObjectName) + ".csv");
-                HoldRecording recording = hold.Recording;
-                AtomicFile.WriteWith(hold.File, temp =>
-                {
-                    using (var writer = new StreamWriter(temp, false, new UTF8Encoding(false)))
-                        recording.WriteCsv(writer);
-                });
-                LastError = null;
-                HoldWritten?.Invoke(hold.File);
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
-            {
-                Fail("Session recorder: hold " + hold.Number + " of '" + hold.ObjectName + "' was not written: " + e.Message);
-            }
+            LastError = null;
+            HoldWritten?.Invoke(file);
         }
+
+        void NotWritten(int number, string objectName, string error) =>
+            Fail("Session recorder: hold " + number + " of '" + objectName + "' was not written (kept; tried again): " + error);
 
         void AppendIndex(Hold hold)
         {
-            if (hold.File == null) return; // its file could not be written either
             HoldRecording r = hold.Recording;
             RecordedFrame last = r.Count > 0 ? r[r.Count - 1] : default;
-            if (_index.Length == 0) _index.Append(IndexHeader).Append('\n');
-            _index.Append(hold.Number.ToString(CultureInfo.InvariantCulture)).Append(',')
+            StringBuilder index = hold.Index;
+            if (index.Length == 0) index.Append(IndexHeader).Append('\n');
+            index.Append(hold.Number.ToString(CultureInfo.InvariantCulture)).Append(',')
                 .Append(SafeName(hold.ObjectName)).Append(',')
                 .Append(Path.GetFileName(hold.File)).Append(',')
                 .Append(r.Count.ToString(CultureInfo.InvariantCulture)).Append(',')
@@ -179,14 +231,9 @@ namespace Kosmos.PseudoHaptic
                 .Append(SafeName(last.Profile)).Append(',')
                 .Append(last.StandardSpeed.ToString("R", CultureInfo.InvariantCulture)).Append(',')
                 .Append(hold.StartedAt.ToString("R", CultureInfo.InvariantCulture)).Append('\n');
-            try
-            {
-                AtomicFile.WriteAllText(Path.Combine(EnsureSessionFolder(), "holds.csv"), _index.ToString());
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException || e is NotSupportedException)
-            {
-                Fail("Session recorder: holds.csv was not written: " + e.Message);
-            }
+            string path = Path.Combine(hold.Folder, "holds.csv"), text = index.ToString();
+            Saver.Enqueue(() => AtomicFile.WriteAllText(path, text), () => LastError = null,
+                e => Fail("Session recorder: holds.csv was not written (kept; tried again): " + e));
         }
 
         void Fail(string message)
@@ -195,12 +242,11 @@ namespace Kosmos.PseudoHaptic
             WriteFailed?.Invoke(message);
         }
 
-        string EnsureSessionFolder()
+        string SessionFolderPath()
         {
             if (_sessionFolder != null) return _sessionFolder;
             if (string.IsNullOrWhiteSpace(_sessionId)) _sessionId = DateTime.Now.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture);
             _sessionFolder = Path.Combine(_folder, SafeName(_sessionId));
-            Directory.CreateDirectory(_sessionFolder);
             return _sessionFolder;
         }
 

@@ -144,9 +144,37 @@ namespace Kosmos.PseudoHaptic
 
         DiscriminationTaskModel CreateModel()
         {
-            var model = new DiscriminationTaskModel(_cooldown, _releaseTime);
-            model.Failed += e => Debug.LogError("Discrimination task '" + name + "': " + e, this);
+            // Answers are written on a background thread, in order; the next trial comes when Update delivers the acknowledgement.
+            var model = new DiscriminationTaskModel(_cooldown, _releaseTime, new SaveQueue(background: true));
+            model.Failed += e =>
+            {
+                Debug.LogError("Discrimination task '" + name + "': " + e, this);
+                Show();
+            };
+            model.Saved += () => Shown(Applied()); // the answer is on disk: the next trial's masses
             return model;
+        }
+
+        void Update()
+        {
+            if (_model != null) _model.Update();
+        }
+
+        /// <summary>Waits up to <paramref name="timeoutMs"/> for the answer being written and shows the result (a pause, quitting, a test). True when nothing is left unsaved.</summary>
+        public bool WaitForSaves(int timeoutMs = 5000) => _model == null || _model.Flush(timeoutMs);
+
+        void OnApplicationPause(bool paused)
+        {
+            if (paused) WaitForSaves();
+        }
+
+        void OnApplicationQuit() => WaitForSaves();
+
+        void OnDestroy()
+        {
+            if (_model == null) return;
+            _model.Flush();
+            _model.Saver.Dispose();
         }
 
         void Awake()
@@ -188,9 +216,13 @@ namespace Kosmos.PseudoHaptic
         /// <summary>A fingertip's contact with a button lasts.</summary>
         public void Stay(double now) => Model.Stay(now);
 
-        /// <summary>Answers "the object on <paramref name="heavier"/> was heavier". True when the answer was saved.</summary>
+        /// <summary>
+        /// Answers "the object on <paramref name="heavier"/> was heavier". True when the answer was taken: it is written
+        /// in the background and the next trial is shown when it is on disk; false when none is taken now, or its write
+        /// failed (then it is kept, shown as not saved, and written again until it is).
+        /// </summary>
         public bool Answer(PairSide heavier)
-            => Shown(Model.Answer(heavier, (_left != null && _left.IsHeld) || (_right != null && _right.IsHeld)) && Applied());
+            => Shown(Model.Answer(heavier, (_left != null && _left.IsHeld) || (_right != null && _right.IsHeld)));
 
         /// <summary>The current trial's masses on the objects, which go back to where they started.</summary>
         bool Applied()

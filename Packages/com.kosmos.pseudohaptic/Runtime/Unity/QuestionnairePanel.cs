@@ -50,7 +50,8 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] string _nextText = "Next";
         [SerializeField] string _waitingText = "Please wait for the experimenter.";
         [SerializeField] string _doneText = "Thank you. All your answers are saved.";
-        [SerializeField] string _notSavedText = "That answer could not be saved. Please tell the experimenter.";
+        [SerializeField] string _notSavedText = QuestionnairePanelModel.DefaultNotSavedText;
+        [SerializeField] string _savingText = "Saving…";
 
         QuestionnairePanelModel _model;
         QuestionnairePanelParts _parts;
@@ -113,11 +114,45 @@ namespace Kosmos.PseudoHaptic
 
         QuestionnairePanelModel CreateModel()
         {
-            var model = new QuestionnairePanelModel(_cooldown, _releaseTime) { WaitingText = _waitingText, DoneText = _doneText, NotSavedText = _notSavedText };
+            // Answers are written on a background thread, in order; the page turns when Update delivers the acknowledgement.
+            var model = new QuestionnairePanelModel(_cooldown, _releaseTime, new SaveQueue(background: true))
+                { WaitingText = _waitingText, DoneText = _doneText, NotSavedText = _notSavedText, SavingText = _savingText };
             model.Completed += s => Completed?.Invoke(s);
             model.Answered += s => Answered?.Invoke(s);
-            model.Failed += e => Debug.LogError("Questionnaire panel '" + name + "': " + e, this);
+            model.Failed += e =>
+            {
+                Debug.LogError("Questionnaire panel '" + name + "': " + e, this);
+                Show();
+            };
             return model;
+        }
+
+        void Update()
+        {
+            if (_model != null && _model.Update()) Show(); // an answer is on disk: the next page
+        }
+
+        /// <summary>Waits up to <paramref name="timeoutMs"/> for the answer being written and shows the result (a pause, quitting, a test). True when nothing is left unsaved.</summary>
+        public bool WaitForSaves(int timeoutMs = 5000)
+        {
+            if (_model == null) return true;
+            bool saved = _model.Flush(timeoutMs);
+            Show();
+            return saved;
+        }
+
+        void OnApplicationPause(bool paused)
+        {
+            if (paused) WaitForSaves();
+        }
+
+        void OnApplicationQuit() => WaitForSaves();
+
+        void OnDestroy()
+        {
+            if (_model == null) return;
+            _model.Flush();
+            _model.Saver.Dispose();
         }
 
         void Awake()
@@ -173,7 +208,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Does what <paramref name="button"/> stands for, without the debounce. True when something changed.</summary>
         public bool Press(PokeButton button) => button != null && Shown(Model.Press(button.Kind, button.Value));
 
-        /// <summary>Answers the current item (as a poke on that button would). True when the answer was saved.</summary>
+        /// <summary>Answers the current item (as a poke on that button would). True when the answer was taken (it is saved in the background and the page turns when it is); false when not, or its write failed (then kept and tried again).</summary>
         public bool Answer(int value) => Shown(Model.Answer(value));
 
         bool Shown(bool result)

@@ -1,4 +1,5 @@
 using System.IO;
+using Kosmos.PseudoHaptic.Evaluation;
 using Kosmos.PseudoHaptic.Simulation;
 using UnityEngine;
 
@@ -8,8 +9,9 @@ namespace Kosmos.PseudoHaptic
     /// Records every hold of a study session, one replay-format CSV per hold and an index <c>holds.csv</c>, so that
     /// <c>pseudohaptic replay</c> can run it again. Glue over the engine-free <see cref="SessionLog"/> (buffers, file
     /// names, index, atomic writes): this listens to <see cref="PseudoHapticWeight"/>'s hold events, resolves the
-    /// folder under <see cref="Application.persistentDataPath"/>, and writes running holds at a pause, at quit and when
-    /// disabled. Recording a frame allocates nothing.
+    /// folder under <see cref="Application.persistentDataPath"/>, pumps the log's writer every frame (files are written on
+    /// a background thread; <see cref="HoldWritten"/> comes once a file is on disk), and writes running holds at a pause, at
+    /// quit and when disabled, waiting for them. Recording a frame allocates nothing.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Session Recorder")]
@@ -57,7 +59,8 @@ namespace Kosmos.PseudoHaptic
 
         SessionLog CreateLog()
         {
-            var log = new SessionLog(_framesPerHold) { Folder = Resolve(_folder), SessionId = _sessionId };
+            // Holds are written on a background thread, in order; Update delivers each one's acknowledgement.
+            var log = new SessionLog(_framesPerHold, new SaveQueue(background: true)) { Folder = Resolve(_folder), SessionId = _sessionId };
             log.HoldWritten += path => HoldWritten?.Invoke(path);
             log.WriteFailed += message => Debug.LogError(message, this);
             return log;
@@ -76,6 +79,12 @@ namespace Kosmos.PseudoHaptic
             PseudoHapticWeight.HoldStepped -= OnHoldStepped;
             PseudoHapticWeight.HoldEnded -= OnHoldEnded;
             Log.FinishAll(); // what is running is written as far as it got; its remaining frames are not recorded
+            Log.Drain();
+        }
+
+        void Update()
+        {
+            if (_log != null) _log.Pump(); // acknowledgements of written holds, retries of failed ones
         }
 
         void OnApplicationPause(bool paused)
@@ -85,8 +94,23 @@ namespace Kosmos.PseudoHaptic
 
         void OnApplicationQuit() => FlushActive();
 
-        /// <summary>Writes every hold still running as far as it got.</summary>
-        public void FlushActive() => Log.FlushActive();
+        void OnDestroy()
+        {
+            if (_log != null) _log.Saver.Dispose();
+        }
+
+        /// <summary>Writes every hold still running as far as it got, and waits (up to 5 s) for every queued write.</summary>
+        public void FlushActive()
+        {
+            Log.FlushActive();
+            Log.Drain();
+        }
+
+        /// <summary>Waits up to <paramref name="timeoutMs"/> for every queued write and delivers <see cref="HoldWritten"/>. True when nothing is left unwritten.</summary>
+        public bool WaitForSaves(int timeoutMs = 5000) => Log.Drain(timeoutMs);
+
+        /// <summary>Files written but not yet acknowledged (being written, or failed and waiting to be tried again).</summary>
+        public int PendingWrites => Log.PendingWrites;
 
         void OnHoldBegan(PseudoHapticWeight w)
         {

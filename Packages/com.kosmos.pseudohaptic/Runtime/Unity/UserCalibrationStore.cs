@@ -1,6 +1,7 @@
 using System;
 using System.IO;
 using System.Text;
+using Kosmos.PseudoHaptic.Evaluation;
 using UnityEngine;
 
 namespace Kosmos.PseudoHaptic
@@ -107,7 +108,7 @@ namespace Kosmos.PseudoHaptic
             }
         }
 
-        /// <summary>Stores a calibration (write, then rename over the old file) and, for the current user, raises <see cref="Changed"/>.</summary>
+        /// <summary>Stores a calibration (durably: write, sync, rename over the old file, sync the folder; <see cref="AtomicFile"/>) and, for the current user, raises <see cref="Changed"/>.</summary>
         public static string Save(UserCalibration calibration)
         {
             if (calibration == null) throw new ArgumentNullException(nameof(calibration));
@@ -116,18 +117,9 @@ namespace Kosmos.PseudoHaptic
             if (string.IsNullOrWhiteSpace(calibration.userId)) calibration.userId = s_currentUserId;
 
             string path = PathFor(calibration.userId);
-            Directory.CreateDirectory(Path.GetDirectoryName(path));
-            string temp = path + ".tmp";
-            File.WriteAllText(temp, JsonUtility.ToJson(calibration, true), new UTF8Encoding(false));
-            if (File.Exists(path))
-            {
-                try { File.Replace(temp, path, null); }
-                catch (PlatformNotSupportedException) { File.Delete(path); File.Move(temp, path); }
-            }
-            else
-            {
-                File.Move(temp, path);
-            }
+            // Durable write-then-rename (synced, renamed, folder synced): one write at the end of a calibration, on this thread.
+            AtomicFile.CreateDirectory(Path.GetDirectoryName(path));
+            AtomicFile.WriteAllText(path, JsonUtility.ToJson(calibration, true));
 
             if (SafeId(calibration.userId) == SafeId(s_currentUserId))
             {

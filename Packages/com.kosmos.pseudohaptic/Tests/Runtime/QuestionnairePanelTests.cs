@@ -49,6 +49,9 @@ namespace Kosmos.PseudoHaptic.Tests
             return panel;
         }
 
+        /// <summary>Waits for the panel's background writer, as a later frame's Update would deliver it.</summary>
+        static void Saved(QuestionnairePanel panel) => Assert.That(panel.WaitForSaves(), Is.True, panel.Error);
+
         static int ActiveScaleButtons(QuestionnairePanel panel)
         {
             int n = 0;
@@ -89,6 +92,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             QuestionnairePanel panel = Panel();
             Assert.That(panel.Press(panel.ScaleButtons[3]), Is.True);
+            Saved(panel);
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,4" }));
             Assert.That(panel.ProgressText, Is.EqualTo("2 / 3"));
             Assert.That(panel.BackButton.gameObject.activeSelf, Is.True);
@@ -98,6 +102,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(panel.Session.CurrentAnswer, Is.EqualTo(4));
             Assert.That(panel.NextButton.gameObject.activeSelf, Is.True);
             Assert.That(panel.Press(panel.ScaleButtons[1]), Is.True, "a changed answer");
+            Saved(panel);
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2" }), "replaces its row");
         }
 
@@ -107,7 +112,11 @@ namespace Kosmos.PseudoHaptic.Tests
             QuestionnairePanel panel = Panel();
             int completed = 0;
             panel.Completed += s => completed++;
-            for (int i = 0; i < 3; i++) panel.Answer(3);
+            for (int i = 0; i < 3; i++)
+            {
+                panel.Answer(3);
+                Saved(panel);
+            }
             Assert.That(panel.TitleText, Is.EqualTo("Part B"));
             Assert.That(panel.ProgressText, Is.EqualTo("1 / 1"));
             Assert.That(ActiveScaleButtons(panel), Is.EqualTo(10));
@@ -115,6 +124,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(panel.MinLabelText, Is.Empty, "this scale has no labels");
 
             panel.Press(panel.ScaleButtons[7]);
+            Saved(panel);
             Assert.That(panel.Session.IsComplete, Is.True);
             Assert.That(completed, Is.EqualTo(1));
             Assert.That(ActiveScaleButtons(panel), Is.EqualTo(0));
@@ -129,7 +139,9 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             QuestionnairePanel first = Panel();
             first.Answer(5);
+            Saved(first);
             first.Answer(4);
+            Saved(first);
             QuestionnairePanel second = Panel(); // as after a crash
             Assert.That(second.ProgressText, Is.EqualTo("3 / 3"));
             Assert.That(second.ItemText, Is.EqualTo("Nothing felt real."));
@@ -140,10 +152,12 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             QuestionnairePanel panel = Panel();
             panel.Touch(panel.ScaleButtons[2], 10.0);
+            Saved(panel);
             for (double t = 10.02; t < 10.3; t += 0.02) panel.Stay(t);
             panel.Touch(panel.ScaleButtons[3], 10.3); // slid onto the neighbour on the next page
             Assert.That(panel.Session.AnsweredCount, Is.EqualTo(1));
             panel.Touch(panel.ScaleButtons[0], 11.0); // withdrawn, then poked again
+            Saved(panel);
             Assert.That(panel.Session.AnsweredCount, Is.EqualTo(2));
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,3", "P1,part-a,2,1" }));
         }
@@ -156,6 +170,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(panel.ButtonAt(two.transform.position), Is.SameAs(two));
             Assert.That(panel.PokeAt(panel.transform.position + new Vector3(0, 0.5f, 0), 5.0), Is.False, "above the panel");
             Assert.That(panel.PokeAt(two.transform.position + new Vector3(0.01f, 0.01f, -0.01f), 5.1), Is.True);
+            Saved(panel);
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2" }));
             Assert.That(panel.PokeAt(panel.ScaleButtons[0].transform.position, 5.2), Is.False, "within the cooldown");
         }
@@ -223,6 +238,7 @@ namespace Kosmos.PseudoHaptic.Tests
 
             tip.transform.position = panel.ScaleButtons[4].transform.position; // into the "5"
             for (int i = 0; i < 120 && panel.Session.AnsweredCount == 0; i++) yield return null;
+            Saved(panel);
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,5" }));
 
             for (int i = 0; i < 60; i++) yield return null; // resting in the button: still one answer

@@ -24,13 +24,18 @@ namespace Kosmos.PseudoHaptic.Tests
             if (Directory.Exists(_folder)) Directory.Delete(_folder, true);
         }
 
+        SessionRecorder _recorder;
+
         SessionRecorder Recorder(string session = "P1")
         {
             var recorder = Track(new GameObject("Session Recorder")).AddComponent<SessionRecorder>();
             recorder.Folder = _folder;
             recorder.SessionId = session;
-            return recorder;
+            return _recorder = recorder;
         }
+
+        /// <summary>Waits for the recorder's background writer, as a pause or a later frame's Update would deliver it.</summary>
+        void Saved() => Assert.That(_recorder.WaitForSaves(), Is.True, _recorder.LastError);
 
         static HoldRecording Read(string path)
         {
@@ -50,7 +55,7 @@ namespace Kosmos.PseudoHaptic.Tests
 
             float y = Lift(box, 0.3f, 0.8f, 0.3f);
             Assert.That(written, Is.Empty, "nothing is written during the hold");
-            box.EndHold();
+            box.EndHold(); Saved();
 
             string path = Path.Combine(_folder, "P1", "hold-001-Box_B.csv");
             Assert.That(written, Is.EqualTo(new[] { path }));
@@ -77,7 +82,7 @@ namespace Kosmos.PseudoHaptic.Tests
             PseudoHapticWeight box = Box("box", 2f);
             box.ExplicitStandardSpeed = 0.5f;
             Lift(box, 0.3f, 0.8f);
-            box.EndHold();
+            box.EndHold(); Saved();
             HoldRecording r = Read(Path.Combine(_folder, "P1", "hold-001-box.csv"));
             double[] replayed = TraceReplay.Run(new WeightSolver(WeightModel.FromMass(2.0), NamedProfiles.Paper, 0.5), r.ToTrace());
             for (int i = 0; i < r.Count; i++) Assert.That(replayed[i], Is.EqualTo(r[i].ObjectY).Within(1e-6), "frame " + i);
@@ -89,9 +94,9 @@ namespace Kosmos.PseudoHaptic.Tests
             SessionRecorder recorder = Recorder("S 1");
             PseudoHapticWeight a = Box("a", 0.5f, new Vector3(-0.3f, 0, 0));
             PseudoHapticWeight b = Box("b", 0.5f, new Vector3(0.3f, 0, 0));
-            Lift(a, 0.1f, 0.3f); a.EndHold();
-            Lift(b, 0.1f, 0.3f); b.EndHold();
-            Lift(a, 0.1f, 0.3f); a.EndHold();
+            Lift(a, 0.1f, 0.3f); a.EndHold(); Saved();
+            Lift(b, 0.1f, 0.3f); b.EndHold(); Saved();
+            Lift(a, 0.1f, 0.3f); a.EndHold(); Saved();
             string folder = Path.Combine(_folder, "S_1");
             Assert.That(File.Exists(Path.Combine(folder, "hold-001-a.csv")), Is.True);
             Assert.That(File.Exists(Path.Combine(folder, "hold-002-b.csv")), Is.True);
@@ -99,7 +104,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(File.ReadAllLines(Path.Combine(folder, "holds.csv")), Has.Length.EqualTo(4));
 
             recorder.Objects = new[] { b };
-            Lift(a, 0.1f, 0.3f); a.EndHold();
+            Lift(a, 0.1f, 0.3f); a.EndHold(); Saved();
             Assert.That(recorder.HoldCount, Is.EqualTo(3), "a is not listed");
         }
 
@@ -116,7 +121,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(File.Exists(Path.Combine(_folder, "P1", "holds.csv")), Is.False, "the hold is not over");
 
             box.Step(box.transform.position, true, true, double.NaN, FrameTime);
-            box.EndHold();
+            box.EndHold(); Saved();
             Assert.That(Read(path).Count, Is.EqualTo(sofar + 1));
             Assert.That(Directory.GetFiles(Path.Combine(_folder, "P1")), Has.Length.EqualTo(2), "the hold and the index; no temporary file");
         }
@@ -131,7 +136,7 @@ namespace Kosmos.PseudoHaptic.Tests
             string path = Path.Combine(_folder, "P1", "hold-001-box.csv");
             int count = Read(path).Count;
             box.Step(box.transform.position, true, true, double.NaN, FrameTime);
-            box.EndHold();
+            box.EndHold(); Saved();
             Assert.That(Read(path).Count, Is.EqualTo(count));
         }
 
@@ -142,7 +147,7 @@ namespace Kosmos.PseudoHaptic.Tests
             PseudoHapticWeight box = Box("box", 1f);
             Assert.That(box.BeginHold(box.transform.position), Is.True);
             box.Step(box.transform.position + Vector3.up * 0.01f, false, false, double.NaN, FrameTime);
-            box.EndHold();
+            box.EndHold(); Saved();
             HoldRecording r = Read(Path.Combine(_folder, "P1", "hold-001-box.csv"));
             Assert.That(r.Count, Is.EqualTo(2));
             Assert.That(r[1].Tracked, Is.False);

@@ -70,7 +70,13 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public bool WasLifted(PairSide side) => lifted[(int)side];
 
         /// <summary>True when an answer is taken now.</summary>
-        public bool CanAnswer => !IsFinished && (!RequireBothLifts || (lifted[0] && lifted[1]));
+        public bool CanAnswer => !IsSaving && !IsFinished && (!RequireBothLifts || (lifted[0] && lifted[1]));
+
+        /// <summary>
+        /// An answer was given (<see cref="Submit"/>) and is in <see cref="FileText"/>, but its write has not been
+        /// acknowledged (<see cref="Acknowledge"/>): the trial stays shown and no other answer is taken.
+        /// </summary>
+        public bool IsSaving { get; private set; }
 
         /// <summary>"12 / 84".</summary>
         public string ProgressText => plan != null
@@ -138,29 +144,47 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// Records "the object on <paramref name="heavier"/> was heavier" for the current trial (1 when that is
         /// the comparison), writes the file and moves to the next trial. False (nothing recorded) when the
         /// session is finished or the objects have not both been lifted yet. If the file cannot be written the
-        /// session stays as it was and the I/O error is thrown.
+        /// session stays as it was and the I/O error is thrown. (The headset does the same in two steps,
+        /// <see cref="Submit"/> and <see cref="Acknowledge"/>, with the write off the main thread.)
         /// </summary>
         public bool Answer(PairSide heavier)
+        {
+            if (!Submit(heavier)) return false;
+            try
+            {
+                Save(TrialsPath, FileText());
+            }
+            catch
+            {
+                Withdraw();
+                throw;
+            }
+            Acknowledge();
+            return true;
+        }
+
+        /// <summary>
+        /// Takes the answer "the object on <paramref name="heavier"/> was heavier" into memory (it is then in
+        /// <see cref="FileText"/>, and <see cref="IsSaving"/>): the trial does not move on until the file holding it
+        /// has been written and <see cref="Acknowledge"/> is called. False when no answer is taken now.
+        /// </summary>
+        public bool Submit(PairSide heavier)
         {
             if (!CanAnswer) return false;
             var trial = Current;
             bool comparisonLeft = trial.ComparisonFirst;
-            int response = (heavier == PairSide.Left) == comparisonLeft ? 1 : 0;
-            trial.Response = response;
+            trial.Response = (heavier == PairSide.Left) == comparisonLeft ? 1 : 0;
             rows.Add(TrialsCsv.FormatRow(trial));
-            try
-            {
-                string full = Path.GetFullPath(TrialsPath);
-                string directory = Path.GetDirectoryName(full);
-                if (!string.IsNullOrEmpty(directory)) Directory.CreateDirectory(directory);
-                AtomicFile.WriteAllText(full, FileText());
-            }
-            catch
-            {
-                rows.RemoveAt(rows.Count - 1);
-                trial.Response = -1;
-                throw;
-            }
+            IsSaving = true;
+            return true;
+        }
+
+        /// <summary>The file holding the submitted answer was written: the answer counts and the next trial is shown.</summary>
+        public void Acknowledge()
+        {
+            if (!IsSaving) throw new InvalidOperationException("no answer is waiting for its write");
+            IsSaving = false;
+            var trial = Current;
             AnsweredCount++;
             lifted[0] = lifted[1] = false;
             if (plan != null)
@@ -170,10 +194,24 @@ namespace Kosmos.PseudoHaptic.Evaluation
             }
             else
             {
-                staircase.Record(response);
+                staircase.Record(trial.Response);
                 CurrentIndex = AnsweredCount;
             }
-            return true;
+        }
+
+        void Withdraw()
+        {
+            IsSaving = false;
+            rows.RemoveAt(rows.Count - 1);
+            Current.Response = -1;
+        }
+
+        /// <summary>Writes <paramref name="text"/> to <paramref name="path"/> durably (<see cref="AtomicFile"/>), making its folder first.</summary>
+        public static void Save(string path, string text)
+        {
+            string full = Path.GetFullPath(path);
+            AtomicFile.CreateDirectory(Path.GetDirectoryName(full));
+            AtomicFile.WriteAllText(full, text);
         }
 
         /// <summary>The file's text as this session has written it (or would write it).</summary>

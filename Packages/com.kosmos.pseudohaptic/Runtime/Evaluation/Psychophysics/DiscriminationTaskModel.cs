@@ -16,6 +16,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public const string DoneText = "Done. Thank you!";
         public const string AnswerText = "Which was heavier? Poke the button on its side.";
         public const string LiftText = "Lift both objects, then put them down.";
+        public const string SavingText = "Saving the answer…";
+        /// <summary>What a failed save says, before the error (the answer is kept and written again until it is saved).</summary>
+        public const string NotSavedPrefix = "the answer could not be saved: ";
 
         /// <summary>The session; null before a successful <see cref="Begin"/>.</summary>
         public DiscriminationSession Session { get; private set; }
@@ -25,11 +28,26 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>True when a trial is under way (its masses are to be on the objects).</summary>
         public bool HasTrial => Session != null && !Session.IsFinished;
 
-        /// <summary>Raised with the message when something fails.</summary>
+        /// <summary>Raised with the message when something fails (a failed save: each time it is tried and fails).</summary>
         public event Action<string> Failed;
+        /// <summary>Raised on the main thread when an answer's write returned and the next trial is shown.</summary>
+        public event Action Saved;
 
-        public DiscriminationTaskModel(double cooldown = PokeDebounce.DefaultCooldown, double releaseTime = PokeDebounce.DefaultReleaseTime)
-            => Debounce = new PokeDebounce(cooldown, releaseTime);
+        /// <summary>The one writer of the trials file: answers are written in order, acknowledged by <see cref="Update"/>.</summary>
+        public SaveQueue Saver { get; }
+
+        /// <summary>An answer was given and is not yet on disk (being written, or failed and waiting to be tried again).</summary>
+        public bool IsSaving => Session != null && Session.IsSaving;
+
+        /// <param name="saver">
+        /// Writes the file; default one that writes inside <see cref="Answer"/> and <see cref="Update"/> on the caller's
+        /// thread. The headset passes one writing in the background (<c>new SaveQueue(background: true)</c>).
+        /// </param>
+        public DiscriminationTaskModel(double cooldown = PokeDebounce.DefaultCooldown, double releaseTime = PokeDebounce.DefaultReleaseTime, SaveQueue saver = null)
+        {
+            Debounce = new PokeDebounce(cooldown, releaseTime);
+            Saver = saver ?? new SaveQueue(background: false);
+        }
 
         /// <summary>The trials file's full path: <paramref name="file"/> (trials.csv when empty) as it is when rooted, else under Kosmos.PseudoHaptic in <paramref name="dataFolder"/>.</summary>
         public static string TrialsPath(string file, string dataFolder)
@@ -49,6 +67,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public bool Begin(string objectsError, DiscriminationSettings settings, string participant, string condition, string trialsPath)
         {
             if (objectsError != null) return Fail(objectsError);
+            if (IsSaving && !Saver.Drain()) return Fail("the last answer is not saved yet: " + Saver.LastError);
             try
             {
                 Session = settings.CreateSession(participant, condition, trialsPath);
@@ -79,23 +98,36 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public void Stay(double now) => Debounce.Stay(now);
 
         /// <summary>
-        /// Answers "the object on <paramref name="heavier"/> was heavier". True when the answer was saved; false
-        /// when no answer is taken now, while an object is held (both must be put down first), or when the file
-        /// could not be written (then with <see cref="Error"/>).
+        /// Answers "the object on <paramref name="heavier"/> was heavier": the answer is taken into memory and its
+        /// write queued; the next trial is shown only when the write returned (<see cref="Saved"/>, delivered here or
+        /// by <see cref="Update"/>). True when the answer was taken and nothing failed (saved, or being saved); false
+        /// when no answer is taken now (the session is finished, an object is held, the last answer is still being
+        /// saved), or when its write failed: then <see cref="Error"/> says so, the answer is kept, and it is written
+        /// again every <see cref="SaveQueue.RetrySeconds"/> until it is saved (never twice, never another answer meanwhile).
         /// </summary>
         public bool Answer(PairSide heavier, bool anyHeld)
         {
             if (Session == null || !Session.CanAnswer || anyHeld) return false;
-            try
-            {
-                Session.Answer(heavier);
-            }
-            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
-            {
-                return Fail("the answer could not be saved: " + e.Message);
-            }
+            var session = Session;
+            session.Submit(heavier);
+            string path = session.TrialsPath, text = session.FileText();
+            Saver.Enqueue(() => DiscriminationSession.Save(path, text), () => Acknowledged(session), e => Fail(NotSavedPrefix + e + " (the answer is kept and saved as soon as it can be)"));
+            Saver.Pump();
+            return Error == null;
+        }
+
+        /// <summary>Every frame (main thread): delivers finished writes and retries a failed one. True when an answer was saved (the trial changed).</summary>
+        public bool Update() => Saver.Pump() > 0;
+
+        /// <summary>Waits up to <paramref name="timeoutMs"/> for the answer being written (a pause, quitting). True when nothing is left unsaved.</summary>
+        public bool Flush(int timeoutMs = 5000) => Saver.Drain(timeoutMs);
+
+        void Acknowledged(DiscriminationSession session)
+        {
+            session.Acknowledge();
+            if (session != Session) return;
             Error = null;
-            return true;
+            Saved?.Invoke();
         }
 
         /// <summary>The text the task shows: the error, waiting, done, or the trial's progress and what to do.</summary>
@@ -103,6 +135,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         {
             if (Error != null) return Error;
             if (Session == null) return WaitingText;
+            if (Session.IsSaving) return "Trial " + Session.ProgressText + "\n" + SavingText;
             if (Session.IsFinished) return DoneText;
             string lifts = Session.CanAnswer ? AnswerText
                 : LiftText + (Session.WasLifted(PairSide.Left) ? " (left: done)" : "") + (Session.WasLifted(PairSide.Right) ? " (right: done)" : "");

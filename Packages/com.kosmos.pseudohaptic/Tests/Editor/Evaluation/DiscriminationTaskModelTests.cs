@@ -159,24 +159,43 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
-        public void AnAnswerThatCannotBeSavedSaysSoAndIsNotCounted()
+        public void AnAnswerThatCannotBeSavedSaysSoIsKeptAndIsSavedOnceByTheRetry()
         {
-            var model = new DiscriminationTaskModel();
+            double now = 0;
+            var model = new DiscriminationTaskModel(saver: new SaveQueue(background: false, retrySeconds: 2, clock: () => now));
             string path = _folder.File("taken");
             model.Begin(true, Settings(), "P1", "", path);
             Directory.CreateDirectory(path); // a folder where the file should go: the write fails
             model.NoteLift(true, false);
             model.NoteLift(false, true);
             string failed = null;
+            int saved = 0;
             model.Failed += e => failed = e;
+            model.Saved += () => saved++;
             Assert.That(model.Answer(PairSide.Left, false), Is.False);
-            Assert.That(model.Error, Does.StartWith("the answer could not be saved: "));
+            Assert.That(model.Error, Does.StartWith(DiscriminationTaskModel.NotSavedPrefix));
             Assert.That(failed, Is.EqualTo(model.Error));
             Assert.That(model.DisplayText(), Is.EqualTo(model.Error));
-            Assert.That(model.Session.AnsweredCount, Is.Zero);
+            Assert.That(model.Session.AnsweredCount, Is.Zero, "not acknowledged");
+            Assert.That(model.IsSaving, Is.True, "kept in memory");
+            Assert.That(model.Answer(PairSide.Right, false), Is.False, "no other answer while it is unsaved");
             Directory.Delete(path);
-            Assert.That(model.Answer(PairSide.Left, false), Is.True, "the trial is still open");
+            now = 1.9;
+            Assert.That(model.Update(), Is.False, "not tried again before its delay");
+            Assert.That(File.Exists(path), Is.False);
+            now = 2.0;
+            Assert.That(model.Update(), Is.True, "the retry saved it");
             Assert.That(model.Error, Is.Null);
+            Assert.That(saved, Is.EqualTo(1));
+            Assert.That(model.Session.AnsweredCount, Is.EqualTo(1));
+            Assert.That(model.Session.CurrentIndex, Is.EqualTo(1), "the next trial is shown");
+            string[] lines = File.ReadAllLines(path);
+            Assert.That(lines, Has.Length.EqualTo(2), "the header and the one answer, once");
+            Assert.That(lines[1].Split(',')[2], Is.EqualTo("1"));
+            now = 10;
+            Assert.That(model.Update(), Is.False);
+            Assert.That(model.Saver.Writes, Is.EqualTo(1), "a saved answer is not written again");
+            Assert.That(model.Saver.Failures, Is.EqualTo(1));
         }
 
         [Test]

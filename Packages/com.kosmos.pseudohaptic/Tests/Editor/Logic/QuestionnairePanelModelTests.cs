@@ -188,5 +188,54 @@ namespace Kosmos.PseudoHaptic.Tests
                 File.Delete(_folder);
             }
         }
+    
+        [Test]
+        public void WrittenInTheBackgroundThePageMovesOnlyWhenTheWriteIsAcknowledged()
+        {
+            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: true));
+            Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
+            int answered = 0;
+            m.Answered += s => answered++;
+            Assert.That(m.Answer(4), Is.True, "taken");
+            Assert.That(m.IsSaving, Is.True);
+            Assert.That(View(m).Progress, Is.EqualTo("1 / 3"), "the item stays until its write is acknowledged");
+            Assert.That(View(m).Message, Is.EqualTo(m.SavingText));
+            Assert.That(m.Answer(5), Is.False, "no second answer while the first is being saved");
+            Assert.That(m.Press(PanelAction.Back, 0), Is.False);
+            Assert.That(m.Flush(10000), Is.True);
+            Assert.That(answered, Is.EqualTo(1));
+            Assert.That(m.IsSaving, Is.False);
+            Assert.That(View(m).Progress, Is.EqualTo("2 / 3"));
+            Assert.That(View(m).Message, Is.EqualTo(""));
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,4" }));
+            m.Saver.Dispose();
+        }
+
+        [Test]
+        public void AFailedAnswerIsKeptShownAsNotSavedAndWrittenOnceWhenTheFolderIsBack()
+        {
+            double now = 0;
+            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now));
+            Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
+            m.Answer(2);
+            Directory.Delete(_folder, true);
+            File.WriteAllText(_folder, "a file where the responses folder was");
+            Assert.That(m.Answer(3), Is.False);
+            Assert.That(View(m).Message, Does.Contain("could not be saved"));
+            Assert.That(View(m).Progress, Is.EqualTo("2 / 3"), "not acknowledged");
+            Assert.That(m.Session.AnsweredCount, Is.EqualTo(1));
+            now = 5;
+            Assert.That(m.Update(), Is.False, "the folder is still blocked: tried again and failed");
+            Assert.That(m.Saver.Failures, Is.EqualTo(2));
+            File.Delete(_folder);
+            now = 6;
+            Assert.That(m.Update(), Is.True);
+            Assert.That(m.Error, Is.Null);
+            Assert.That(View(m).Progress, Is.EqualTo("3 / 3"));
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2", "P1,part-a,2,3" }), "the earlier answer is kept, the kept one written once");
+            now = 60;
+            m.Update();
+            Assert.That(m.Saver.Writes, Is.EqualTo(2));
+        }
     }
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using Kosmos.PseudoHaptic.Evaluation;
 using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 #if UNITY_5_3_OR_NEWER
@@ -163,6 +164,43 @@ namespace Kosmos.PseudoHaptic.Tests
             finally
             {
                 File.Delete(blocker);
+            }
+        }
+
+        [Test]
+        public void AHoldThatCannotBeWrittenIsKeptAndWrittenOnceByTheRetry()
+        {
+            double now = 0;
+            string blocker = Path.Combine(Path.GetTempPath(), "kosmos-pseudohaptic-file-" + Guid.NewGuid().ToString("N"));
+            File.WriteAllText(blocker, "a file where the folder should be");
+            try
+            {
+                var log = new SessionLog(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now)) { Folder = blocker, SessionId = "P1" };
+                var written = new List<string>();
+                log.HoldWritten += written.Add;
+                BoxScene.Box box = Wired(log, "box", 1);
+                int frames = Lift(box, 0.1, 0.3).frames;
+                box.Hold.End(1);
+                Assert.That(log.LastError, Does.Contain("hold 1 of 'box' was not written"));
+                Assert.That(log.PendingWrites, Is.EqualTo(1), "kept");
+                Lift(box, 0.2, 0.5); // a second hold meanwhile: its buffer is another one
+                box.Hold.End(1);
+                File.Delete(blocker);
+                now = 1;
+                log.Pump();
+                Assert.That(log.LastError, Is.Null);
+                Assert.That(log.PendingWrites, Is.Zero);
+                Assert.That(written, Has.Count.EqualTo(2));
+                Assert.That(Read(written[0]).Count, Is.EqualTo(1 + frames), "the first hold as it was recorded (its begin frame and each step)");
+                string[] index = File.ReadAllLines(Path.Combine(blocker, "P1", "holds.csv"));
+                Assert.That(index, Has.Length.EqualTo(3), "the header and each hold once");
+                Assert.That(index[1], Does.StartWith("1,box,"));
+                Assert.That(index[2], Does.StartWith("2,box,"));
+            }
+            finally
+            {
+                if (File.Exists(blocker)) File.Delete(blocker);
+                else if (Directory.Exists(blocker)) Directory.Delete(blocker, true);
             }
         }
 

@@ -1,0 +1,162 @@
+using System.Diagnostics;
+using System.Globalization;
+using Kosmos.PseudoHaptic;
+using Kosmos.PseudoHaptic.Evaluation;
+
+// The child process of DurabilityTests (issue 35). Modes:
+//   participant DIR PARTICIPANT SEED [REPETITIONS] [--marker]
+//       answers a constant-stimuli plan (4 comparisons x REPETITIONS, default 4) into DIR/trials.csv, then a
+//       questionnaire (part-a: 5 items on 1-7, part-b: 3 items on 1-10) into DIR/responses.csv, through the package's
+//       DiscriminationTaskModel and QuestionnairePanelModel sharing one background SaveQueue, as the headset does.
+//       Prints "ready TRIALS ITEMS" (answers already in the files), then for every acknowledged answer
+//       "ack trial ROW" or "ack item ROW" (the exact CSV row), then "done". With --marker, before printing an
+//       acknowledgement it opens DIR/.ack-N (which does not exist), a mark in an strace log.
+//   bench DIR ANSWERS
+//       times ANSWERS answers written one by one as a session writes them (the whole growing file each time),
+//       synced (AtomicFile.Durable) and unsynced, and prints one line per mode.
+// Exit codes: 0 done, 2 usage, 3 the session could not begin (the reason on standard error).
+namespace Kosmos.PseudoHaptic.DurabilityChild;
+
+static class Program
+{
+    static int Main(string[] args)
+    {
+        // For DurabilityTests' check that its strace check can fail: the same writer without any sync.
+        if (Environment.GetEnvironmentVariable("PSEUDOHAPTIC_UNSYNCED") == "1") AtomicFile.Durable = false;
+        if (args.Length >= 4 && args[0] == "participant")
+            return Participant(args[1], args[2], int.Parse(args[3], CultureInfo.InvariantCulture),
+                args.Length >= 5 && args[4] != "--marker" ? int.Parse(args[4], CultureInfo.InvariantCulture) : 4, args.Contains("--marker"));
+        if (args.Length == 3 && args[0] == "bench") return Bench(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
+        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | bench DIR ANSWERS");
+        return 2;
+    }
+
+    public static DiscriminationSettings Settings(int seed, int repetitions) => new DiscriminationSettings
+    {
+        Procedure = DiscriminationProcedure.ConstantStimuli,
+        StandardKg = 1.0,
+        ComparisonKg = new[] { 0.8, 0.9, 1.1, 1.2 },
+        Repetitions = repetitions,
+        Seed = seed,
+    };
+
+    public static QuestionnaireCatalog Catalog()
+    {
+        var a = new Questionnaire("part-a", "Part A", 1, 7, Enumerable.Range(1, 5).Select(i => new QuestionnaireItem(i, "Item " + i, i == 3)).ToArray());
+        var b = new Questionnaire("part-b", "Part B", 1, 10, Enumerable.Range(1, 3).Select(i => new QuestionnaireItem(i, "Item " + i, false)).ToArray());
+        return new QuestionnaireCatalog(new[] { a, b });
+    }
+
+    /// <summary>A seeded choice for (participant, key): the same answer however often the child is restarted.</summary>
+    static int Choice(int seed, string participant, string key, int n)
+    {
+        unchecked
+        {
+            uint h = 2166136261u ^ (uint)seed;
+            foreach (char c in participant + "|" + key) h = (h ^ c) * 16777619u;
+            return (int)(h % (uint)n);
+        }
+    }
+
+    static int Participant(string dir, string participant, int seed, int repetitions, bool marker)
+    {
+        var stdout = Console.Out;
+        int acks = 0;
+        void Ack(string what)
+        {
+            if (marker)
+                try { using (File.OpenRead(Path.Combine(dir, ".ack-" + (++acks).ToString(CultureInfo.InvariantCulture)))) { } }
+                catch (FileNotFoundException) { }
+            stdout.WriteLine("ack " + what);
+            stdout.Flush();
+        }
+
+        var saver = new SaveQueue(background: true, retrySeconds: 0.05);
+        var task = new DiscriminationTaskModel(0, 0, saver);
+        var panel = new QuestionnairePanelModel(0, 0, saver);
+        if (!task.Begin(true, Settings(seed, repetitions), participant, "", Path.Combine(dir, "trials.csv")))
+        {
+            Console.Error.WriteLine("trials: " + task.Error);
+            return 3;
+        }
+        if (!panel.Begin(Catalog(), participant, Path.Combine(dir, "responses.csv"), null))
+        {
+            Console.Error.WriteLine("responses: " + panel.Error);
+            return 3;
+        }
+        stdout.WriteLine("ready " + task.Session.AnsweredCount.ToString(CultureInfo.InvariantCulture) + " " + panel.Session.AnsweredCount.ToString(CultureInfo.InvariantCulture));
+        stdout.Flush();
+
+        string pending = null;
+        task.Saved += () => Ack("trial " + pending);
+        panel.Answered += s => Ack("item " + pending);
+        while (!task.Session.IsFinished)
+        {
+            task.NoteLift(true, false);
+            task.NoteLift(false, true);
+            Trial trial = task.Session.Current;
+            var side = Choice(seed, participant, "trial " + trial.Index, 2) == 0 ? PairSide.Left : PairSide.Right;
+            if (!task.Answer(side, false) && !task.IsSaving) throw new InvalidOperationException("not taken: " + task.Error);
+            pending = TrialsCsv.FormatRow(task.Session.Current);
+            while (task.IsSaving)
+            {
+                Thread.Sleep(1); // a frame
+                task.Update();
+            }
+        }
+        while (!panel.Session.IsFinished)
+        {
+            Questionnaire q = panel.Session.CurrentQuestionnaire;
+            QuestionnaireItem item = panel.Session.CurrentItem;
+            int value = q.ScaleMin + Choice(seed, participant, q.Id + " " + item.Number, q.ScaleMax - q.ScaleMin + 1);
+            if (!panel.Answer(value) && !panel.IsSaving) throw new InvalidOperationException("not taken: " + panel.Error);
+            pending = ResponsesCsv.FormatRow(new Response(participant, q.Id, item.Number, value));
+            while (panel.IsSaving)
+            {
+                Thread.Sleep(1);
+                panel.Update();
+            }
+        }
+        stdout.WriteLine("done");
+        stdout.Flush();
+        return 0;
+    }
+
+    static int Bench(string dir, int answers)
+    {
+        Directory.CreateDirectory(dir);
+        foreach (bool durable in new[] { true, false })
+        {
+            string path = Path.Combine(dir, durable ? "synced.csv" : "unsynced.csv");
+            if (File.Exists(path)) File.Delete(path);
+            var settings = new DiscriminationSettings
+            {
+                Procedure = DiscriminationProcedure.ConstantStimuli,
+                StandardKg = 1.0,
+                ComparisonKg = Enumerable.Range(1, 10).Select(i => 0.5 + 0.1 * i).ToArray(),
+                Repetitions = (answers + 9) / 10,
+                Seed = 1,
+            };
+            var session = settings.CreateSession("P1", "", path);
+            var each = new double[answers];
+            AtomicFile.Durable = durable;
+            var total = Stopwatch.StartNew();
+            for (int i = 0; i < answers; i++)
+            {
+                session.NoteLift(PairSide.Left);
+                session.NoteLift(PairSide.Right);
+                long start = Stopwatch.GetTimestamp();
+                session.Answer(i % 2 == 0 ? PairSide.Left : PairSide.Right);
+                each[i] = Stopwatch.GetElapsedTime(start).TotalMilliseconds;
+            }
+            total.Stop();
+            AtomicFile.Durable = true;
+            Array.Sort(each);
+            Console.WriteLine(string.Format(CultureInfo.InvariantCulture,
+                "{0}: {1} answers in {2:F2} s; per answer mean {3:F3} ms, median {4:F3} ms, p95 {5:F3} ms, max {6:F3} ms (file at the end {7} bytes; folder synced: {8})",
+                durable ? "synced" : "unsynced", answers, total.Elapsed.TotalSeconds, each.Average(), each[answers / 2],
+                each[(int)(answers * 0.95)], each[answers - 1], new FileInfo(path).Length, durable ? AtomicFile.DirectorySync.ToString() : "no sync"));
+        }
+        return 0;
+    }
+}
