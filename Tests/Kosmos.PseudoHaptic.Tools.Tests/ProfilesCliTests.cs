@@ -94,7 +94,7 @@ public class ProfilesCliTests : CliTestFolder
         string output = Path.Combine(_dir, "out.csv");
         var (code, err, _) = Run("replay", "--trace", Example("lift.csv"), "--out", output, "--mass-kg", "2", "--profile", file);
         Assert.That(code, Is.EqualTo(2));
-        Assert.That(err, Is.EqualTo($"pseudohaptic replay: option --profile: {file}:{line}: {message}").Or.StartWith($"pseudohaptic replay: option --profile: {file}:{line}: {message}"));
+        Assert.That(err, Is.EqualTo($"pseudohaptic replay: option --profile: {file}:{line}: {message}\n").Or.StartWith($"pseudohaptic replay: option --profile: {file}:{line}: {message} "));
         Assert.That(err.TrimEnd('\n'), Does.Not.Contain("\n"));
         Assert.That(File.Exists(output), Is.False, "nothing written");
     }

@@ -130,7 +130,7 @@ namespace Kosmos.PseudoHaptic
                         if (s != null && s.name == settings[i].Name) v[i] = s.value;
             }
             try { return new SolverLimits(v[0], v[1], v[2], v[3], v[4]); }
-            catch (ArgumentException e) { throw new ArgumentException("limits: setting '" + e.ParamName + "': " + FirstLine(e.Message), e.ParamName, e); }
+            catch (ArgumentException e) { throw new EffectSettingException("limits: setting '" + e.ParamName + "': " + FirstLine(e.Message), e.ParamName, e); }
         }
 
         /// <summary><paramref name="limits"/> as setting values.</summary>

@@ -82,11 +82,11 @@ namespace Kosmos.PseudoHaptic
         ArgumentException Named(string setting, ArgumentException e)
         {
             string what = string.IsNullOrEmpty(setting) ? "" : " setting '" + setting + "':";
-            return new ArgumentException("effect '" + Name + "':" + what + " " + FirstLine(e.Message), setting, e);
+            return new EffectSettingException("effect '" + Name + "':" + what + " " + FirstLine(e.Message), setting, e);
         }
 
         /// <summary>An ArgumentException's message without the "(Parameter …)" line .NET appends.</summary>
-        static string FirstLine(string message)
+        internal static string FirstLine(string message)
         {
             int nl = message.IndexOf('\n');
             string line = nl < 0 ? message : message.Substring(0, nl);
@@ -103,5 +103,16 @@ namespace Kosmos.PseudoHaptic
         }
 
         public override string ToString() => Name;
+    }
+
+    /// <summary>An invalid setting of an effect or of the limits: the message names the effect (or "limits") and the setting,
+    /// on one line, as written (no "(Parameter …)" appended); <see cref="ArgumentException.ParamName"/> is the setting.</summary>
+    public sealed class EffectSettingException : ArgumentException
+    {
+        readonly string _message;
+
+        public EffectSettingException(string message, string setting, Exception inner) : base(message, setting, inner) => _message = message;
+
+        public override string Message => _message;
     }
 }
