@@ -166,7 +166,7 @@ namespace Kosmos.PseudoHaptic
                 if (!seen.Add(m.Key)) throw Error(source, m.Value.Line, "limits: setting '" + m.Key + "' is given twice");
                 values[i] = SettingValue(settings[i], m.Value, source, "limits: setting '" + m.Key + "'");
                 try { settings[i].Check(values[i]); }
-                catch (ArgumentException e) { throw Error(source, m.Value.Line, "limits: setting '" + m.Key + "': " + FirstLine(e.Message)); }
+                catch (ArgumentException e) { throw Error(source, m.Value.Line, "limits: setting '" + m.Key + "': " + EffectDescriptor.FirstLine(e.Message)); }
             }
             return new SolverLimits(values[0], values[1], values[2], values[3], values[4]);
         }
@@ -188,14 +188,6 @@ namespace Kosmos.PseudoHaptic
                 foreach (var m in item.Members)
                     if (m.Key == key) return m.Value.Line;
             return fallback;
-        }
-
-        static string FirstLine(string message)
-        {
-            int nl = message.IndexOf('\n');
-            string line = nl < 0 ? message : message.Substring(0, nl);
-            int p = line.IndexOf(" (Parameter '", StringComparison.Ordinal);
-            return (p < 0 ? line : line.Substring(0, p)).TrimEnd('\r');
         }
 
         static string Known()
