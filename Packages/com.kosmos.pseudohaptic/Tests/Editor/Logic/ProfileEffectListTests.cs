@@ -32,7 +32,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(ProfileEffectList.Add(list, "weight-gain"), Is.False);
             Assert.That(list.Count, Is.EqualTo(6));
             Assert.That(list[3].Get("threshold"), Is.EqualTo(0.2), "added at its declared default");
-            var e = Assert.Throws<ArgumentException>(() => ProfileEffectList.Add(list, "heaviness"));
+            var e = Assert.Catch<ArgumentException>(() => ProfileEffectList.Add(list, "heaviness"));
             Assert.That(e.Message, Does.Contain("heaviness").And.Contain("speed-cap"));
         }
 
@@ -90,7 +90,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var built = ProfileEffectList.Build("p", list, SolverLimits.Default);
             Assert.That(built.Find<ScaledOffset>().Factor, Is.EqualTo(1.5));
             list[ProfileEffectList.IndexOf(list, "scaled-offset")].Set("factor", 9);
-            var e = Assert.Throws<ArgumentException>(() => ProfileEffectList.Build("p", list, SolverLimits.Default));
+            var e = Assert.Catch<ArgumentException>(() => ProfileEffectList.Build("p", list, SolverLimits.Default));
             Assert.That(e.Message, Does.StartWith("effect 'scaled-offset': setting 'factor': factor must lie in [0, 4], got 9"));
         }
 
@@ -98,9 +98,9 @@ namespace Kosmos.PseudoHaptic.Tests
         public void AnEntryOfAnUnregisteredEffectOrSettingIsNamed()
         {
             var entry = new ProfileEffect { effect = "gone" };
-            Assert.That(Assert.Throws<ArgumentException>(() => entry.Build()).Message, Does.Contain("'gone' is unknown"));
+            Assert.That(Assert.Catch<ArgumentException>(() => entry.Build()).Message, Does.Contain("'gone' is unknown"));
             var oc = ProfileEffect.Of(OffsetCorrection.Descriptor);
-            Assert.That(Assert.Throws<ArgumentException>(() => oc.Set("treshold", 1)).Message, Does.Contain("offset-correction").And.Contain("treshold"));
+            Assert.That(Assert.Catch<ArgumentException>(() => oc.Set("treshold", 1)).Message, Does.Contain("offset-correction").And.Contain("treshold"));
             // A value the effect no longer declares is ignored; one it lacks takes its default.
             oc.settings.Add(new EffectSettingValue("retired", 3));
             oc.settings.RemoveAll(v => v.name == "band");

@@ -70,7 +70,7 @@ namespace Kosmos.PseudoHaptic.Tests
                         if (!(isMin && setting.MinExclusive))
                             Assert.DoesNotThrow(() => d.Create(s), d.Name + "." + setting.Name + " = " + end);
                         s[i] = outside;
-                        var e = Assert.Throws<ArgumentException>(() => d.Create(s), d.Name + "." + setting.Name + " = " + outside);
+                        var e = Assert.Catch<ArgumentException>(() => d.Create(s), d.Name + "." + setting.Name + " = " + outside);
                         Assert.That(e.Message, Does.StartWith("effect '" + d.Name + "': setting '" + setting.Name + "':"));
                         // The constructor enforces the same range on its own (the declared range is the enforced one).
                         var args = d.DefaultSettings();
@@ -82,7 +82,7 @@ namespace Kosmos.PseudoHaptic.Tests
                     }
                     var nan = d.DefaultSettings();
                     nan[i] = double.NaN;
-                    Assert.Throws<ArgumentException>(() => d.Create(nan), d.Name + "." + setting.Name + " = NaN");
+                    Assert.Catch<ArgumentException>(() => d.Create(nan), d.Name + "." + setting.Name + " = NaN");
                 }
             Assert.That(checkedEnds, Is.GreaterThan(30));
         }
@@ -92,7 +92,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var s = TrackingLossHold.Descriptor.DefaultSettings();
             s[1] = 0.5;
-            var e = Assert.Throws<ArgumentException>(() => s.Build());
+            var e = Assert.Catch<ArgumentException>(() => s.Build());
             Assert.That(e.Message, Does.Contain("tracking-loss-hold").And.Contain("requireHighConfidence"));
             s[1] = 0;
             Assert.That(((TrackingLossHold)s.Build()).RequireHighConfidence, Is.False);
@@ -101,9 +101,9 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void AnUnknownSettingOrEffectNamesItAndTheChoices()
         {
-            var e = Assert.Throws<ArgumentException>(() => OffsetCorrection.Descriptor.DefaultSettings().Set("treshold", 0.1));
+            var e = Assert.Catch<ArgumentException>(() => OffsetCorrection.Descriptor.DefaultSettings().Set("treshold", 0.1));
             Assert.That(e.Message, Does.Contain("offset-correction").And.Contain("treshold").And.Contain("threshold, band"));
-            var u = Assert.Throws<ArgumentException>(() => EffectRegistry.Get("heavyness"));
+            var u = Assert.Catch<ArgumentException>(() => EffectRegistry.Get("heavyness"));
             Assert.That(u.Message, Does.Contain("heavyness").And.Contain("speed-cap"));
         }
 
@@ -111,7 +111,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void ARegisteredNameOrTypeCannotBeTakenByAnotherDescriptor()
         {
             var clash = new EffectDescriptor("speed-cap", EffectStage.Position, typeof(ScaledOffset), "", "", s => new ScaledOffset(1));
-            Assert.Throws<ArgumentException>(() => EffectRegistry.Register(clash));
+            Assert.Catch<ArgumentException>(() => EffectRegistry.Register(clash));
             Assert.DoesNotThrow(() => EffectRegistry.Register(SpeedCap.Descriptor)); // the same descriptor again: nothing
         }
 
