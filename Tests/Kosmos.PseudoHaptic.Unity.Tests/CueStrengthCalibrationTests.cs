@@ -87,5 +87,30 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(weight.Configure(), Is.True, weight.ConfigurationError);
             Assert.That(weight.CueStrength, Is.EqualTo(1.0));
         }
+    
+
+        [Test]
+        public void APaperLiteralPresetRunsThePaperAsPrinted()
+        {
+            var box = new GameObject("Box");
+            box.transform.position = new Vector3(0, 1, 0.5f);
+            box.AddComponent<BoxCollider>();
+            var weight = box.AddComponent<PseudoHapticWeight>();
+            weight.Mass = MassSource.Explicit;
+            weight.ExplicitMassKg = 2;
+            weight.Profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperLiteralName);
+            Assert.That(weight.BeginHold(box.transform.position), Is.True, weight.ConfigurationError);
+            Assert.That(weight.Hold.Literal, Is.Not.Null, "the preset's asset is run by PaperLiteralSolver");
+            var literal = new PaperLiteralSolver(2);
+            literal.BeginHold(1, 1);
+            for (int i = 1; i <= 90; i++)
+            {
+                var hand = new Vector3(0, 1 + 0.3f * i / 90f, 0.5f);
+                float y = weight.Step(hand, true, true, double.NaN, 1 / 90f);
+                double expected = literal.Step(hand.y, true, 1 / 90f);
+                Assert.That(y, Is.EqualTo((float)expected).Within(1e-5f), "frame " + i);
+            }
+            Assert.That(weight.Offset, Is.GreaterThan(0.1), "2 kg lags the hand, as printed");
+        }
     }
 }

@@ -50,7 +50,8 @@ namespace Kosmos.PseudoHaptic
         /// <see cref="PaperLiteralSolver"/> (the accuracy page's baseline), not the package's pipeline: this profile names
         /// the paper's effects (<see cref="WeightGain"/>, <see cref="ExperimentalBlend"/>, <see cref="FloorClamp"/> at 0) and
         /// the 1 s window (<see cref="OneSecondAverage"/>) so that a profile asset, a listing or a <see cref="WeightSolver"/>
-        /// given it shows the same effects; <see cref="IsPaperLiteral"/> tells a host to run the literal solver instead.
+        /// given it shows the same effects; <see cref="IsPaperLiteral"/> tells a host (replay, demo, the Unity component's
+        /// <c>HeldObject</c>) to run the literal solver instead.
         /// </summary>
         public static readonly WeightProfile PaperLiteral = new WeightProfile(PaperLiteralName,
             new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), new FloorClamp() }, SolverLimits.Default, new OneSecondAverage());
@@ -61,8 +62,9 @@ namespace Kosmos.PseudoHaptic
         /// <see cref="PaperLiteralName"/>, which <see cref="PaperLiteralSolver"/> runs.</summary>
         public static IReadOnlyList<string> PipelineNames { get; } = new[] { PaperName, PaperExperimentName, GainName, XyzName };
 
-        /// <summary>Whether <paramref name="profile"/> is <see cref="PaperLiteral"/>, which <see cref="PaperLiteralSolver"/> runs.</summary>
-        public static bool IsPaperLiteral(WeightProfile profile) => ReferenceEquals(profile, PaperLiteral);
+        /// <summary>Whether <paramref name="profile"/> is <see cref="PaperLiteral"/>, or a profile named <c>paper-literal</c> (a
+        /// Unity profile asset set to that preset, with a hand joining it): what <see cref="PaperLiteralSolver"/> runs.</summary>
+        public static bool IsPaperLiteral(WeightProfile profile) => ReferenceEquals(profile, PaperLiteral) || (profile != null && profile.Name == PaperLiteralName);
 
         static WeightProfile BuildXyz()
         {

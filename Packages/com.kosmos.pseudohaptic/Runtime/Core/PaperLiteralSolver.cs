@@ -64,7 +64,8 @@ namespace Kosmos.PseudoHaptic
             double speed = 0;
             if (tracked && HandSample.IsUsableHeight(handY))
             {
-                speed = (handY - _handY) / dt;
+                // A hold begun before the hand was seen (a NaN start) takes its first usable height as where it was.
+                speed = HandSample.IsUsableHeight(_handY) ? (handY - _handY) / dt : 0;
                 _handY = handY;
             }
             _times.Add(_clock);

@@ -98,6 +98,21 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Metres from the object's pivot down to its lowest point (its collider's), for the floor: the agreed solver property.</summary>
         public double BottomBelowPivot { get; set; }
 
+        /// <summary>
+        /// Under a profile named <c>paper-literal</c> (<see cref="NamedProfiles.IsPaperLiteral"/>), the paper as printed runs the
+        /// object's height: <see cref="PaperLiteralSolver"/> on the followed hand's height (the 3D solver still follows the
+        /// hands, and x/z come from the grab); null otherwise.
+        /// </summary>
+        public PaperLiteralSolver Literal => _literal;
+
+        /// <summary>The object's height the hold gives (parent space), m: the literal solver's under paper-literal, else the solver's.</summary>
+        public double ObjectY => _literal != null ? _literal.ObjectY : Solver3D != null ? Solver3D.ObjectY : double.NaN;
+
+        /// <summary>hand − object (parent space), m: the literal solver's under paper-literal, else the y solver's <see cref="WeightSolver.Offset"/>.</summary>
+        public double Offset => _literal != null ? LastHand.Y - _literal.ObjectY : Solver != null ? Solver.Offset : double.NaN;
+
+        PaperLiteralSolver _literal;
+
         /// <summary>Why the last configuration or begin failed; null when it succeeded.</summary>
         public string Error { get; private set; }
 
@@ -114,6 +129,14 @@ namespace Kosmos.PseudoHaptic
                 if (Solver3D == null) Solver3D = new WeightSolver3D(model, used, standardSpeed);
                 else Solver3D.Configure(model, used, standardSpeed);
                 Solver3D.CueStrength = cueStrength;
+                if (!NamedProfiles.IsPaperLiteral(profile)) _literal = null;
+                else if (_literal == null || _literal.MassKg != model.MassKg || _literal.CueStrength != cueStrength)
+                {
+                    var literal = new PaperLiteralSolver(model.MassKg) { CueStrength = cueStrength };
+                    // Mid-hold, the new one continues from where the object is.
+                    if (_active && _literal != null) literal.BeginHold(Solver3D.FollowedY, _literal.ObjectY);
+                    _literal = literal;
+                }
                 _given = profile;
                 _used = used;
                 MovesHorizontal = profile.Has<LateralInertia>();
@@ -165,6 +188,7 @@ namespace Kosmos.PseudoHaptic
                 return false;
             }
             Solver3D.SetGrip(2, false);
+            _literal?.BeginHold(_pose[0].IsUsable ? _pose[0].Y : double.NaN, Solver3D.ObjectY);
             _fresh[0] = _fresh[1] = false;
             _active = true;
             _clock = 0;
@@ -206,8 +230,9 @@ namespace Kosmos.PseudoHaptic
             if (dt > 0 && !double.IsInfinity(dt)) _clock += dt;
             if (any) _handVelocity.Add(HandPoint, _clock);
             UpdateGrabTarget();
+            double y = _literal != null ? _literal.Step(s.FollowedY, any, dt) : s.ObjectY;
             Stepped?.Invoke();
-            return s.ObjectY;
+            return y;
         }
 
         /// <summary>

@@ -10,8 +10,8 @@ namespace Kosmos.PseudoHaptic
     /// names an effect and its values; what the effect is, which settings it has, their units, defaults and ranges, its
     /// descriptor says (<see cref="EffectRegistry"/>), so this asset has no code per effect and a scene's own registered
     /// effect is listed and built like the package's. <see cref="Build"/> turns it into the core's immutable
-    /// <see cref="WeightProfile"/>; the presets are <see cref="NamedProfiles"/> ("paper-literal" runs here through the
-    /// package's solver: an asset has no hand filter). <see cref="ToJson"/> exports the profile file the tool's
+    /// <see cref="WeightProfile"/>; the presets are <see cref="NamedProfiles"/> ("paper-literal": an asset of that name is run by
+    /// <see cref="PaperLiteralSolver"/>, the paper as printed, whatever its list says). <see cref="ToJson"/> exports the profile file the tool's
     /// <c>--profile</c> reads. Assets saved before the list (flat per-effect fields) are converted when loaded
     /// (<see cref="OnAfterDeserialize"/>, <see cref="LegacyProfileFields"/>). Invalid values are reported naming the effect
     /// and the setting.

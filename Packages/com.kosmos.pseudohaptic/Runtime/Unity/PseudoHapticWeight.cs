@@ -73,7 +73,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Whether the user's stored cue strength applies (else 1).</summary>
         public bool UserCueStrength { get => _userCueStrength; set { _userCueStrength = value; _watch.MarkDirty(); } }
         /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
-        public double Offset => IsHeld ? Solver.Offset : 0;
+        public double Offset => IsHeld ? Hold.Offset : 0;
         public HandSample LastHand => Hold.LastHand;
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
         /// <summary>The point the solver follows, world space (its height converted from the parent's).</summary>
@@ -184,7 +184,7 @@ namespace Kosmos.PseudoHaptic
                 _heldRotation = transform.rotation;
             }
             bool began = Hold.Begin(hand, _frame.In(handWorld).ToDouble(), poseTime, _heldPosition.ToDouble(), transform.localPosition.y);
-            if (began && Hold.HandCount == 1) SetHeld(_heldPosition, Solver.ObjectY); // the floor may have lifted the start
+            if (began && Hold.HandCount == 1) SetHeld(_heldPosition, Hold.ObjectY); // the floor may have lifted the start
             return began;
         }
 

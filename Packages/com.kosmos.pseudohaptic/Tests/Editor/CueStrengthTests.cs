@@ -93,7 +93,8 @@ namespace Kosmos.PseudoHaptic.Tests
                 if (i == frames.Length / 2) solver.CueStrength = 3;
                 double hand = Math.Abs(frames[i].HandY - frames[i - 1].HandY);
                 double next = solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
-                Assert.That(Math.Abs(next - y), Is.LessThanOrEqualTo(hand + 0.3 * (frames[i].Time - frames[i - 1].Time) + 1e-9), $"frame {i}: at most the hand's step plus the glide");
+                // P8's bound: no step beyond max(G, 1) × the hand's own plus 1 cm (G < 1 for 2 kg at either strength).
+                Assert.That(Math.Abs(next - y), Is.LessThanOrEqualTo(hand + 0.01), $"frame {i}: no jump");
                 y = next;
             }
         }
