@@ -98,6 +98,9 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new WeightSolver(m, NamedProfiles.Paper, double.NaN)).ParamName, Is.EqualTo("standardSpeed"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SolverLimits(maxGain: 0.5)).ParamName, Is.EqualTo("maxGain"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SolverLimits(glideSpeed: double.NaN)).ParamName, Is.EqualTo("glideSpeed"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SolverLimits(workspaceRadius: 0.5)).ParamName, Is.EqualTo("workspaceRadius"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SolverLimits(workspaceRadius: double.NaN)).ParamName, Is.EqualTo("workspaceRadius"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SolverLimits(workspaceRadius: double.PositiveInfinity)).ParamName, Is.EqualTo("workspaceRadius"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new OffsetCorrection(threshold: -0.2)).ParamName, Is.EqualTo("threshold"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SpeedCap(headroom: 0.5)).ParamName, Is.EqualTo("headroom"));
             Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new MotionDeadband(lagTime: double.NaN)).ParamName, Is.EqualTo("lagTime"));

@@ -96,6 +96,38 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(excess, Is.LessThanOrEqualTo(0), $"1 g, two hands back after 0.8 s: frame {at}, object {r.Y[Math.Max(at - 1, 0)]:F4} -> {r.Y[Math.Max(at, 0)]:F4} m");
         }
 
+        /// <summary>The workspace is a setting (<see cref="SolverLimits.WorkspaceRadius"/>): after a 2 s loss the hand is seen
+        /// 3 m above where the hold began; a hold whose workspace is 2 m treats it as not tracked (the object stays), one whose
+        /// workspace is 5 m follows it, in y and in 3D.</summary>
+        [Test]
+        public void TheWorkspaceRadiusIsASetting([Values(2.0, 5.0)] double radius, [Values("paper", "xyz")] string name)
+        {
+            var profile = NamedProfiles.Get(name).WithLimits(new SolverLimits(workspaceRadius: radius));
+            var y = new WeightSolver(WeightModel.FromMass(1), profile);
+            var s3 = new WeightSolver3D(WeightModel.FromMass(1), profile);
+            y.BeginHold(1.0, 1.0, 0);
+            s3.BeginHold(new HandPose(0, 1.0, 0, true, true, 0), 0, 1.0, 0);
+            double t = 0;
+            for (int i = 0; i < 180; i++) { t += 1 / 90.0; y.Step(HandSample.Lost, 1 / 90.0); s3.Step(HandPose.Lost, 1 / 90.0); }
+            for (int i = 0; i < 90; i++)
+            {
+                t += 1 / 90.0;
+                double poseT = Math.Floor(t * 30) / 30;
+                y.Step(new HandSample(4.0, true, true, poseT), 1 / 90.0);
+                s3.Step(new HandPose(0, 4.0, 0, true, true, poseT), 1 / 90.0);
+            }
+            if (radius < 3)
+            {
+                Assert.That(y.ObjectY, Is.EqualTo(1.0), "y: outside the workspace, not tracked");
+                Assert.That(s3.ObjectY, Is.EqualTo(1.0), "3D: outside the workspace, not tracked");
+            }
+            else
+            {
+                Assert.That(y.ObjectY, Is.GreaterThan(2.0), "y: within the workspace, followed");
+                Assert.That(s3.ObjectY, Is.GreaterThan(2.0), "3D: within the workspace, followed");
+            }
+        }
+
         /// <summary>Found by fuzzing: the clock jumps to t = 1e308 with a pose reported as tracked at 99,999.99 m. A finite
         /// pose far outside any room is not motion: nothing follows it, whatever the mass or profile.</summary>
         [Test]
