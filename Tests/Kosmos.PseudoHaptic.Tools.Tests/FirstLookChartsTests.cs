@@ -30,6 +30,22 @@ public class FirstLookChartsTests : CliTestFolder
     static ChartInk.Drawn Titled(List<ChartInk.Drawn> drawn, string start)
         => drawn.First(d => d.Title().StartsWith(start, StringComparison.Ordinal));
 
+    [Test]
+    public void The_ink_check_fails_for_a_line_under_another_and_passes_for_lines_apart()
+    {
+        // It can fail: a line drawn exactly under another (the golf ball under the hand) is not seen apart from it.
+        var xs = Enumerable.Range(0, 50).Select(i => i / 10.0).ToArray();
+        var plot = Charts.Create("two lines", "t (s)", "y (m)");
+        Charts.Series(plot, xs, xs.Select(Math.Sin).ToArray(), "under", 0);
+        Charts.Hand(plot, xs, xs.Select(Math.Sin).ToArray(), "over");
+        var drawn = ChartInk.Catch(() => Charts.Png(plot, 600, 400)).Single();
+        Assert.Throws<AssertionException>(() => ChartInk.AssertEverySeriesSeen(drawn));
+        var apart = Charts.Create("two lines", "t (s)", "y (m)");
+        Charts.Series(apart, xs, xs.Select(Math.Sin).ToArray(), "one", 0);
+        Charts.Hand(apart, xs, xs.Select(x => Math.Sin(x) + 0.5).ToArray(), "other");
+        ChartInk.AssertEverySeriesSeen(ChartInk.Catch(() => Charts.Png(apart, 600, 400)).Single());
+    }
+
     // --- demo -----------------------------------------------------------------------------------------------
 
     [Test]
