@@ -78,7 +78,7 @@ namespace Kosmos.PseudoHaptic
             }
         }
 
-        /// <summary>The folder this session writes into; null until the first write.</summary>
+        /// <summary>The folder this session writes into; null until its first hold ends (or is flushed).</summary>
         public string SessionFolder => _sessionFolder;
         /// <summary>Holds begun in this session.</summary>
         public int HoldCount { get; private set; }
