@@ -55,8 +55,8 @@ public class CommandLineTests : CliTestFolder
         Assert.That(stderr, Does.Contain("replay"));
     }
 
-    [TestCase(new[] { "frob" }, "pseudohaptic: unknown command 'frob'; expected demo, replay, tune, personalization, accuracy, score, report, psychometric, compare, completion, unity-package")]
-    [TestCase(new[] { "--versoin" }, "pseudohaptic: unknown option '--versoin'; expected --help, --version or a command: demo, replay, tune, personalization, accuracy, score, report, psychometric, compare, completion, unity-package")]
+    [TestCase(new[] { "frob" }, "pseudohaptic: unknown command 'frob'; expected demo, replay, profiles, tune, personalization, accuracy, score, report, psychometric, compare, completion, unity-package")]
+    [TestCase(new[] { "--versoin" }, "pseudohaptic: unknown option '--versoin'; expected --help, --version or a command: demo, replay, profiles, tune, personalization, accuracy, score, report, psychometric, compare, completion, unity-package")]
     [TestCase(new[] { "demo", "--bogus" }, "pseudohaptic demo: unknown option '--bogus'; expected --out, --trace, --user, --svg")]
     [TestCase(new[] { "accuracy", "--bogus", "1" }, "pseudohaptic accuracy: unknown option '--bogus'; expected --trace, --lifts, --mass-kg, --standard-speed, --mocap, --long-minutes, --csv, --costs, --markdown, --chart, --svg")]
     [TestCase(new[] { "replay", "--trace", "a.csv", "--out", "b.csv" }, "pseudohaptic replay: option --mass-kg is required")]

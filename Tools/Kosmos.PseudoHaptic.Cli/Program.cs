@@ -27,6 +27,7 @@ namespace Kosmos.PseudoHaptic.Cli
         {
             Commands.DemoCommand.Define(),
             Commands.ReplayCommand.Define(),
+            Commands.ProfilesCommand.Define(),
             Commands.TuneCommand.Define(),
             Commands.PersonalizationCommand.Define(),
             Commands.AccuracyCommand.Define(),

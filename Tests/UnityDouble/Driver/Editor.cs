@@ -39,6 +39,29 @@ namespace UnityDouble
         public static System.Collections.Generic.IReadOnlyCollection<string> SavedScenes => UnityEditor.SceneManagement.EditorSceneManager.Saved.Keys;
         public static System.Collections.Generic.IReadOnlyList<string> InspectorShown => UnityEditor.EditorGUILayout.Shown;
 
+        /// <summary>The items of the last context menu shown (GenericMenu.ShowAsContext): text, tooltip, enabled.</summary>
+        public static System.Collections.Generic.IReadOnlyList<(string Text, string Tooltip, bool Enabled)> MenuShown
+        {
+            get
+            {
+                var items = new System.Collections.Generic.List<(string, string, bool)>();
+                if (UnityEditor.GenericMenu.Shown != null)
+                    foreach (var i in UnityEditor.GenericMenu.Shown.Items) items.Add((i.Text, i.Tooltip, i.Enabled));
+                return items;
+            }
+        }
+
+        /// <summary>The "user" picks the enabled item of the last menu with this text: its function runs.</summary>
+        public static void ChooseMenuItem(string text)
+        {
+            foreach (var i in UnityEditor.GenericMenu.Shown.Items)
+                if (i.Text == text && i.Enabled) { i.Function(); return; }
+            throw new ArgumentException("no enabled menu item '" + text + "'");
+        }
+
+        /// <summary>The next EditorGUILayout field drawn with this label returns <paramref name="value"/> (the user typed it), once.</summary>
+        public static void Type(string label, double value) => UnityEditor.EditorGUILayout.Typed[label] = value;
+
         /// <summary>Registers a prefab asset at <paramref name="path"/>: PrefabUtility.InstantiatePrefab of it builds an instance with <paramref name="make"/>.</summary>
         public static void Prefab(string path, Func<GameObject> make)
         {

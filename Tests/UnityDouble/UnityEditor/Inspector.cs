@@ -4,7 +4,7 @@
 //   Editor/Mono/EditorGUILayout.cs, Editor/Mono/EditorGUI.cs (DrawRect), Editor/Mono/GUI/EditorStyles.cs,
 //   Editor/Mono/EditorGUIUtility.bindings.cs (MessageType), Editor/Mono/Handles.cs, Editor/Mono/DrawGizmo.cs,
 //   Editor/Mono/Undo/Undo.bindings.cs, Editor/Mono/EditorUtility.bindings.cs, Editor/Mono/MenuItem.cs,
-//   Editor/Mono/SerializedObject.bindings.cs, Editor/Mono/SerializedProperty.bindings.cs
+//   Editor/Mono/SerializedObject.bindings.cs, Editor/Mono/SerializedProperty.bindings.cs, Editor/Mono/GUI/GenericMenu.cs
 using System;
 using UnityEngine;
 using Object = UnityEngine.Object;
@@ -46,10 +46,48 @@ namespace UnityEditor
         public static Rect GetControlRect(bool hasLabel, float height, params GUILayoutOption[] options) => new Rect(0, 0, 300, height);
         public static Rect BeginHorizontal(params GUILayoutOption[] options) => new Rect(0, 0, 300, 20);
         public static void EndHorizontal() { }
+
+        /// <summary>The foldout as it was (a driver does not click it): recorded as "Foldout: label".</summary>
+        public static bool Foldout(bool foldout, string content, bool toggleOnLabelClick)
+        {
+            Shown.Add("Foldout: " + content);
+            return foldout;
+        }
+
+        /// <summary>The value as it was, unless a driver typed one for this label (UnityDouble.Editor.Type); recorded "label: value".</summary>
+        public static double DoubleField(string label, double value, params GUILayoutOption[] options)
+        {
+            if (Typed.TryGetValue(label, out double typed)) { Typed.Remove(label); value = typed; }
+            Shown.Add(label + ": " + value.ToString("R", System.Globalization.CultureInfo.InvariantCulture));
+            return value;
+        }
+
+        public static bool Toggle(string label, bool value, params GUILayoutOption[] options)
+        {
+            if (Typed.TryGetValue(label, out double typed)) { Typed.Remove(label); value = typed != 0; }
+            Shown.Add(label + ": " + (value ? "on" : "off"));
+            return value;
+        }
+
+        public static string TextField(string label, string text, params GUILayoutOption[] options)
+        {
+            Shown.Add(label + ": " + text);
+            return text;
+        }
+
+        public static System.Enum EnumPopup(string label, System.Enum selected, params GUILayoutOption[] options)
+        {
+            Shown.Add(label + ": " + selected);
+            return selected;
+        }
+
+        internal static readonly System.Collections.Generic.Dictionary<string, double> Typed = new System.Collections.Generic.Dictionary<string, double>();
     }
 
     public sealed class EditorGUI
     {
+        public static int indentLevel { get; set; }
+
         public static void DrawRect(Rect rect, Color color) => Rects++;
         internal static int Rects;
     }
@@ -94,6 +132,22 @@ namespace UnityEditor
     {
         public DrawGizmo(GizmoType gizmo) => drawOptions = gizmo;
         public GizmoType drawOptions;
+    }
+
+    /// <summary>A context menu: the double records what was shown (UnityDouble.Editor.MenuShown) and a driver chooses an item
+    /// (UnityDouble.Editor.ChooseMenuItem), which calls its function as Unity does when the user picks it.</summary>
+    public sealed class GenericMenu
+    {
+        public delegate void MenuFunction();
+
+        internal readonly System.Collections.Generic.List<(string Text, string Tooltip, bool Enabled, bool On, MenuFunction Function)> Items =
+            new System.Collections.Generic.List<(string, string, bool, bool, MenuFunction)>();
+
+        public void AddItem(GUIContent content, bool on, MenuFunction func) => Items.Add((content.text, content.tooltip, true, on, func));
+        public void AddDisabledItem(GUIContent content) => Items.Add((content.text, content.tooltip, false, false, null));
+        public void ShowAsContext() => Shown = this;
+
+        internal static GenericMenu Shown;
     }
 
     public partial class Undo

@@ -1,5 +1,5 @@
 // Test double (attributes carry their arguments). Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
-//   Runtime/Export/Serialization/Serialization.cs (SerializeField), Runtime/Export/PropertyDrawer/PropertyAttribute.cs
+//   Runtime/Export/Serialization/Serialization.cs (SerializeField, SerializeReference, ISerializationCallbackReceiver), Runtime/Export/PropertyDrawer/PropertyAttribute.cs
 //   (PropertyAttribute, TooltipAttribute, HeaderAttribute), Runtime/Export/Scripting/Attributes.cs (AddComponentMenu,
 //   DisallowMultipleComponent, CreateAssetMenuAttribute, ContextMenu, HideInInspector), Runtime/Export/Scripting/RuntimeInitializeOnLoadAttribute.cs,
 //   Runtime/Export/Application/BeforeRenderHelper.cs (BeforeRenderOrderAttribute)
@@ -10,6 +10,22 @@ namespace UnityEngine
 {
     public sealed class SerializeField : Attribute
     {
+    }
+
+    /// <summary>Serializes a field as a reference (polymorphic plain C# classes, null). The double's serializer treats it as a
+    /// field to write (JsonUtility ignores it in Unity; nothing here reads it).</summary>
+    [AttributeUsage(AttributeTargets.Field)]
+    public sealed class SerializeReference : Attribute
+    {
+        public SerializeReference() { }
+    }
+
+    /// <summary>Unity calls OnBeforeSerialize before it writes the object and OnAfterDeserialize after it has read it (the
+    /// double calls them where a driver says an asset is saved or loaded: UnityDouble.Assets).</summary>
+    public interface ISerializationCallbackReceiver
+    {
+        void OnBeforeSerialize();
+        void OnAfterDeserialize();
     }
 
     [AttributeUsage(AttributeTargets.Field, Inherited = true, AllowMultiple = false)]

@@ -1,7 +1,7 @@
 // Test double: no GUI is drawn; the event is a Repaint unless a driver says otherwise. Transcribed from Unity-Technologies/UnityCsReference, branch 2022.3:
 //   Modules/IMGUI/Event.cs + Event.bindings.cs (Event), Modules/IMGUI/EventEnums.cs (EventType),
 //   Modules/IMGUI/GUI.cs (GUI), Modules/IMGUI/GUIStyle.cs (GUIStyle), Modules/IMGUI/GUILayout.cs (GUILayout),
-//   Modules/IMGUI/GUILayoutOption.cs (GUILayoutOption)
+//   Modules/IMGUI/GUILayoutOption.cs (GUILayoutOption), Modules/IMGUI/GUIContent.cs (GUIContent)
 namespace UnityEngine
 {
     public sealed class Event
@@ -44,6 +44,18 @@ namespace UnityEngine
         }
 
         internal static string Clicked;
+    }
+
+    public class GUIContent
+    {
+        public GUIContent(string text, string tooltip)
+        {
+            this.text = text;
+            this.tooltip = tooltip;
+        }
+
+        public string text { get; set; }
+        public string tooltip { get; set; }
     }
 
     public sealed class GUILayoutOption

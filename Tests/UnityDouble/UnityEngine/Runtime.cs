@@ -203,6 +203,17 @@ namespace UnityEngine
 
         public static T FromJson<T>(string json) => (T)FromJson(json, typeof(T));
 
+        /// <summary>Overwrites the serialized fields the JSON names (others keep their values), then, as Unity does for an
+        /// object that implements it, calls ISerializationCallbackReceiver.OnAfterDeserialize. Works on a ScriptableObject.</summary>
+        public static void FromJsonOverwrite(string json, object objectToOverwrite)
+        {
+            if (objectToOverwrite == null) throw new ArgumentNullException(nameof(objectToOverwrite));
+            if (string.IsNullOrEmpty(json)) return;
+            if (!(Json.Parse(json) is Dictionary<string, object> fields)) throw new ArgumentException("JSON must represent an object type.");
+            Json.Fill(objectToOverwrite, fields);
+            if (objectToOverwrite is ISerializationCallbackReceiver receiver) receiver.OnAfterDeserialize();
+        }
+
         public static object FromJson(string json, Type type)
         {
             if (string.IsNullOrEmpty(json)) return null;

@@ -6,7 +6,7 @@ using Kosmos.PseudoHaptic.Simulation;
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
-/// <c>pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile P]</c>:
+/// <c>pseudohaptic replay --trace IN.csv --out OUT.csv --mass-kg M [--standard-speed V] [--profile NAME|FILE.json]</c>:
 /// runs a recorded trace through the solver, one output row per input row. The contract is in README.md
 /// and ALGORITHM.md; other programs depend on it.
 /// </summary>
@@ -25,7 +25,7 @@ public static class ReplayCommand
         CliCommand.Value("--out", "OUT.csv", "where the replay goes ('-': standard output); replaced whole or not at all", required: true),
         CliCommand.Value("--mass-kg", "M", "the held object's mass, kg (> 0)", required: true),
         CliCommand.Value("--standard-speed", "V", $"the user's calibrated standard lifting speed, m/s, {WeightSolver.MinStandardSpeed}–{WeightSolver.MaxStandardSpeed} (default {WeightSolver.DefaultStandardSpeed})"),
-        CliCommand.Choice("--profile", $"which effects act (default {NamedProfiles.PaperName})", NamedProfiles.Names.ToArray()),
+        ProfileOption.Define($"which effects act (default {NamedProfiles.PaperName})"),
         CliCommand.Value("--user", "USER.json", "the user's file from 'pseudohaptic tune': its cueStrength s scales the cue (gain G^s; default 1)"),
         CliCommand.Value("--grab-offset", "D", "the object starts D metres below the first usable hand (default 0; negative: above)"),
         CliCommand.Value("--break-away", "D", "let go when the hand pulls D metres too far, two poses in a row: under the offset correction (paper, xyz) D is how far the hand pulls beyond what the weight allows (the strain: the lag of an object moving at most the user's capped speed), without it (paper-experiment, gain) the hand-to-object distance beyond the grab's (default: never)"));
@@ -38,7 +38,7 @@ public static class ReplayCommand
         string output = o.Require("--out");
         var solver = CreateReplayed(o, out bool breakAway);
         double grabOffset = GrabOffset(o);
-        var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace), new NamedPath("--user", o.Get("--user")));
+        var target = OutputFile.Check("--out", output, new NamedPath("--trace", trace), new NamedPath("--user", o.Get("--user")), ProfileOption.AsInput(o));
 
         using var file = TraceCsvReader.OpenText(trace);
         using var reader = new TraceCsvReader(file, trace);
@@ -65,9 +65,9 @@ public static class ReplayCommand
     /// <summary>What replay steps: <see cref="PaperLiteralSolver"/> under --profile paper-literal, else the 3D solver.</summary>
     public static IReplayedObject CreateReplayed(Options o, out bool breakAway)
     {
-        if (o.Get("--profile") == NamedProfiles.PaperLiteralName)
+        var (model, profile, _) = Parse(o);
+        if (NamedProfiles.IsPaperLiteral(profile))
         {
-            var (model, _, _) = Parse(o);
             breakAway = false;
             if (o.Get("--break-away") != null)
                 throw new CliException("option --break-away: the paper-literal profile has no strain and no hold to break (the paper as printed); use paper, paper-experiment, gain or xyz");
@@ -122,11 +122,7 @@ public static class ReplayCommand
         double speed = o.Number("--standard-speed") ?? WeightSolver.DefaultStandardSpeed;
         if (!(speed >= WeightSolver.MinStandardSpeed && speed <= WeightSolver.MaxStandardSpeed))
             throw new CliException($"option --standard-speed: must lie in [{WeightSolver.MinStandardSpeed}, {WeightSolver.MaxStandardSpeed}] m/s, got {NumberText.Format(speed)}");
-        string name = o.Get("--profile") ?? NamedProfiles.PaperName;
-        WeightProfile profile;
-        try { profile = NamedProfiles.Get(name); }
-        catch (ArgumentException) { throw new CliException($"option --profile: unknown profile '{name}'; expected {string.Join(", ", NamedProfiles.Names)}"); }
-        return (WeightModel.FromMass(mass), profile, speed);
+        return (WeightModel.FromMass(mass), ProfileOption.Resolve(o.Get(ProfileOption.Name)), speed);
     }
 
     /// <summary>Streams rows through the solver. Rows before the first usable hand wait until the starting

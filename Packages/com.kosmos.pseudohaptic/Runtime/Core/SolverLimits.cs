@@ -6,6 +6,17 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class SolverLimits
     {
+        /// <summary>The limits' settings, as profile files and the docs name them (declared before <see cref="Default"/>, which
+        /// they validate).</summary>
+        public static readonly System.Collections.Generic.IReadOnlyList<SettingDescriptor> Settings = new[]
+        {
+            SettingDescriptor.Number<SolverLimits>("maxGain", "", 3.0, 1.0, 100.0, "largest gain on the hand's motion (P3)", l => l.MaxGain),
+            SettingDescriptor.Positive<SolverLimits>("maxHandSpeed", "m/s", 10.0, "a pose that implies a faster hand is not followed", l => l.MaxHandSpeed),
+            SettingDescriptor.Positive<SolverLimits>("maxFrameTime", "s", 0.025, "a frame counts for at most this long in anything done with time", l => l.MaxFrameTime),
+            SettingDescriptor.Positive<SolverLimits>("glideSpeed", "m/s", 0.3, "how fast an offset the hand's motion did not make glides away", l => l.GlideSpeed),
+            SettingDescriptor.Number<SolverLimits>("workspaceRadius", "m", DefaultWorkspaceRadius, MinWorkspaceRadius, WeightSolver.MaxCoordinate, "a pose farther than this from where the hold began is not tracked", l => l.WorkspaceRadius),
+        };
+
         public static readonly SolverLimits Default = new SolverLimits();
 
         /// <summary>Largest gain on the hand's motion. Eq. 4 alone would move a 1 g object 45× as far as the hand.</summary>
@@ -32,11 +43,11 @@ namespace Kosmos.PseudoHaptic
         public SolverLimits(double maxGain = 3.0, double maxHandSpeed = 10.0, double maxFrameTime = 0.025, double glideSpeed = 0.3,
             double workspaceRadius = DefaultWorkspaceRadius)
         {
-            MaxGain = ConfigurationGuard.InRange(maxGain, 1.0, 100.0, nameof(maxGain));
-            MaxHandSpeed = ConfigurationGuard.Positive(maxHandSpeed, nameof(maxHandSpeed));
-            MaxFrameTime = ConfigurationGuard.Positive(maxFrameTime, nameof(maxFrameTime));
-            GlideSpeed = ConfigurationGuard.Positive(glideSpeed, nameof(glideSpeed));
-            WorkspaceRadius = ConfigurationGuard.InRange(workspaceRadius, MinWorkspaceRadius, WeightSolver.MaxCoordinate, nameof(workspaceRadius));
+            MaxGain = Settings[0].Check(maxGain);
+            MaxHandSpeed = Settings[1].Check(maxHandSpeed);
+            MaxFrameTime = Settings[2].Check(maxFrameTime);
+            GlideSpeed = Settings[3].Check(glideSpeed);
+            WorkspaceRadius = Settings[4].Check(workspaceRadius);
         }
 
         /// <summary>The default <see cref="WorkspaceRadius"/>, m: a 7 m × 7 m play area corner to corner (9.9 m) plus an arm's

@@ -3,7 +3,10 @@ namespace Kosmos.PseudoHaptic
     /// <summary>
     /// One effect a scene can switch on. Effects are immutable settings objects, shared by every hold that
     /// uses the profile; what a hold remembers lives in <see cref="HoldState"/>. Settings are validated in
-    /// the constructor. An effect that is not in the profile is never called: it costs nothing.
+    /// the constructor. An effect that is not in the profile is never called: it costs nothing. Each effect declares
+    /// what it is once, in its own file (a static <see cref="EffectDescriptor"/>: name, stage, summary, settings with units,
+    /// defaults and ranges, and a factory), which the Unity profile list, profile files (<see cref="ProfileJson"/>), the
+    /// tool and the docs read; <see cref="EffectRegistry"/> lists them (register an effect of your own there).
     /// </summary>
     public abstract class WeightEffect
     {

@@ -18,15 +18,22 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class BreakAway : WeightEffect
     {
-        public override string Name => "break-away";
-        public override EffectStage Stage => EffectStage.Hold;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("break-away", EffectStage.Hold, typeof(BreakAway),
+            "issue 10 (in no named profile)",
+            "in WeightSolver3D, the hold ends by itself when the hand pulls too far (the strain under the offset correction, else the distance), two poses in a row",
+            s => new BreakAway(s[0]),
+            SettingDescriptor.Positive<BreakAway>("distance", "m", 0.25, "how far the hand must pull for the hold to end", e => e.Distance));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         /// <summary>How far the hand must pull for the hold to end, m (see the class for what it measures).</summary>
         public double Distance { get; }
 
         public BreakAway(double distance)
         {
-            Distance = ConfigurationGuard.Positive(distance, nameof(distance));
+            Distance = Descriptor.Settings[0].Check(distance);
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }

@@ -8,8 +8,14 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class ExperimentalBlend : WeightEffect
     {
-        public override string Name => "experimental-blend";
-        public override EffectStage Stage => EffectStage.Gain;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("experimental-blend", EffectStage.Gain, typeof(ExperimentalBlend),
+            "Eq. 5–6",
+            "G averages in the experimental lift speed of the mass relative to the golf ball, v_exp(m)/v_exp(m_std)",
+            s => new ExperimentalBlend());
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
     }
 }

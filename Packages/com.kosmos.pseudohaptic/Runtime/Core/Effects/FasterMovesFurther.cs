@@ -20,8 +20,19 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class FasterMovesFurther : WeightEffect
     {
-        public override string Name => "faster-moves-further";
-        public override EffectStage Stage => EffectStage.Lift;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("faster-moves-further", EffectStage.Lift, typeof(FasterMovesFurther),
+            "§3.1",
+            "a heavy object's gain G^r follows the lift's pace relative to the user's standard speed: a faster lift moves it further",
+            s => new FasterMovesFurther(s[0], s[1], s[2], s[3], s[4]),
+            SettingDescriptor.Number<FasterMovesFurther>("fastExponent", "", 0.5, 0.01, 1, "the exponent r for a hand much faster than v_std", e => e.FastExponent),
+            SettingDescriptor.Number<FasterMovesFurther>("slowExponent", "", 1.5, 1, 10, "the exponent r for a hand much slower than v_std, and at a lift's start", e => e.SlowExponent),
+            SettingDescriptor.Number<FasterMovesFurther>("restBand", "m", 0.005, 0, 0.05, "how far above the base the steady hand is still at rest", e => e.RestBand),
+            SettingDescriptor.Number<FasterMovesFurther>("pauseTime", "s", 0.16, 0.01, 5, "a rise that has not gone higher for this long has paused: its pace is settled", e => e.PauseTime),
+            SettingDescriptor.Number<FasterMovesFurther>("sensitivity", "", 0.06, 0, 2, "how strongly the exponent follows the pace: r = x^(−sensitivity)", e => e.Sensitivity));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         /// <summary>The pace changes only on a new steady pose, and the gain is a function of the pace.</summary>
         protected internal override bool IsFunctionOfHand => true;
 
@@ -51,11 +62,11 @@ namespace Kosmos.PseudoHaptic
         public FasterMovesFurther(double fastExponent = 0.5, double slowExponent = 1.5, double restBand = 0.005, double pauseTime = 0.16,
             double sensitivity = 0.06)
         {
-            Sensitivity = ConfigurationGuard.InRange(sensitivity, 0, 2, nameof(sensitivity));
-            FastExponent = ConfigurationGuard.InRange(fastExponent, 0.01, 1, nameof(fastExponent));
-            SlowExponent = ConfigurationGuard.InRange(slowExponent, 1, 10, nameof(slowExponent));
-            RestBand = ConfigurationGuard.InRange(restBand, 0, 0.05, nameof(restBand));
-            PauseTime = ConfigurationGuard.InRange(pauseTime, 0.01, 5, nameof(pauseTime));
+            Sensitivity = Descriptor.Settings[4].Check(sensitivity);
+            FastExponent = Descriptor.Settings[0].Check(fastExponent);
+            SlowExponent = Descriptor.Settings[1].Check(slowExponent);
+            RestBand = Descriptor.Settings[2].Check(restBand);
+            PauseTime = Descriptor.Settings[3].Check(pauseTime);
         }
 
         /// <summary>The exponent r at lift pace <paramref name="pace"/> for a user of standard speed <paramref name="standardSpeed"/>;

@@ -9,15 +9,22 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class FloorClamp : WeightEffect
     {
-        public override string Name => "floor-clamp";
-        public override EffectStage Stage => EffectStage.Position;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("floor-clamp", EffectStage.Position, typeof(FloorClamp),
+            "§3.1, confinement condition 2",
+            "the object's bottom stays on or above the floor (its local y never below it)",
+            s => new FloorClamp(s[0]),
+            SettingDescriptor.Number<FloorClamp>("floor", "m", 0, double.NegativeInfinity, double.PositiveInfinity, "lowest local height", e => e.Floor));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         /// <summary>Lowest local height, m.</summary>
         public double Floor { get; }
 
         public FloorClamp(double floor = 0)
         {
-            Floor = ConfigurationGuard.Finite(floor, nameof(floor));
+            Floor = Descriptor.Settings[0].Check(floor);
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)

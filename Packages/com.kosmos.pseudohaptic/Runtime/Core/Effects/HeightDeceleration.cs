@@ -17,8 +17,16 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class HeightDeceleration : WeightEffect
     {
-        public override string Name => "height-deceleration";
-        public override EffectStage Stage => EffectStage.Lift;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("height-deceleration", EffectStage.Lift, typeof(HeightDeceleration),
+            "§5 (\"the height\")",
+            "an object heavier than the standard rises more slowly the higher the hand has lifted it, never below a floor fraction; a lowering retraces it",
+            s => new HeightDeceleration(s[0], s[1]),
+            SettingDescriptor.Number<HeightDeceleration>("height", "m", 0.125, 0.01, 100, "at this lift a very heavy object moves at the midpoint between full speed and the floor fraction", e => e.Height),
+            SettingDescriptor.Number<HeightDeceleration>("minFraction", "", 0.5, 0.01, 1, "the floor fraction: the motion is never multiplied by less", e => e.MinFraction));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         /// <summary>F is a function of the lift.</summary>
         protected internal override bool IsFunctionOfHand => true;
 
@@ -31,8 +39,8 @@ namespace Kosmos.PseudoHaptic
 
         public HeightDeceleration(double height = 0.125, double minFraction = 0.5)
         {
-            Height = ConfigurationGuard.InRange(height, 0.01, 100, nameof(height));
-            MinFraction = ConfigurationGuard.InRange(minFraction, 0.01, 1, nameof(minFraction));
+            Height = Descriptor.Settings[0].Check(height);
+            MinFraction = Descriptor.Settings[1].Check(minFraction);
         }
 
         /// <summary>w: how strongly an object of gain <paramref name="gain"/> slows with height, (1 − min(G, 1))².</summary>

@@ -19,8 +19,16 @@ namespace Kosmos.PseudoHaptic
         /// <summary>A frame counts for at most this long in the decay, s (one 30 Hz frame: a hitch gives back no more of the lag than the slowest frame clock would).</summary>
         public const double MaxDecayStep = 1.0 / 30;
 
-        public override string Name => "lateral-inertia";
-        public override EffectStage Stage => EffectStage.Hold;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("lateral-inertia", EffectStage.Hold, typeof(LateralInertia),
+            "§5 (\"the xyz direction\"), issue 10",
+            "in WeightSolver3D, an object heavier than the standard trails the hand's x/z motion, never more than the bound",
+            s => new LateralInertia(s[0], s[1]),
+            SettingDescriptor.Number<LateralInertia>("timeConstant", "s", 0.3, 0, 10, "the trailing's time constant for a very heavy object (scaled by 1 − G)", e => e.TimeConstant),
+            SettingDescriptor.Number<LateralInertia>("maxOffset", "m", 0.10, 0.001, 10, "the largest horizontal lag", e => e.MaxOffset));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         /// <summary>τ of a very heavy object (w → 1), s.</summary>
         public double TimeConstant { get; }
@@ -30,8 +38,8 @@ namespace Kosmos.PseudoHaptic
 
         public LateralInertia(double timeConstant = 0.3, double maxOffset = 0.10)
         {
-            TimeConstant = ConfigurationGuard.InRange(timeConstant, 0, 10, nameof(timeConstant));
-            MaxOffset = ConfigurationGuard.InRange(maxOffset, 0.001, 10, nameof(maxOffset));
+            TimeConstant = Descriptor.Settings[0].Check(timeConstant);
+            MaxOffset = Descriptor.Settings[1].Check(maxOffset);
         }
 
         /// <summary>τ for an object of gain <paramref name="gain"/>, s: 0 at G ≥ 1.</summary>

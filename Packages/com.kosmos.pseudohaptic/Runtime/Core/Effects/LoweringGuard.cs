@@ -11,8 +11,15 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class LoweringGuard : WeightEffect
     {
-        public override string Name => "lowering-guard";
-        public override EffectStage Stage => EffectStage.Base;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("lowering-guard", EffectStage.Base, typeof(LoweringGuard),
+            "design note, open question 4",
+            "the lift's base follows the steady hand down: lowered below it, the object moves with the hand, and the next lift is weighed from where it starts",
+            s => new LoweringGuard(s[0]),
+            SettingDescriptor.Number<LoweringGuard>("slack", "m", 0.005, 0, 0.1, "how far below the base the steady hand may go before the base follows", e => e.Slack));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         /// <summary>The base follows the steady hand, which only a new pose moves.</summary>
         protected internal override bool IsFunctionOfHand => true;
 
@@ -22,7 +29,7 @@ namespace Kosmos.PseudoHaptic
 
         public LoweringGuard(double slack = 0.005)
         {
-            Slack = ConfigurationGuard.InRange(slack, 0, 0.1, nameof(slack));
+            Slack = Descriptor.Settings[0].Check(slack);
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)

@@ -14,8 +14,16 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class MotionDeadband : WeightEffect
     {
-        public override string Name => "motion-deadband";
-        public override EffectStage Stage => EffectStage.HandMotion;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("motion-deadband", EffectStage.HandMotion, typeof(MotionDeadband),
+            "design note, open question 2",
+            "backlash on the hand the weight reads where the gain amplifies jitter (G > 1): jitter at rest, times a light object's lead, moves nothing",
+            s => new MotionDeadband(s[0], s[1]),
+            SettingDescriptor.Number<MotionDeadband>("lagTime", "s", 0.006, 0, 0.1, "lag the band may cost at the user's standard speed", e => e.LagTime),
+            SettingDescriptor.Number<MotionDeadband>("jitterSpan", "m", 0.012, 0, 0.05, "how far a hand pose at rest wanders over seconds", e => e.JitterSpan));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         /// <summary>The same hand leaves the band's reference where the last frame put it.</summary>
         protected internal override bool IsFunctionOfHand => true;
 
@@ -28,8 +36,8 @@ namespace Kosmos.PseudoHaptic
 
         public MotionDeadband(double lagTime = 0.006, double jitterSpan = 0.012)
         {
-            LagTime = ConfigurationGuard.InRange(lagTime, 0, 0.1, nameof(lagTime));
-            JitterSpan = ConfigurationGuard.InRange(jitterSpan, 0, 0.05, nameof(jitterSpan));
+            LagTime = Descriptor.Settings[0].Check(lagTime);
+            JitterSpan = Descriptor.Settings[1].Check(jitterSpan);
         }
 
         /// <summary>The band's half-width for a user and an object's gain, m: max(span, v_std × lag time) × (1 − 1/G)

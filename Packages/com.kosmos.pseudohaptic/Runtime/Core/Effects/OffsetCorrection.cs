@@ -17,8 +17,19 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class OffsetCorrection : WeightEffect
     {
-        public override string Name => "offset-correction";
-        public override EffectStage Stage => EffectStage.ObjectMotion;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("offset-correction", EffectStage.ObjectMotion, typeof(OffsetCorrection),
+            "§3.1 (> 0.2 m)",
+            "past a mass-dependent threshold the offset stops growing, smoothly, never past the threshold plus the band",
+            s => new OffsetCorrection(s[0], s[1], s[2], s[3], s[4]),
+            SettingDescriptor.Number<OffsetCorrection>("threshold", "m", 0.2, 0.001, 10, "the threshold for a 1 kg object", e => e.Threshold),
+            SettingDescriptor.Number<OffsetCorrection>("band", "m", 0.02, 0.001, 10, "how far past its threshold the offset may ever grow", e => e.Band),
+            SettingDescriptor.Number<OffsetCorrection>("perDoubling", "", 0.1, 0, 1, "relative change of the threshold per doubling of the mass", e => e.PerDoubling),
+            SettingDescriptor.Number<OffsetCorrection>("minScale", "", 0.75, 0.01, 1, "lowest threshold relative to the 1 kg one", e => e.MinScale),
+            SettingDescriptor.Number<OffsetCorrection>("maxScale", "", 1.3, 1, 10, "highest threshold relative to the 1 kg one", e => e.MaxScale));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         /// <summary>C is a function of the offset.</summary>
         protected internal override bool IsFunctionOfHand => true;
 
@@ -37,11 +48,11 @@ namespace Kosmos.PseudoHaptic
 
         public OffsetCorrection(double threshold = 0.2, double band = 0.02, double perDoubling = 0.1, double minScale = 0.75, double maxScale = 1.3)
         {
-            Threshold = ConfigurationGuard.InRange(threshold, 0.001, 10, nameof(threshold));
-            Band = ConfigurationGuard.InRange(band, 0.001, 10, nameof(band));
-            PerDoubling = ConfigurationGuard.InRange(perDoubling, 0, 1, nameof(perDoubling));
-            MinScale = ConfigurationGuard.InRange(minScale, 0.01, 1, nameof(minScale));
-            MaxScale = ConfigurationGuard.InRange(maxScale, 1, 10, nameof(maxScale));
+            Threshold = Descriptor.Settings[0].Check(threshold);
+            Band = Descriptor.Settings[1].Check(band);
+            PerDoubling = Descriptor.Settings[2].Check(perDoubling);
+            MinScale = Descriptor.Settings[3].Check(minScale);
+            MaxScale = Descriptor.Settings[4].Check(maxScale);
         }
 
         /// <summary>The largest offset any object can show under this correction, m: Threshold × MaxScale + Band.</summary>

@@ -11,16 +11,24 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class OffsetRelaxation : WeightEffect
     {
-        public override string Name => "offset-relaxation";
-        public override EffectStage Stage => EffectStage.Base;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("offset-relaxation", EffectStage.Base, typeof(OffsetRelaxation),
+            "design note, open question 4 (off in the paper)",
+            "while the hand is still, the lift (and with it the offset) relaxes toward zero",
+            s => new OffsetRelaxation(s[0], s[1]),
+            SettingDescriptor.Number<OffsetRelaxation>("timeConstant", "s", 1.5, 0.01, 1000, "time constant of the relaxation", e => e.TimeConstant),
+            SettingDescriptor.Number<OffsetRelaxation>("stillFraction", "× v_std", 0.1, 0, 10, "the hand is still below this fraction of the user's standard speed", e => e.StillFraction));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         public double TimeConstant { get; }
         public double StillFraction { get; }
 
         public OffsetRelaxation(double timeConstant = 1.5, double stillFraction = 0.1)
         {
-            TimeConstant = ConfigurationGuard.InRange(timeConstant, 0.01, 1000, nameof(timeConstant));
-            StillFraction = ConfigurationGuard.InRange(stillFraction, 0, 10, nameof(stillFraction));
+            TimeConstant = Descriptor.Settings[0].Check(timeConstant);
+            StillFraction = Descriptor.Settings[1].Check(stillFraction);
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)

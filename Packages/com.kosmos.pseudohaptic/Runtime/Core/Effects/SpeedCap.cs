@@ -16,8 +16,15 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class SpeedCap : WeightEffect
     {
-        public override string Name => "speed-cap";
-        public override EffectStage Stage => EffectStage.Position;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("speed-cap", EffectStage.Position, typeof(SpeedCap),
+            "design note, open question 2",
+            "measures the strain: how far the hand pulls beyond a follower moving at most the user's rescaled experimental speed; never moves the object",
+            s => new SpeedCap(s[0]),
+            SettingDescriptor.Number<SpeedCap>("headroom", "× v_exp", 2.5, 1, 100, "multiple of the user's rescaled experimental speed allowed", e => e.Headroom));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         /// <summary>The motion allowed in one go: this much time at v_cap, s (a 30 Hz pose's interval and a half).</summary>
         public const double BurstTime = 0.05;
@@ -27,7 +34,7 @@ namespace Kosmos.PseudoHaptic
 
         public SpeedCap(double headroom = 2.5)
         {
-            Headroom = ConfigurationGuard.InRange(headroom, 1, 100, nameof(headroom));
+            Headroom = Descriptor.Settings[0].Check(headroom);
         }
 
         /// <summary>The cap for an object and a user, m/s: infinite for the standard weight and lighter objects.</summary>

@@ -12,8 +12,16 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class TrackingLossHold : WeightEffect
     {
-        public override string Name => "tracking-loss-hold";
-        public override EffectStage Stage => EffectStage.Input;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("tracking-loss-hold", EffectStage.Input, typeof(TrackingLossHold),
+            "headset hygiene (not in the paper)",
+            "a low-confidence pose, and every pose for the settle time after a loss, is followed but never moves what the hold remembers (the base, the pace)",
+            s => new TrackingLossHold(s[0], s.Flag(1)),
+            SettingDescriptor.Number<TrackingLossHold>("settleTime", "s", 0.11, 0, 5, "steady tracking required after a loss before poses count toward what the hold remembers", e => e.SettleTime),
+            SettingDescriptor.Boolean<TrackingLossHold>("requireHighConfidence", true, "a tracked but low-confidence pose is kept from what the hold remembers", e => e.RequireHighConfidence));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         /// <summary>Steady tracking required after a loss before poses count toward what the hold remembers, s.</summary>
         public double SettleTime { get; }
@@ -23,7 +31,7 @@ namespace Kosmos.PseudoHaptic
 
         public TrackingLossHold(double settleTime = 0.11, bool requireHighConfidence = true)
         {
-            SettleTime = ConfigurationGuard.InRange(settleTime, 0, 5, nameof(settleTime));
+            SettleTime = Descriptor.Settings[0].Check(settleTime);
             RequireHighConfidence = requireHighConfidence;
         }
 

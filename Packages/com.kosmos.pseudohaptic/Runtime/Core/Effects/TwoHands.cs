@@ -11,15 +11,22 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class TwoHands : WeightEffect
     {
-        public override string Name => "two-hands";
-        public override EffectStage Stage => EffectStage.Hold;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("two-hands", EffectStage.Hold, typeof(TwoHands),
+            "the paper's participants lifted with both hands",
+            "in WeightSolver3D, a second hand: the object follows the midpoint and each hand carries a share of the mass",
+            s => new TwoHands(s[0]),
+            SettingDescriptor.Number<TwoHands>("share", "", 0.5, 0.001, 1, "the share of the mass each hand carries while both hold", e => e.Share));
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
 
         /// <summary>The share of the mass each hand carries while both hold, (0, 1].</summary>
         public double Share { get; }
 
         public TwoHands(double share = 0.5)
         {
-            Share = ConfigurationGuard.InRange(share, 0.001, 1, nameof(share));
+            Share = Descriptor.Settings[0].Check(share);
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }

@@ -7,8 +7,14 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class WeightGain : WeightEffect
     {
-        public override string Name => "weight-gain";
-        public override EffectStage Stage => EffectStage.Gain;
+        /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
+        public static readonly EffectDescriptor Descriptor = new EffectDescriptor("weight-gain", EffectStage.Gain, typeof(WeightGain),
+            "Eq. 4",
+            "the object moves W_std/W as far as the hand (G includes W_std/W); folded into the gain, nothing per frame",
+            s => new WeightGain());
+
+        public override string Name => Descriptor.Name;
+        public override EffectStage Stage => Descriptor.Stage;
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
     }
 }

@@ -1,0 +1,181 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>Issue 33, the profile asset's list, engine-free: presets round-trip, add in stage order, remove, move only
+    /// within a stage, the Add Effect menu, an effect of another assembly, and the upgrade of an old asset's flat fields.</summary>
+    public class ProfileEffectListTests
+    {
+        [Test]
+        public void EveryNamedProfileAsAListBuildsTheSameProfile()
+        {
+            foreach (string name in NamedProfiles.Names)
+            {
+                var p = NamedProfiles.Get(name);
+                var list = ProfileEffectList.FromProfile(p);
+                var built = ProfileEffectList.Build(name, list, ProfileEffectList.Limits(ProfileEffectList.LimitValues(p.Limits)));
+                Assert.That(ProfileJson.Write(built.WithHandFilter(p.HandFilter, name)), Is.EqualTo(ProfileJson.Write(p)), name);
+            }
+        }
+
+        [Test]
+        public void AddingKeepsTheStageOrderAndRefusesADuplicate()
+        {
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Gain); // motion-deadband, weight-gain, floor-clamp
+            Assert.That(ProfileEffectList.Add(list, "tracking-loss-hold"), Is.True);
+            Assert.That(ProfileEffectList.Add(list, "offset-correction"), Is.True);
+            Assert.That(ProfileEffectList.Add(list, "lateral-inertia"), Is.True);
+            Assert.That(list.Select(e => e.effect), Is.EqualTo(new[] { "tracking-loss-hold", "motion-deadband", "weight-gain", "offset-correction", "floor-clamp", "lateral-inertia" }));
+            Assert.That(ProfileEffectList.Add(list, "weight-gain"), Is.False);
+            Assert.That(list.Count, Is.EqualTo(6));
+            Assert.That(list[3].Get("threshold"), Is.EqualTo(0.2), "added at its declared default");
+            var e = Assert.Catch<ArgumentException>(() => ProfileEffectList.Add(list, "heaviness"));
+            Assert.That(e.Message, Does.Contain("heaviness").And.Contain("speed-cap"));
+        }
+
+        [Test]
+        public void RemovingAnEffectRemovesItFromTheBuiltProfile()
+        {
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Paper);
+            Assert.That(ProfileEffectList.Remove(list, "offset-correction"), Is.True);
+            Assert.That(ProfileEffectList.Remove(list, "offset-correction"), Is.False);
+            var built = ProfileEffectList.Build("p", list, SolverLimits.Default);
+            Assert.That(built.Has<OffsetCorrection>(), Is.False);
+            Assert.That(built.Effects.Count, Is.EqualTo(NamedProfiles.Paper.Effects.Count - 1));
+        }
+
+        [Test]
+        public void AnEffectMovesOnlyPastANeighbourOfItsStage()
+        {
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Xyz);
+            int gain = ProfileEffectList.IndexOf(list, "weight-gain"), blend = ProfileEffectList.IndexOf(list, "experimental-blend");
+            Assert.That(blend, Is.EqualTo(gain + 1));
+            Assert.That(ProfileEffectList.CanMove(list, gain, 1), Is.True, "two Gain effects");
+            Assert.That(ProfileEffectList.Move(list, gain, 1), Is.True);
+            Assert.That(list[gain].effect, Is.EqualTo("experimental-blend"));
+            int first = 0; // tracking-loss-hold, the only Input effect
+            Assert.That(ProfileEffectList.CanMove(list, first, -1), Is.False);
+            Assert.That(ProfileEffectList.CanMove(list, first, 1), Is.False, "past a HandMotion effect: the stage decides");
+            Assert.That(ProfileEffectList.Move(list, first, 1), Is.False);
+            // Within Lift, the order is the order the effects run in: the built profile follows the list.
+            int hd = ProfileEffectList.IndexOf(list, "height-deceleration");
+            Assert.That(ProfileEffectList.Move(list, hd, 1), Is.True);
+            var built = ProfileEffectList.Build("x", list, SolverLimits.Default);
+            var lift = built.Effects.Where(e => e.Stage == EffectStage.Lift).Select(e => e.Name).ToArray();
+            Assert.That(lift, Is.EqualTo(new[] { "faster-moves-further", "height-deceleration" }));
+        }
+
+        [Test]
+        public void TheAddEffectMenuListsEveryRegisteredEffectWithItsSummaryAndWhichAreListed()
+        {
+            ScaledOffset.Register();
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Gain);
+            var menu = ProfileEffectList.Menu(list);
+            Assert.That(menu.Select(m => m.Key), Is.EqualTo(EffectRegistry.All));
+            Assert.That(menu.Where(m => m.Value).Select(m => m.Key.Name), Is.EquivalentTo(new[] { "motion-deadband", "weight-gain", "floor-clamp" }));
+            Assert.That(ProfileEffectList.MenuText(ScaledOffset.Descriptor), Is.EqualTo("ObjectMotion/scaled-offset — the weight's offset times a factor"));
+            Assert.That(ProfileEffectList.MenuText(WeightGain.Descriptor), Does.Not.Contain("W_std/W").And.StartWith("Gain/weight-gain — "), "no '/' opens a submenu");
+        }
+
+        [Test]
+        public void AnEffectOfAnotherAssemblyIsListedSetAndBuilt()
+        {
+            ScaledOffset.Register();
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Paper);
+            Assert.That(ProfileEffectList.Add(list, "scaled-offset"), Is.True);
+            list[ProfileEffectList.IndexOf(list, "scaled-offset")].Set("factor", 1.5);
+            var built = ProfileEffectList.Build("p", list, SolverLimits.Default);
+            Assert.That(built.Find<ScaledOffset>().Factor, Is.EqualTo(1.5));
+            list[ProfileEffectList.IndexOf(list, "scaled-offset")].Set("factor", 9);
+            var e = Assert.Catch<ArgumentException>(() => ProfileEffectList.Build("p", list, SolverLimits.Default));
+            Assert.That(e.Message, Does.StartWith("effect 'scaled-offset': setting 'factor': factor must lie in [0, 4], got 9"));
+        }
+
+        [Test]
+        public void AnEntryOfAnUnregisteredEffectOrSettingIsNamed()
+        {
+            var entry = new ProfileEffect { effect = "gone" };
+            Assert.That(Assert.Catch<ArgumentException>(() => entry.Build()).Message, Does.Contain("'gone' is unknown"));
+            var oc = ProfileEffect.Of(OffsetCorrection.Descriptor);
+            Assert.That(Assert.Catch<ArgumentException>(() => oc.Set("treshold", 1)).Message, Does.Contain("offset-correction").And.Contain("treshold"));
+            // A value the effect no longer declares is ignored; one it lacks takes its default.
+            oc.settings.Add(new EffectSettingValue("retired", 3));
+            oc.settings.RemoveAll(v => v.name == "band");
+            Assert.That(((OffsetCorrection)oc.Build()).Band, Is.EqualTo(0.02));
+        }
+
+        /// <summary>The fields an old asset saved for a named profile, as its CopyFrom wrote them (floats).</summary>
+        static LegacyProfileFields OldAsset(WeightProfile p)
+        {
+            var tl = p.Find<TrackingLossHold>() ?? new TrackingLossHold();
+            var fm = p.Find<FasterMovesFurther>() ?? new FasterMovesFurther();
+            var hd = p.Find<HeightDeceleration>() ?? new HeightDeceleration();
+            var oc = p.Find<OffsetCorrection>() ?? new OffsetCorrection();
+            var rl = p.Find<OffsetRelaxation>() ?? new OffsetRelaxation();
+            var li = p.Find<LateralInertia>() ?? new LateralInertia();
+            return new LegacyProfileFields
+            {
+                trackingLossHold = p.Has<TrackingLossHold>(), settleTime = (float)tl.SettleTime, requireHighConfidence = tl.RequireHighConfidence,
+                motionDeadband = p.Has<MotionDeadband>(), deadbandLagTime = (float)(p.Find<MotionDeadband>() ?? new MotionDeadband()).LagTime,
+                weightGain = p.Has<WeightGain>(), experimentalBlend = p.Has<ExperimentalBlend>(),
+                heightDeceleration = p.Has<HeightDeceleration>(), decelerationHeight = (float)hd.Height, decelerationMinFraction = (float)hd.MinFraction,
+                fasterMovesFurther = p.Has<FasterMovesFurther>(), fastExponent = (float)fm.FastExponent, slowExponent = (float)fm.SlowExponent,
+                restBand = (float)fm.RestBand, pauseTime = (float)fm.PauseTime, paceSensitivity = (float)fm.Sensitivity,
+                speedCap = p.Has<SpeedCap>(), speedCapHeadroom = (float)(p.Find<SpeedCap>() ?? new SpeedCap()).Headroom,
+                loweringGuard = p.Has<LoweringGuard>(), offsetCorrection = p.Has<OffsetCorrection>(), offsetThreshold = (float)oc.Threshold, offsetBand = (float)oc.Band,
+                offsetRelaxation = p.Has<OffsetRelaxation>(), relaxationTimeConstant = (float)rl.TimeConstant, relaxationStillFraction = (float)rl.StillFraction,
+                floorClamp = p.Has<FloorClamp>(), floor = (float)(p.Find<FloorClamp>() ?? new FloorClamp()).Floor,
+                lateralInertia = p.Has<LateralInertia>(), lateralTimeConstant = (float)li.TimeConstant, lateralMaxOffset = (float)li.MaxOffset,
+                twoHands = p.Has<TwoHands>(), twoHandsShare = (float)(p.Find<TwoHands>() ?? new TwoHands()).Share,
+                breakAway = false, breakAwayDistance = 0.25f,
+                maxGain = (float)p.Limits.MaxGain, maxHandSpeed = (float)p.Limits.MaxHandSpeed, maxFrameTime = (float)p.Limits.MaxFrameTime, glideSpeed = (float)p.Limits.GlideSpeed,
+            };
+        }
+
+        [Test]
+        public void AnOldAssetsFieldsBecomeTheListItBuiltValueForValue()
+        {
+            foreach (string name in NamedProfiles.Names)
+            {
+                var p = NamedProfiles.Get(name);
+                var old = OldAsset(p);
+                var upgraded = ProfileEffectList.Build(name, old.Effects(), ProfileEffectList.Limits(old.Limits()));
+                Assert.That(upgraded.Effects.Select(e => e.Name), Is.EqualTo(p.Effects.Select(e => e.Name)), name);
+                // Every value is the old asset's float, as the old Build passed it to the core.
+                foreach (var e in upgraded.Effects)
+                {
+                    var d = EffectRegistry.Of(e);
+                    var now = d.SettingsOf(e);
+                    var core = d.SettingsOf(p.Effects.Single(x => x.Name == e.Name));
+                    for (int i = 0; i < d.Settings.Count; i++)
+                    {
+                        // The old asset stored only these; the rest were the core's defaults (jitterSpan, perDoubling, …, slack).
+                        bool stored = !(d.Name == "motion-deadband" && i == 1) && !(d.Name == "offset-correction" && i >= 2) && d.Name != "lowering-guard";
+                        double expected = d.Settings[i].Kind == SettingKind.Boolean || !stored ? core[i] : (double)(float)core[i];
+                        Assert.That(now[i], Is.EqualTo(expected), name + ": " + d.Name + "." + d.Settings[i].Name);
+                    }
+                }
+                Assert.That(upgraded.Limits.MaxFrameTime, Is.EqualTo((double)(float)p.Limits.MaxFrameTime));
+                Assert.That(upgraded.Limits.WorkspaceRadius, Is.EqualTo(SolverLimits.DefaultWorkspaceRadius));
+            }
+        }
+
+        [Test]
+        public void AnOldAssetWithBreakAwayAndRelaxationOnKeepsThem()
+        {
+            var old = OldAsset(NamedProfiles.Xyz);
+            old.breakAway = true;
+            old.breakAwayDistance = 0.4f;
+            old.offsetRelaxation = true;
+            old.relaxationTimeConstant = 2f;
+            var p = ProfileEffectList.Build("old", old.Effects(), ProfileEffectList.Limits(old.Limits()));
+            Assert.That(p.Find<BreakAway>().Distance, Is.EqualTo((double)0.4f));
+            Assert.That(p.Find<OffsetRelaxation>().TimeConstant, Is.EqualTo(2));
+            old.weightGain = false;
+            Assert.That(ProfileEffectList.Build("old", old.Effects(), SolverLimits.Default).Has<WeightGain>(), Is.False, "a switch that was off lists nothing");
+        }
+    }
+}
