@@ -63,7 +63,7 @@ public class FirstLookChartsTests : CliTestFolder
         var correction = NamedProfiles.Paper.Find<OffsetCorrection>()!;
         var panels = drawn.Where(d => d.Title().StartsWith("Offset", StringComparison.Ordinal)).ToList();
         Assert.That(panels, Has.Count.EqualTo(2), "offset-correction and recorded-hand");
-        foreach (var (panel, masses) in panels.Zip(new[] { new[] { PhysicalConstants.StandardMassKg, 2.0, 5.0 }, new[] { PhysicalConstants.StandardMassKg, 0.6, 2.0, 1.0 } }))
+        foreach (var (panel, masses) in panels.Zip(new[] { new[] { PhysicalConstants.StandardMassKg, PaperExperiment1.Mass(PaperExperiment1.BoxBDensity), 5.0 }, new[] { PhysicalConstants.StandardMassKg }.Concat(PaperExperiment1.BoxDensities.Select(PaperExperiment1.Mass)).ToArray() }))
         {
             var lines = panel.Plot.GetPlottables().OfType<ScottPlot.Plottables.HorizontalLine>().Select(l => l.Y).ToList();
             Assert.That(lines.OrderBy(y => y).ToList(), Is.EqualTo(masses.Select(correction.ThresholdFor).OrderBy(y => y).ToList()).Within(1e-12), "one threshold per mass, T(m) of the core");

@@ -61,6 +61,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 bool comparisonLeft = left == comparison && right != comparison || (left == right && task.Session.Current.ComparisonFirst);
                 PairSide heavier = comparisonHeavier == comparisonLeft ? PairSide.Left : PairSide.Right;
                 Assert.That(task.Answer(heavier), Is.True, task.Error);
+                Assert.That(task.WaitForSaves(), Is.True, task.Error); // acknowledged once written (issue 35): the next trial comes after the save
             }
             Assert.That(task.Session.IsFinished, Is.True);
             cue.Tick();

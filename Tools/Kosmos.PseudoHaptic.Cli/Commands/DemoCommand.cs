@@ -151,7 +151,7 @@ public static class DemoCommand
             new("experiment-1-literal", "Experiment 1: boxes A, B, C, the paper as printed (paper-literal)", NamedProfiles.PaperLiteral, boxes, liftAndPlace),
             new("experiment-2-bottles", "Experiment 2: water bottles (paper-experiment)", NamedProfiles.PaperExperiment, bottles, liftAndPlace),
             new("offset-correction", "A high lift with the offset correction (paper)", NamedProfiles.Paper,
-                new List<Item> { boxes[0], boxes[2], new("box D", 5, "625 kg/m³") }, highLift),
+                new List<Item> { boxes[0], boxes[2], new("box D", 5, $"{5 / PaperExperiment1.BoxVolume:0} kg/m³") }, highLift),
         };
         if (recorded != null)
         {
@@ -192,6 +192,9 @@ public static class DemoCommand
     /// left out where the correction never acts), and each mass's own threshold T(m) from the core
     /// (<see cref="OffsetCorrection.ThresholdFor"/>, thin dashed in its colour).
     /// </summary>
+    /// <summary>Below this largest change by the correction (m), the offset with and without it are drawn as one line.</summary>
+    const double SameWithoutM = 0.005;
+
     static void Plot(string path, Scene scene, List<Result> results, bool svg, double standardSpeed)
     {
         var t = scene.Frames.Select(f => f.Time).ToArray();
@@ -224,15 +227,16 @@ public static class DemoCommand
             corrected.Add(mine);
             double acts = 0;
             for (int k = 0; k < t.Length; k++) if (double.IsFinite(mine[k]) && double.IsFinite(without[k])) acts = Math.Max(acts, Math.Abs(mine[k] - without[k]));
-            // Drawn first and wide, so the corrected line lies on it and both show; where the correction never acts
-            // the two are one line, drawn once and named so.
-            same[i] = acts < 0.001;
+            // Drawn first and wide, so the corrected line lies on it and both show; where the correction changes the
+            // offset by less than the band's half-width (about 5 mm at the chart's scale) the line would only cover its
+            // own band: the two are one line, drawn once and named so.
+            same[i] = acts < SameWithoutM;
             if (!same[i]) Charts.Band(offsets, t, without, $"{results[i].Item.Name} without the correction", i);
             double threshold = correction.ThresholdFor(results[i].Item.MassKg);
             Charts.Threshold(offsets, threshold, $"{results[i].Item.Name}: threshold {threshold:0.###} m", Charts.Colour(i));
         }
         for (int i = 0; i < results.Count; i++)
-            Charts.Series(offsets, t, corrected[i], same[i] ? $"{results[i].Item.Name} (never past its threshold: the same without)" : results[i].Item.Name, i);
+            Charts.Series(offsets, t, corrected[i], same[i] ? $"{results[i].Item.Name} (the correction moves it under 5 mm: the same without)" : results[i].Item.Name, i);
         Charts.LegendBelow(offsets);
         Charts.SavePanels(new[] { plot, offsets }, path, 1000, new[] { 560, 520 }, svg);
     }
