@@ -14,8 +14,8 @@ namespace Kosmos.PseudoHaptic
     /// distance is taken in the cue: Δc(threshold) = c(standard) − c(threshold) at s = 1, and the JND (the 75 % point,
     /// 0.674 σ) is Δc* = Δc(threshold) × 0.674 / 0.545 (<see cref="ThresholdCueFromThreshold"/>), which
     /// <see cref="CueStrengthTuning.SolveForThresholdCue"/> turns into s for the scene's masses (Experiment 1's boxes by
-    /// default). Taken in kg (a Gaussian in kg, as before) the JND of a broad function came out 10–20 % off, because the cue
-    /// is not linear in kg. The Unity glue (<c>CueStrengthCalibrator</c>) runs the task and
+    /// default). Above the standard the cue is nearly linear in kg, so the earlier kg reading gave nearly the same Δc* (within
+    /// 0.3 % for thresholds 2.25–4 kg, <c>CueStrengthStepTests</c>); the cue reading keeps one model for tune and the headset. The Unity glue (<c>CueStrengthCalibrator</c>) runs the task and
     /// stores the result beside the user's standard speed.
     /// </summary>
     public static class CueStrengthStep

@@ -53,8 +53,15 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(CueStrengthStep.ThresholdCueFromThreshold(2.5, 2, 0.5), Is.EqualTo(dc * 0.6745 / 0.5449).Within(2e-4 * dc));
             Assert.That(CueStrengthStep.ThresholdCueFromThreshold(2, 2, 0.5), Is.NaN);
             Assert.That(CueStrengthStep.ThresholdCueFromThreshold(1.5, 2, 0.5), Is.NaN);
-            double kgModel = CueStrengthTuning.Solve(2, CueStrengthStep.JndFromThreshold(2.5, 2), CueStrengthTuning.ExperimentOneBoxes).ThresholdCue;
-            Assert.That(Math.Abs(kgModel / (dc * 0.6745 / 0.5449) - 1), Is.GreaterThan(0.01), "the kg Gaussian is a different model");
+            // Above the 2 kg standard the cue is nearly linear in kg (G's e^(−0.24·m) term dominates heavy masses), so the
+            // kg reading of the staircase (a Gaussian in kg) gave nearly the same Δc*: measured within 0.3 % for thresholds
+            // 2.25–4 kg. Held here to 1 %: the staircase never shared the fit's bias, which came from light levels.
+            foreach (double th in new[] { 2.25, 2.5, 3.0, 3.5, 4.0 })
+            {
+                double kgModel = CueStrengthTuning.Solve(2, CueStrengthStep.JndFromThreshold(th, 2), CueStrengthTuning.ExperimentOneBoxes).ThresholdCue;
+                double cueModel = CueStrengthStep.ThresholdCueFromThreshold(th, 2, 0.5);
+                Assert.That(kgModel / cueModel, Is.EqualTo(1).Within(0.01), $"threshold {th} kg");
+            }
         }
 
         [Test]
