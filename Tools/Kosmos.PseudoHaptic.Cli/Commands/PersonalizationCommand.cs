@@ -11,7 +11,7 @@ public static class PersonalizationCommand
         "personalization",
         "Write the generated tables of ALGORITHM.md §12 and evaluation.md §9: the paper per profile, what v_std and the lift's pace do, the cue strength, tuning on simulated participants",
         Run,
-        new[] { "pseudohaptic personalization --markdown personalization-results.md" },
+        new[] { "pseudohaptic personalization --markdown out/personalization-results.md" },
         CliCommand.Value("--markdown", "FILE", "where the page goes ('-': standard output); replaced whole or not at all", required: true));
 
     static int Run(Options o)

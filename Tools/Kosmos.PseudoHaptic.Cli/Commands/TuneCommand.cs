@@ -18,7 +18,7 @@ public static class TuneCommand
         Run,
         new[]
         {
-            "pseudohaptic tune --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --participant P1 --condition pseudo-haptic --out user-P1.json",
+            "pseudohaptic tune --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --participant P1 --condition pseudo-haptic --out out/user-P1.json",
         },
         CliCommand.Value("--trials", "T.csv", "the discrimination kit's trials file as the headset writes it: participant,condition,trial,standard,comparison,first,catch,response (standard and comparison in kg, rendered at cue strength 1)", required: true),
         CliCommand.Value("--participant", "P", "whose answers to fit", required: true),
