@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Evaluation;
 using System.Globalization;
 using System.Text.Json;
 using Kosmos.PseudoHaptic.Cli.Commands;
@@ -50,6 +51,26 @@ public class TuneCliTests : CliTestFolder
         Assert.That(stdout, Does.StartWith("tune: P3: Weber "));
         // It is read back by replay.
         Assert.That(UserFile.ReadCueStrength("--user", output), Is.EqualTo(s));
+    }
+
+    [Test]
+    public void AHigherConfidenceNeverGivesLessCueAndTheFitItselfIsConfidenceHalf()
+    {
+        // Metamorphic: the same answers tuned at a higher confidence take a higher bound of the same fit, so never a
+        // weaker strength; at 0.5 the threshold is the fitted JND itself, read in the cue.
+        var answers = TrialsCsv.Read(new StringReader(File.ReadAllText(Trials)), "trials.csv");
+        foreach (string p in new[] { "P1", "P3" })
+        {
+            double last = 0;
+            foreach (double c in new[] { 0.5, 0.8, 0.95, 0.999 })
+            {
+                var (_, fit, fittedKg, tuning, _, _) = TuneCommand.Tune(answers, p, "pseudo-haptic", new[] { 0.3, 0.35, 0.4 }, "trials.csv", c);
+                Assert.That(tuning.CueStrength, Is.GreaterThanOrEqualTo(last), $"{p} at {c}");
+                Assert.That(tuning.ThresholdCue, Is.GreaterThanOrEqualTo(fit.Jnd));
+                if (c == 0.5) { Assert.That(tuning.ThresholdCue, Is.EqualTo(fit.Jnd)); Assert.That(tuning.JndKg, Is.EqualTo(fittedKg)); }
+                last = tuning.CueStrength;
+            }
+        }
     }
 
     [Test]
