@@ -5,9 +5,10 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
-/// <c>pseudohaptic tune --trials T.csv --participant P --out USER.json [--condition C] [--masses LIST]</c> (issue 31):
-/// fits this participant's psychometric function for the cue as rendered (the existing maximum-likelihood fit, no lapse),
-/// and writes the smallest cue strength at which the scene's adjacent masses are at least one JND apart for this person
+/// <c>pseudohaptic tune --trials T.csv --participant P --out USER.json [--condition C] [--masses LIST] [--confidence C]</c>
+/// (issue 31): fits this participant's psychometric function on the cue each comparison renders at s = 1 (the existing
+/// maximum-likelihood fit, no lapse, on <see cref="CueStrengthTuning.CueDifference"/>), and writes the smallest cue
+/// strength at which the scene's adjacent masses are at least the JND's upper confidence bound apart for this person
 /// (<see cref="CueStrengthTuning"/>; ALGORITHM.md §12, evaluation.md §9).
 /// </summary>
 public static class TuneCommand
