@@ -31,7 +31,7 @@ public class TuningEvidenceTests
             double level = mine.Select(a => a.Comparison).Distinct().OrderBy(c => c).ElementAt(TuningEvidence.LevelsEachSide + 2);
             Assert.That(level, Is.EqualTo(2 * (1 + TuningEvidence.Webers[k])).Within(1e-9));
             double p = mine.Where(a => a.Comparison == level).Average(a => a.Response);
-            Assert.That(p, Is.InRange(0.75 - 0.2, 0.75 + 0.2), $"observer {k + 1}: 40 answers at +1 JND (binomial sd 0.07)");
+            Assert.That(p, Is.InRange(0.75 - 0.2, 0.75 + 0.2), $"observer {k + 1}: {TuningEvidence.Repetitions} answers at +1 JND (binomial sd 0.05 at 80)");
         }
     }
 
