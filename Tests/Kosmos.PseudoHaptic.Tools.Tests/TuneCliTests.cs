@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Evaluation;
 using System.Globalization;
 using System.Text.Json;
 using Kosmos.PseudoHaptic.Cli.Commands;
@@ -37,13 +38,39 @@ public class TuneCliTests : CliTestFolder
         double s = root.GetProperty("cueStrength").GetDouble(), weber = root.GetProperty("weber").GetDouble();
         Assert.That(s, Is.InRange(WeightSolver.MinCueStrength, WeightSolver.MaxCueStrength));
         Assert.That(weber, Is.GreaterThan(0));
-        // The file's numbers are the model's for its own fit: re-solving from the written JND gives the written s.
-        var again = CueStrengthTuning.Solve(root.GetProperty("standardKg").GetDouble(), root.GetProperty("jndKg").GetDouble(), CueStrengthTuning.ExperimentOneBoxes);
+        // The file's numbers are the model's for its own fit: re-solving from the written threshold cue (the JND's upper
+        // bound) gives the written s, and from its kg equivalent the same s within the bisection's tolerance.
+        var again = CueStrengthTuning.SolveForThresholdCue(root.GetProperty("standardKg").GetDouble(), root.GetProperty("thresholdCue").GetDouble(), CueStrengthTuning.ExperimentOneBoxes);
         Assert.That(s, Is.EqualTo(again.CueStrength));
+        var inKg = CueStrengthTuning.Solve(root.GetProperty("standardKg").GetDouble(), root.GetProperty("jndKgUpper").GetDouble(), CueStrengthTuning.ExperimentOneBoxes);
+        Assert.That(inKg.CueStrength, Is.EqualTo(s).Within(1e-6));
+        Assert.That(root.GetProperty("confidence").GetDouble(), Is.EqualTo(0.95));
+        Assert.That(root.GetProperty("thresholdCue").GetDouble(), Is.GreaterThanOrEqualTo(root.GetProperty("fittedCue").GetDouble()), "the bound is at or above the fit");
+        Assert.That(root.GetProperty("jndKgUpper").GetDouble(), Is.GreaterThanOrEqualTo(root.GetProperty("jndKg").GetDouble()));
         Assert.That(weber, Is.EqualTo(root.GetProperty("jndKg").GetDouble() / root.GetProperty("standardKg").GetDouble()).Within(1e-12));
         Assert.That(stdout, Does.StartWith("tune: P3: Weber "));
         // It is read back by replay.
         Assert.That(UserFile.ReadCueStrength("--user", output), Is.EqualTo(s));
+    }
+
+    [Test]
+    public void AHigherConfidenceNeverGivesLessCueAndTheFitItselfIsConfidenceHalf()
+    {
+        // Metamorphic: the same answers tuned at a higher confidence take a higher bound of the same fit, so never a
+        // weaker strength; at 0.5 the threshold is the fitted JND itself, read in the cue.
+        var answers = TrialsCsv.Read(new StringReader(File.ReadAllText(Trials)), "trials.csv");
+        foreach (string p in new[] { "P1", "P3" })
+        {
+            double last = 0;
+            foreach (double c in new[] { 0.5, 0.8, 0.95, 0.999 })
+            {
+                var (_, fit, fittedKg, tuning, _, _) = TuneCommand.Tune(answers, p, "pseudo-haptic", new[] { 0.3, 0.35, 0.4 }, "trials.csv", c);
+                Assert.That(tuning.CueStrength, Is.GreaterThanOrEqualTo(last), $"{p} at {c}");
+                Assert.That(tuning.ThresholdCue, Is.GreaterThanOrEqualTo(fit.Jnd));
+                if (c == 0.5) { Assert.That(tuning.ThresholdCue, Is.EqualTo(fit.Jnd)); Assert.That(tuning.JndKg, Is.EqualTo(fittedKg)); }
+                last = tuning.CueStrength;
+            }
+        }
     }
 
     [Test]
@@ -77,9 +104,11 @@ public class TuneCliTests : CliTestFolder
         OneLineNamingAndNothingWritten(Run("tune", "--trials", flat, "--participant", "Q", "--out", output), "tune", new[] { "flat.csv", "not estimable" }, output);
         string broken = Write("broken.csv", "participant,standard,comparison,response\nQ,1,abc,0\n");
         OneLineNamingAndNothingWritten(Run("tune", "--trials", broken, "--participant", "Q", "--out", output), "tune", new[] { "broken.csv:2" }, output);
+        OneLineNamingAndNothingWritten(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--confidence", "0.4", "--out", output), "tune", new[] { "--confidence", "0.4" }, output);
+        OneLineNamingAndNothingWritten(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--confidence", "x", "--out", output), "tune", new[] { "--confidence", "'x'" }, output);
         var (help, _, text) = Run("tune", "--help");
         Assert.That(help, Is.EqualTo(0));
-        Assert.That(text, Does.Contain("--trials").And.Contain("--participant").And.Contain("--condition").And.Contain("--masses").And.Contain("--out"));
+        Assert.That(text, Does.Contain("--trials").And.Contain("--participant").And.Contain("--condition").And.Contain("--masses").And.Contain("--out").And.Contain("--confidence"));
     }
 
     [TestCase("{\"participant\": \"P\"}", "field cueStrength is missing")]

@@ -6,7 +6,9 @@ namespace Kosmos.PseudoHaptic.Tools.Tests;
 
 /// <summary>
 /// Issue 31's evidence, a test per claim, on the seeded simulated observers of <see cref="TuningEvidence"/> (the table in
-/// evaluation.md §9). The thresholds are the issue's: 75 % correct, Weber 0.05–0.6, s &lt; 1 for the sensitive.
+/// evaluation.md §9). The thresholds are the issue's: 75 % correct, Weber 0.05–0.6, s &lt; 1 for the sensitive. Each
+/// observer is tuned on the JND's upper bound at the Bonferroni confidence 1 − 0.05/7 (all seven at once with ≥ 95 %);
+/// the replications below measure that rate on other seeds, so the table's seed is not the only evidence.
 /// </summary>
 public class TuningEvidenceTests
 {
@@ -29,7 +31,7 @@ public class TuningEvidenceTests
             double level = mine.Select(a => a.Comparison).Distinct().OrderBy(c => c).ElementAt(TuningEvidence.LevelsEachSide + 2);
             Assert.That(level, Is.EqualTo(2 * (1 + TuningEvidence.Webers[k])).Within(1e-9));
             double p = mine.Where(a => a.Comparison == level).Average(a => a.Response);
-            Assert.That(p, Is.InRange(0.75 - 0.2, 0.75 + 0.2), $"observer {k + 1}: 40 answers at +1 JND (binomial sd 0.07)");
+            Assert.That(p, Is.InRange(0.75 - 0.2, 0.75 + 0.2), $"observer {k + 1}: {TuningEvidence.Repetitions} answers at +1 JND (binomial sd 0.05 at 80)");
         }
     }
 
@@ -46,13 +48,64 @@ public class TuningEvidenceTests
     }
 
     [Test]
-    public void AfterTuningEveryObserverWithinTheBoundOrdersTheAdjacentBoxesAtLeast75Percent()
+    public void AfterTuningEveryObserverWithinTheBoundOrdersEveryAdjacentPairAtLeast75Percent()
     {
+        // The claim is the issue's: every observer within the bound. An observer whose JND's upper bound needs more than
+        // s = 3 gets 3 (Reached false) and is shown as such; the insensitive half must still be tested within the bound.
         var within = Rows.Where(r => r.Reached).ToList();
-        Assert.That(within, Has.Count.EqualTo(Rows.Count), "every observer's strength lies within the bounds here");
-        foreach (var r in within) Assert.That(r.AfterPooled, Is.GreaterThanOrEqualTo(75), r.Participant);
+        Assert.That(within.Count(r => r.Weber >= 0.3), Is.GreaterThanOrEqualTo(2), "insensitive observers within the bound");
+        foreach (var r in within)
+        {
+            Assert.That(r.AfterWorst, Is.GreaterThanOrEqualTo(75), r.Participant + ": the worse adjacent pair");
+            Assert.That(r.AfterPooled, Is.GreaterThanOrEqualTo(75), r.Participant + ": both pairs");
+        }
         // And tuning helps exactly those who needed it: every observer below 75 % before is better after.
-        foreach (var r in Rows.Where(r => r.BeforePooled < 75)) Assert.That(r.AfterPooled, Is.GreaterThan(r.BeforePooled), r.Participant);
+        foreach (var r in Rows.Where(r => r.BeforeWorst < 75)) Assert.That(r.AfterWorst, Is.GreaterThan(r.BeforeWorst), r.Participant);
+    }
+
+    static readonly Dictionary<double, List<List<TuningEvidence.Row>>> _replications = new();
+
+    /// <summary>Replications 1…20 of the whole evidence (other seeds than the table's 0), at tune's confidence.</summary>
+    static List<List<TuningEvidence.Row>> Replications(double confidence)
+    {
+        if (!_replications.TryGetValue(confidence, out var runs))
+            _replications[confidence] = runs = Enumerable.Range(1, 20).Select(b => TuningEvidence.Run(b, TuningEvidence.Repetitions, confidence)).ToList();
+        return runs;
+    }
+
+    [Test]
+    public void TheFitInTheCueFindsTheObserversTrueThresholdWithoutBias()
+    {
+        // The cause of the earlier shortfall: a Gaussian fitted in kg to observers Gaussian in the cue put the JND of the
+        // insensitive 10–20 % low. Fitted on the cue difference, the median fitted Weber (the point estimate, before any
+        // confidence bound) over 20 replications lies within 5 % of each observer's true one (20 runs of 720 trials: the
+        // median's own sampling error is about 2 %).
+        var runs = Replications(0.5);
+        for (int k = 0; k < TuningEvidence.Webers.Length; k++)
+        {
+            var ratios = runs.Select(r => r[k].FittedWeber / TuningEvidence.Webers[k]).OrderBy(x => x).ToList();
+            double median = 0.5 * (ratios[9] + ratios[10]);
+            Assert.That(median, Is.InRange(0.95, 1.05), $"observer {k + 1}");
+        }
+    }
+
+    [Test]
+    public void TheConfidenceBoundIsWhatMakes75PercentMoreThanACoinFlip()
+    {
+        // On 20 replications × 7 observers, tuned at the evidence's confidence (1 − 0.05/7 per observer, nominally ≥ 99.3 %
+        // each): at least 133 of the 140 runs within the bound (95 %) order every adjacent pair at least 75 %; the
+        // percentile bootstrap runs a little narrow, so the allowance is wider than the nominal 1 miss.
+        var bounded = Replications(TuningEvidence.Confidence).SelectMany(r => r).Where(r => r.Reached).ToList();
+        Assert.That(bounded.Count, Is.GreaterThanOrEqualTo(133));
+        int reached = bounded.Count(r => r.AfterWorst >= 75);
+        Assert.That(reached, Is.GreaterThanOrEqualTo((int)Math.Ceiling(0.95 * bounded.Count)), $"{reached} of {bounded.Count}");
+        TestContext.Progress.WriteLine($"tuning evidence, 20 replications: {reached} of {bounded.Count} runs within the bound reach 75 % on every pair at confidence {TuningEvidence.Confidence:F4}");
+        // The same runs tuned on the fitted JND itself (confidence 0.5) land on 75 % as a coin flip: far more of the
+        // observers whose strength is tuned (not at the lower bound) fall short. The bound is needed, not decoration.
+        var point = Replications(0.5).SelectMany(r => r).Where(r => r.Reached && r.CueStrength > WeightSolver.MinCueStrength).ToList();
+        int pointReached = point.Count(r => r.AfterWorst >= 75);
+        Assert.That(pointReached, Is.LessThan(0.8 * point.Count), $"{pointReached} of {point.Count} on the point estimate");
+        TestContext.Progress.WriteLine($"tuning evidence, 20 replications: {pointReached} of {point.Count} tuned runs reach 75 % on every pair on the fitted JND itself");
     }
 
     [Test]

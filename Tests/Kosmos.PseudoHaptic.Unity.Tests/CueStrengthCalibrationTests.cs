@@ -61,7 +61,10 @@ namespace Kosmos.PseudoHaptic.Tests
                 bool comparisonLeft = left == comparison && right != comparison || (left == right && task.Session.Current.ComparisonFirst);
                 PairSide heavier = comparisonHeavier == comparisonLeft ? PairSide.Left : PairSide.Right;
                 Assert.That(task.Answer(heavier), Is.True, task.Error);
-                Assert.That(task.WaitForSaves(), Is.True, task.Error); // acknowledged once written (issue 35): the next trial comes after the save
+                // The answer is written off the main thread; the next trial comes when the write has returned (on a
+                // loaded machine not within the same call): wait for it, as the task does on a pause.
+                Assert.That(task.WaitForSaves(), Is.True, task.Error);
+                task.Model.Update();
             }
             Assert.That(task.Session.IsFinished, Is.True);
             cue.Tick();
@@ -89,6 +92,71 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(weight.CueStrength, Is.EqualTo(1.0));
         }
     
+
+        /// <summary>Rest 0.8 s, lift 0.3 m in <paramref name="durations"/>[i] s (minimum jerk), hold 0.6 s, lower in 0.6 s, per lift.</summary>
+        static double GolfBallHeight(double t, double rest, double[] durations)
+        {
+            foreach (double duration in durations)
+            {
+                double length = 0.8 + duration + 0.6 + 0.6;
+                if (t < length)
+                {
+                    if (t < 0.8) return rest;
+                    if (t < 0.8 + duration) return rest + 0.3 * MinimumJerk((t - 0.8) / duration);
+                    if (t < 1.4 + duration) return rest + 0.3;
+                    return rest + 0.3 * (1 - MinimumJerk((t - 1.4 - duration) / 0.6));
+                }
+                t -= length;
+            }
+            return rest;
+        }
+
+        static double MinimumJerk(double u) { u = System.Math.Max(0, System.Math.Min(1, u)); return u * u * u * (10 - 15 * u + 6 * u * u); }
+
+        /// <summary>The calibration sample with a hand that makes <paramref name="durations"/>' golf-ball lifts, frame by frame
+        /// through Update (nothing called on the cue-strength calibrator).</summary>
+        static (StandardSpeedCalibrator speed, CueStrengthCalibrator cue) LiftTheGolfBall(double[] durations)
+        {
+            var root = new GameObject("Sample").transform;
+            var handObject = new GameObject("Hand");
+            const float rest = 0.8f;
+            handObject.transform.position = new Vector3(0, rest, 0.45f);
+            var hand = handObject.AddComponent<TransformHandPoseSource>();
+            StandardSpeedCalibrator speed = SampleContent.CalibrationStation(root, hand);
+            speed.LiftsWanted = durations.Length;
+            var cue = GameObject.Find("Cue Strength Calibrator").GetComponent<CueStrengthCalibrator>();
+            Frames.Run(1);
+            double seconds = 0;
+            foreach (double d in durations) seconds += 0.8 + d + 1.2;
+            for (double t = 0; t < seconds + 1; t += Frames.DefaultDuration)
+            {
+                handObject.transform.position = new Vector3(0, (float)GolfBallHeight(t, rest, durations), 0.45f);
+                Frames.Run(1);
+            }
+            return (speed, cue);
+        }
+
+        [Test]
+        public void AcceptedGolfBallLiftsStartTheStaircaseByThemselves()
+        {
+            var (speed, cue) = LiftTheGolfBall(new[] { 0.50, 0.55, 0.48 });
+            Assert.That(speed.CurrentPhase, Is.EqualTo(CalibrationPhase.Accepted), speed.Message);
+            Assert.That(cue.IsRunning, Is.True, "the staircase began when the lifts were accepted: " + cue.Error);
+            Assert.That(cue.Task.Session, Is.Not.Null);
+            Assert.That(cue.Task.Session.Staircase, Is.Not.Null, "the cue-strength step's 1-up-2-down staircase");
+            Assert.That(cue.Task.Session.IsFinished, Is.False);
+            Assert.That(cue.Task.Condition, Is.EqualTo(CueStrengthStep.Condition));
+        }
+
+        [Test]
+        public void RejectedGolfBallLiftsDoNotStartIt()
+        {
+            // Wildly inconsistent paces (0.25, 0.6 and 2 s for the same 0.3 m): the station rejects them.
+            var (speed, cue) = LiftTheGolfBall(new[] { 0.25, 0.6, 2.0 });
+            Assert.That(speed.CurrentPhase, Is.EqualTo(CalibrationPhase.Rejected), speed.Message);
+            Assert.That(cue.IsRunning, Is.False);
+            Assert.That(cue.Task.Session == null || cue.Task.Session.Staircase == null, Is.True, "no staircase was begun");
+        }
 
         [Test]
         public void APaperLiteralPresetRunsThePaperAsPrinted()

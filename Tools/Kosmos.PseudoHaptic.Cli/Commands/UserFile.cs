@@ -41,7 +41,7 @@ public static class UserFile
     }
 
     /// <summary>The file tune writes.</summary>
-    public static string Format(string participant, string condition, double standardKg, double jndKg, double weber, CueStrengthTuning t, int trials)
+    public static string Format(string participant, string condition, double standardKg, double jndKg, double weber, CueStrengthTuning t, int trials, double fittedCue, double confidence)
     {
         using var stream = new MemoryStream();
         using (var w = new Utf8JsonWriter(stream, new JsonWriterOptions { Indented = true, Encoder = System.Text.Encodings.Web.JavaScriptEncoder.UnsafeRelaxedJsonEscaping }))
@@ -55,11 +55,14 @@ public static class UserFile
             w.WriteNumber("weber", weber);
             w.WriteNumber("standardKg", standardKg);
             w.WriteNumber("jndKg", jndKg);
+            w.WriteNumber("confidence", confidence);
+            w.WriteNumber("jndKgUpper", t.JndKg);
             w.WriteNumber("trials", trials);
             w.WriteStartArray("masses");
             foreach (double m in t.Masses) w.WriteNumberValue(m);
             w.WriteEndArray();
-            w.WriteString("model", "rise ratio: s is the smallest strength at which adjacent masses differ by the JND's difference in ln(object rise / hand rise) on the reference lift (0.2 m in 0.6 s, paper-experiment, v_std 0.5 m/s); ALGORITHM.md section 12");
+            w.WriteString("model", "rise ratio: the answers are fitted on c = ln(object rise / hand rise) on the reference lift (0.2 m in 0.6 s, paper-experiment, v_std 0.5 m/s, s = 1); s is the smallest strength at which adjacent masses differ in c by the JND's upper confidence bound; ALGORITHM.md section 12");
+            w.WriteNumber("fittedCue", fittedCue);
             w.WriteNumber("thresholdCue", t.ThresholdCue);
             w.WriteNumber("adjacentCue", t.AdjacentCue);
             w.WriteEndObject();

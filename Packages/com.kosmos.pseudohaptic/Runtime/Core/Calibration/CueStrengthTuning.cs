@@ -46,20 +46,74 @@ namespace Kosmos.PseudoHaptic
         /// <summary>
         /// Tunes for a person whose JND is <paramref name="jndKg"/> at the standard <paramref name="standardKg"/> (both finite,
         /// &gt; 0), for a scene of <paramref name="masses"/> (at least two, each finite and &gt; 0; sorted here), a user of
-        /// standard speed <paramref name="standardSpeed"/>. Bad arguments throw naming the argument.
+        /// standard speed <paramref name="standardSpeed"/>: the threshold cue is Δc* = |c(m₀ + JND, 1) − c(m₀, 1)|. Bad
+        /// arguments throw naming the argument. A JND measured in kg by a Gaussian in kg is not the model's (the cue is not
+        /// linear in kg); <c>tune</c> and the headset staircase measure Δc* in the cue itself (<see cref="SolveForThresholdCue"/>).
         /// </summary>
         public static CueStrengthTuning Solve(double standardKg, double jndKg, IReadOnlyList<double> masses, double standardSpeed = WeightSolver.DefaultStandardSpeed)
         {
             ConfigurationGuard.Positive(standardKg, nameof(standardKg));
             ConfigurationGuard.Positive(jndKg, nameof(jndKg));
             ConfigurationGuard.InRange(standardSpeed, WeightSolver.MinStandardSpeed, WeightSolver.MaxStandardSpeed, nameof(standardSpeed));
+            var frames = ReferenceLift.Frames();
+            double threshold = Math.Abs(ReferenceLift.Cue(Profile, standardKg + jndKg, standardSpeed, 1, frames) - ReferenceLift.Cue(Profile, standardKg, standardSpeed, 1, frames));
+            return Tune(standardKg, jndKg, threshold, masses, standardSpeed, frames);
+        }
+
+        /// <summary>
+        /// Tunes for a person whose threshold, measured in the cue itself at the standard <paramref name="standardKg"/> and
+        /// s = 1, is <paramref name="thresholdCue"/> = Δc* (the 75 % point's distance in c, finite, &gt; 0): the psychometric
+        /// function fitted on <see cref="CueDifference"/> rather than on kg. <see cref="JndKg"/> is then the mass above the
+        /// standard whose cue lies Δc* below the standard's (the JND in kg this threshold means there), so that
+        /// <see cref="Solve"/>(standardKg, JndKg) gives the same strength.
+        /// </summary>
+        public static CueStrengthTuning SolveForThresholdCue(double standardKg, double thresholdCue, IReadOnlyList<double> masses, double standardSpeed = WeightSolver.DefaultStandardSpeed)
+        {
+            ConfigurationGuard.Positive(standardKg, nameof(standardKg));
+            ConfigurationGuard.Positive(thresholdCue, nameof(thresholdCue));
+            ConfigurationGuard.InRange(standardSpeed, WeightSolver.MinStandardSpeed, WeightSolver.MaxStandardSpeed, nameof(standardSpeed));
+            var frames = ReferenceLift.Frames();
+            return Tune(standardKg, JndKgOfCue(standardKg, thresholdCue, standardSpeed, frames), thresholdCue, masses, standardSpeed, frames);
+        }
+
+        /// <summary>
+        /// The stimulus of the model's observer: c(standard, 1) − c(comparison, 1) on the reference lift, the cue by which a
+        /// comparison rendered at s = 1 looks heavier than the standard (positive when heavier, 0 at the standard). NaN when
+        /// either object does not rise on the lift.
+        /// </summary>
+        public static double CueDifference(double standardKg, double comparisonKg, double standardSpeed, TraceFrame[] frames)
+        {
+            double d = ReferenceLift.Cue(Profile, standardKg, standardSpeed, 1, frames) - ReferenceLift.Cue(Profile, comparisonKg, standardSpeed, 1, frames);
+            return double.IsInfinity(d) ? double.NaN : d;
+        }
+
+        /// <summary>The mass above <paramref name="standardKg"/> whose cue (s = 1) lies <paramref name="thresholdCue"/> below the
+        /// standard's, by bisection (the cue falls with mass); at most 1000 × the standard.</summary>
+        static double JndKgOfCue(double standardKg, double thresholdCue, double standardSpeed, TraceFrame[] frames)
+        {
+            double c0 = ReferenceLift.Cue(Profile, standardKg, standardSpeed, 1, frames);
+            double lo = standardKg, hi = standardKg;
+            while (true)
+            {
+                hi *= 2;
+                if (hi > 1000 * standardKg) return 1000 * standardKg - standardKg;
+                if (c0 - ReferenceLift.Cue(Profile, hi, standardSpeed, 1, frames) >= thresholdCue) break;
+                lo = hi;
+            }
+            for (int i = 0; i < 60 && hi - lo > 1e-12 * hi; i++)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (c0 - ReferenceLift.Cue(Profile, mid, standardSpeed, 1, frames) >= thresholdCue) hi = mid; else lo = mid;
+            }
+            return hi - standardKg;
+        }
+
+        static CueStrengthTuning Tune(double standardKg, double jndKg, double threshold, IReadOnlyList<double> masses, double standardSpeed, TraceFrame[] frames)
+        {
             if (masses == null || masses.Count < 2) throw new ArgumentException("masses needs at least two masses.", nameof(masses));
             var sorted = new List<double>(masses.Count);
             foreach (double m in masses) sorted.Add(ConfigurationGuard.Positive(m, nameof(masses)));
             sorted.Sort();
-            var frames = ReferenceLift.Frames();
-            var profile = Profile;
-            double threshold = Math.Abs(ReferenceLift.Cue(profile, standardKg + jndKg, standardSpeed, 1, frames) - ReferenceLift.Cue(profile, standardKg, standardSpeed, 1, frames));
             var t = new CueStrengthTuning { StandardKg = standardKg, JndKg = jndKg, StandardSpeed = standardSpeed, ThresholdCue = threshold, Masses = sorted };
             double lo = WeightSolver.MinCueStrength, hi = WeightSolver.MaxCueStrength;
             if (AdjacentCueAt(sorted, lo, standardSpeed, frames) >= threshold) t.Set(lo, true, sorted, frames);
