@@ -87,8 +87,11 @@ static class Program
         stdout.WriteLine("ready " + task.Session.AnsweredCount.ToString(CultureInfo.InvariantCulture) + " " + panel.Session.AnsweredCount.ToString(CultureInfo.InvariantCulture));
         stdout.Flush();
 
+        // What an acknowledgement names is set before the answer is given: the write can return, and Answer's own
+        // pump deliver its acknowledgement, before Answer returns (then Current is already the next trial).
         string pending = null;
-        task.Saved += () => Ack("trial " + pending);
+        Trial answered = null;
+        task.Saved += () => Ack("trial " + TrialsCsv.FormatRow(answered));
         panel.Answered += s => Ack("item " + pending);
         while (!task.Session.IsFinished)
         {
@@ -96,8 +99,8 @@ static class Program
             task.NoteLift(false, true);
             Trial trial = task.Session.Current;
             var side = Choice(seed, participant, "trial " + trial.Index, 2) == 0 ? PairSide.Left : PairSide.Right;
+            answered = trial;
             if (!task.Answer(side, false) && !task.IsSaving) throw new InvalidOperationException("not taken: " + task.Error);
-            pending = TrialsCsv.FormatRow(task.Session.Current);
             while (task.IsSaving)
             {
                 Thread.Sleep(1); // a frame
@@ -109,8 +112,8 @@ static class Program
             Questionnaire q = panel.Session.CurrentQuestionnaire;
             QuestionnaireItem item = panel.Session.CurrentItem;
             int value = q.ScaleMin + Choice(seed, participant, q.Id + " " + item.Number, q.ScaleMax - q.ScaleMin + 1);
-            if (!panel.Answer(value) && !panel.IsSaving) throw new InvalidOperationException("not taken: " + panel.Error);
             pending = ResponsesCsv.FormatRow(new Response(participant, q.Id, item.Number, value));
+            if (!panel.Answer(value) && !panel.IsSaving) throw new InvalidOperationException("not taken: " + panel.Error);
             while (panel.IsSaving)
             {
                 Thread.Sleep(1);
