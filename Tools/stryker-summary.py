@@ -8,7 +8,8 @@
 
 The argument is a report file or a folder holding one (out/stryker/PIECE from Tools/stryker-piece.sh, whose
 run.txt gives the commit, start and end). Score = (killed + timeout) / (killed + timeout + survived + no
-coverage), as Stryker computes it; compile errors and ignored mutants are left out, as Stryker does. The row also
+coverage), as Stryker computes it; compile errors and ignored mutants are left out, as Stryker does ("ignored"
+counts those of the piece's files: `// Stryker disable` comments and Stryker's own filters, not the mutate filter). The row also
 gives the score with timeouts counted as survivors (a lower bound; quality.md, "Timeouts").
 Python 3 standard library only. Exit 2 on a missing or unreadable report.
 """
@@ -46,6 +47,8 @@ def counts(mutants):
     c = {s: 0 for s in COUNTED + ("CompileError", "Ignored", "Other")}
     for m in mutants:
         s = m.get("status")
+        if s == "Ignored" and "mutate filter" in (m.get("statusReason") or ""):
+            continue  # outside the piece (-m), not a mutant of it
         c[s if s in c else "Other"] += 1
     return c
 
