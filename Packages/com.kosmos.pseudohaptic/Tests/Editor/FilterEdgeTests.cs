@@ -94,6 +94,16 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void OneSecondAverageGivesTheLastPoseItselfWhenItIsAlone()
+        {
+            // 0.1 + 0.2 − 0.1 is 0.20000000000000004 in doubles: alone, the newest pose is returned, not the running sum.
+            var f = new OneSecondAverage(1.0).Create();
+            f.Reset(0.1);
+            f.Filter(0.2, true, 0.5, 0.5);
+            Assert.That(f.Filter(0.2, false, 0, 0.5), Is.EqualTo(0.2));
+        }
+
+        [Test]
         public void OneSecondAverageAtCapacityDropsTheOldestFirst()
         {
             var f = new OneSecondAverage(10, 3).Create();

@@ -72,6 +72,20 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void OnlyTheFramesTheHandWasMissedInCountAsUnseen()
+        {
+            // 0.1 s seen, then 0.05 s missed: window min(0.15, 0.05 + 0.05) = 0.1 s, 1 m; not the whole 0.15 s.
+            var r = At(0);
+            for (int i = 0; i < 10; i++) r.Tick(0.01, Longest);
+            for (int i = 0; i < 5; i++) { r.Tick(0.01, Longest); r.Miss(); }
+            Assert.That(r.TryAccept(1.2, 1, 0, Speed), Is.False);
+            var s = At(0);
+            for (int i = 0; i < 10; i++) s.Tick(0.01, Longest);
+            for (int i = 0; i < 5; i++) { s.Tick(0.01, Longest); s.Miss(); }
+            Assert.That(s.TryAccept(0.95, 1, 0, Speed), Is.True);
+        }
+
+        [Test]
         public void AHitchCountsAsUnseenBeyondTheLongestFrame()
         {
             var r = At(0);
