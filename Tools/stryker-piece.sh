@@ -1,0 +1,94 @@
+#!/usr/bin/env bash
+# Runs Stryker.NET on one piece of the package (quality.md, "Mutation score"), so that no run needs more than
+# about 40 minutes of the shared 2-core machine. The piece's files are given as --mutate globs to the config of
+# the assembly they belong to (its test project, additional timeout and mutation level stay as configured).
+#
+#   Tools/stryker-piece.sh PIECE [extra dotnet-stryker options]
+#   Tools/stryker-piece.sh --list
+#
+# Writes out/stryker/PIECE/ (Stryker's reports: reports/mutation-report.json) and out/stryker/PIECE/run.txt
+# (commit, start and end in UTC, the command), which Tools/stryker-summary.py reads. Sets
+# PSEUDOHAPTIC_SKIP_SOAK=1 (the ten-hour soak tests skip themselves) and runs at nice 15, concurrency 2
+# unless --concurrency is given after PIECE.
+set -euo pipefail
+
+root="$(cd "$(dirname "$0")/.." && pwd)"
+
+piece_dir() {
+  case "$1" in
+    logic-*) echo "Tests/Kosmos.PseudoHaptic.Logic" ;;
+    evaluation-*) echo "Tests/Kosmos.PseudoHaptic.Evaluation" ;;
+    *) echo "Tests/Kosmos.PseudoHaptic.Core" ;;
+  esac
+}
+
+# One line per glob; a leading ! excludes.
+piece_globs() {
+  local c="**/Runtime/Core" l="**/Runtime/Logic" e="**/Runtime/Evaluation"
+  case "$1" in
+    core-root) printf '%s\n' "$c/*.cs" "!$c/WeightSolver3D.cs" ;;
+    effects) printf '%s\n' "$c/Effects/*.cs" ;;
+    estimation) printf '%s\n' "$c/Estimation/*.cs" ;;
+    calibration-simulation) printf '%s\n' "$c/Calibration/*.cs" "$c/Simulation/*.cs" ;;
+    3d) printf '%s\n' "$c/WeightSolver3D.cs" ;;
+    logic-grab) printf '%s\n' "$l/ContactSet.cs" "$l/GrabFollow.cs" "$l/GrabSelection.cs" "$l/GrabbingHands.cs" \
+      "$l/HandDrawing.cs" "$l/HandGrab.cs" "$l/HeldObject.cs" "$l/PinchDetector.cs" "$l/RigHands.cs" \
+      "$l/Vector3d.cs" "$l/VelocityTracker.cs" ;;
+    logic-session) printf '%s\n' "$l/CalibrationStation.cs" "$l/FieldRules.cs" "$l/QuestionnairePanelModel.cs" \
+      "$l/SessionLog.cs" "$l/WeightSettings.cs" ;;
+    evaluation-files) printf '%s\n' "$e/AtomicFile.cs" "$e/SaveQueue.cs" "$e/CsvReader.cs" "$e/CsvTable.cs" \
+      "$e/ResponsesCsv.cs" "$e/ScoresCsv.cs" "$e/QuestionnaireJson.cs" "$e/TextWrap.cs" \
+      "$e/EvaluationFormatException.cs" ;;
+    evaluation-questionnaire) printf '%s\n' "$e/*.cs" "!$e/AtomicFile.cs" "!$e/SaveQueue.cs" "!$e/CsvReader.cs" \
+      "!$e/CsvTable.cs" "!$e/ResponsesCsv.cs" "!$e/ScoresCsv.cs" "!$e/QuestionnaireJson.cs" "!$e/TextWrap.cs" \
+      "!$e/EvaluationFormatException.cs" ;;
+    evaluation-psychometrics) printf '%s\n' "$e/Psychophysics/Distributions.cs" "$e/Psychophysics/PairedTests.cs" \
+      "$e/Psychophysics/PsychometricAnalysis.cs" "$e/Psychophysics/PsychometricBootstrap.cs" \
+      "$e/Psychophysics/PsychometricFit.cs" "$e/Psychophysics/SeededRandom.cs" \
+      "$e/Psychophysics/SimulatedObserver.cs" ;;
+    evaluation-discrimination) printf '%s\n' "$e/Psychophysics/*.cs" "!$e/Psychophysics/Distributions.cs" \
+      "!$e/Psychophysics/PairedTests.cs" "!$e/Psychophysics/PsychometricAnalysis.cs" \
+      "!$e/Psychophysics/PsychometricBootstrap.cs" "!$e/Psychophysics/PsychometricFit.cs" \
+      "!$e/Psychophysics/SeededRandom.cs" "!$e/Psychophysics/SimulatedObserver.cs" ;;
+    *) return 1 ;;
+  esac
+}
+
+pieces="core-root effects estimation calibration-simulation 3d logic-grab logic-session evaluation-files
+evaluation-questionnaire evaluation-psychometrics evaluation-discrimination"
+
+if [ "${1:-}" = "--list" ]; then
+  for p in $pieces; do
+    printf '%s (%s):' "$p" "$(piece_dir "$p")"
+    while IFS= read -r g; do printf ' -m "%s"' "$g"; done < <(piece_globs "$p")
+    printf '\n'
+  done
+  exit 0
+fi
+
+piece="${1:-}"
+if [ -z "$piece" ] || ! piece_globs "$piece" > /dev/null; then
+  echo "stryker-piece: PIECE must be one of: $(echo $pieces) (got '${piece}')" >&2
+  exit 2
+fi
+shift
+
+args=(--output "$root/out/stryker/$piece")
+case " $* " in *" --concurrency "*|*" -c "*) ;; *) args+=(--concurrency 2) ;; esac
+while IFS= read -r g; do args+=(-m "$g"); done < <(piece_globs "$piece")
+
+mkdir -p "$root/out/stryker/$piece"
+meta="$root/out/stryker/$piece/run.txt"
+{
+  echo "piece: $piece"
+  echo "commit: $(git -C "$root" rev-parse --short HEAD)$(git -C "$root" diff --quiet HEAD -- Packages Tests || echo ' (uncommitted changes)')"
+  echo "start: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "command: cd $(piece_dir "$piece") && PSEUDOHAPTIC_SKIP_SOAK=1 dotnet stryker ${args[*]} $*"
+} > "$meta"
+
+cd "$root/$(piece_dir "$piece")"
+status=0
+PSEUDOHAPTIC_SKIP_SOAK=1 nice -n 15 dotnet stryker "${args[@]}" "$@" || status=$?
+echo "end: $(date -u +%Y-%m-%dT%H:%M:%SZ)" >> "$meta"
+echo "exit: $status" >> "$meta"
+exit $status
