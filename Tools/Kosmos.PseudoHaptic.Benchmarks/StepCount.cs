@@ -1,7 +1,7 @@
 namespace Kosmos.PseudoHaptic.Benchmarks;
 
 /// <summary>
-/// <c>--steps CASE ROUNDS</c>: steps one held object (profile CASE, <c>literal</c> for the paper-literal baseline, or
+/// <c>--steps CASE ROUNDS</c>: steps one held object (profile CASE, <c>every:</c> and a profile for a new pose every frame, <c>literal</c> for the paper-literal baseline, or
 /// <c>3d:</c> and a <see cref="ThreeDimensionBenchmarks"/> case)
 /// through <see cref="HandFrames"/> ROUNDS × 8192 times and prints the last height (and the wall time per update, a rough figure). For a deterministic instruction
 /// count, run it under callgrind at two round counts: (difference of totals) / (difference of updates) is the
@@ -30,6 +30,14 @@ public static class StepCount
             clock.Start();
             for (int r = 0; r < rounds; r++) y = Round(literal);
         }
+        else if (name.StartsWith("every:", StringComparison.Ordinal))
+        {
+            // A profile with a new pose every frame (HandFrames.EveryFramePoses, 90 Hz poses): no frame is still.
+            var profile = NamedProfiles.Get(name.Substring(6));
+            var solver = HandFrames.Holding(profile);
+            clock.Start();
+            for (int r = 0; r < rounds; r++) y = Round(solver, HandFrames.EveryFramePoses, HandFrames.EveryFrameDt);
+        }
         else
         {
             var profile = name == "empty" ? new WeightProfile("empty", Array.Empty<WeightEffect>()) : NamedProfiles.Get(name);
@@ -42,11 +50,11 @@ public static class StepCount
     }
 
     // One pass over the frames per call, so that the tiered JIT optimises the loop as it would a benchmark's.
-    static double Round(WeightSolver solver)
+    static double Round(WeightSolver solver) => Round(solver, HandFrames.Samples, HandFrames.Dt);
+
+    static double Round(WeightSolver solver, HandSample[] samples, double[] dt)
     {
         double y = 0;
-        var samples = HandFrames.Samples;
-        var dt = HandFrames.Dt;
         for (int f = 0; f < samples.Length; f++) y = solver.Step(samples[f], dt[f]);
         return y;
     }

@@ -27,7 +27,7 @@ namespace Kosmos.PseudoHaptic
         public static HandSample Lost => new HandSample(double.NaN, false, false);
 
         /// <summary>A height the solver can follow: finite and within ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
-        public static bool IsUsableHeight(double y) => !double.IsNaN(y) && System.Math.Abs(y) < WeightSolver.MaxCoordinate;
+        public static bool IsUsableHeight(double y) => System.Math.Abs(y) < WeightSolver.MaxCoordinate; // NaN compares false: not usable
 
         /// <summary>The solver can follow this pose: tracked, with a usable height (confidence is an effect's call).</summary>
         public bool IsUsable => IsTracked && IsUsableHeight(Y);

@@ -42,6 +42,7 @@ namespace Kosmos.PseudoHaptic
         LastWeight _last;
         HandSample _lastSample;  // the last sample a frame ran the pipeline for
         bool _canBeStill;        // after that frame nothing moves: the same sample again may be a still frame
+        bool _stillKnown;        // …and the effects said they would leave the hold as it is (EffectsStill, asked once)
         bool _gatesWorkspace = true;
 
         /// <summary>Whether this solver's plausibility gate judges the heights it is given against its workspace
@@ -216,7 +217,7 @@ namespace Kosmos.PseudoHaptic
         void ForgetLastFrame()
         {
             _last.Forget();
-            _canBeStill = false;
+            _canBeStill = _stillKnown = false;
         }
 
         /// <summary>Ends the hold; further steps return the object's last height.</summary>
@@ -231,24 +232,35 @@ namespace Kosmos.PseudoHaptic
             // to 1e308) as an hour's hitch.
             if (!(dt > 0)) dt = 0;
             else if (dt > SolverLimits.LongestHitch) dt = SolverLimits.LongestHitch;
-            // Compensated (Kahan) sum: the hold's clock keeps the microsecond over millions of frames.
-            double add = dt - _state.TimeCompensation, sum = _state.Time + add;
-            _state.TimeCompensation = (sum - _state.Time) - add;
-            _state.Time = sum;
 
             // A still frame: the sample repeats the last one's bit for bit (a 30 Hz pose over 72–120 Hz frames) and
             // nothing in the hold moves on its own, so the pipeline would leave everything as it is: only the time since
             // the pose passes, and the object stays (bit for bit what the pipeline returns: StillFrameTests). Not when the repeated
             // pose is due to enter the steady window again (SolverLimits.RepeatTime): that frame runs the pipeline.
-            if (_canBeStill && SameSample(in sample, in _lastSample) && _state.HeldFor + dt < SolverLimits.RepeatTime)
+            // Whether the effects would leave the hold as it is is asked here, on the first frame that repeats the last
+            // pipeline frame's sample, before the clock advances (so every field they read is as that frame left it), and kept
+            // for the still frames after it (_stillKnown): a frame followed by a new pose never asks.
+            if (_canBeStill && SameSample(in sample, in _lastSample) && _state.HeldFor + dt < SolverLimits.RepeatTime
+                && (_stillKnown || (_canBeStill = _stillKnown = EffectsStill())))
             {
+                AdvanceClock(dt);
                 _state.HeldFor += dt;
                 _state.Estimator.Advance(dt, _constants.Limits.MaxFrameTime);
                 var advancing = Profile.AdvancingWhenStill;
                 for (int i = 0; i < advancing.Length; i++) advancing[i].AdvanceStill(ref _state, in _constants, dt);
                 return _state.ObjectY;
             }
+            AdvanceClock(dt);
             return RunPipeline(in sample, dt);
+        }
+
+        /// <summary>Compensated (Kahan) sum: the hold's clock keeps the microsecond over millions of frames.</summary>
+        [System.Runtime.CompilerServices.MethodImpl(System.Runtime.CompilerServices.MethodImplOptions.AggressiveInlining)]
+        void AdvanceClock(double dt)
+        {
+            double add = dt - _state.TimeCompensation, sum = _state.Time + add;
+            _state.TimeCompensation = (sum - _state.Time) - add;
+            _state.Time = sum;
         }
 
         /// <summary>The frame's pipeline (kept apart from <see cref="Step"/> so that a still frame does not pay for its
@@ -343,7 +355,9 @@ namespace Kosmos.PseudoHaptic
             // Whether the input and position effects would change anything (settling, a speed cap catching up) is theirs to
             // say (WeightEffect.IsStill); a hand filter may move with time alone.
             _lastSample = sample;
-            _canBeStill = f.Usable && _filter == null && _state.Glide == 0 && _last.IsFor(f.HandAfter, _state.Base) && EffectsStill();
+            // Whether the input and position effects would change anything is asked only when the same sample comes again (Step).
+            _canBeStill = f.Usable && _filter == null && _state.Glide == 0 && _last.IsFor(f.HandAfter, _state.Base);
+            _stillKnown = false;
             return _state.ObjectY;
         }
 

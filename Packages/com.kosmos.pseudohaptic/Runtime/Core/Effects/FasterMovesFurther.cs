@@ -143,7 +143,8 @@ namespace Kosmos.PseudoHaptic
             state.RiseTopTime = time;
             // The mean speed from where the rise left the base to its top: a function of the two ends. At least one 60 Hz
             // pose period of time.
-            double mean = (lift - state.RiseStartLift) / Math.Max(time - state.RiseStartTime, 1.0 / 60);
+            double span = time - state.RiseStartTime; // never NaN (clock times); a comparison, not Math.Max's call
+            double mean = (lift - state.RiseStartLift) / (span > 1.0 / 60 ? span : 1.0 / 60);
             if (mean == state.Pace) return false;
             state.Pace = mean;
             return true;

@@ -99,9 +99,11 @@ namespace Kosmos.PseudoHaptic
             // Speed is measured against the poses' own clock; without it (or when it steps back), against the frames'
             // time since the last pose, but never less than a 60 Hz pose period: two poses can land in one short frame.
             bool hasTime = double.IsFinite(f.PoseTime), hadTime = double.IsFinite(_poseTime);
+            // Comparisons, not Math.Max (a call where nothing inlines it): the time since the pose is a sum of sanitized frame
+            // times and the pose interval a positive difference, never NaN, and both bounds are positive, so no signed zero.
             double interval = hasTime && hadTime && f.PoseTime > _poseTime ? f.PoseTime - _poseTime
-                : Math.Max(_sincePose, MinPosePeriod);
-            interval = Math.Max(interval, 1e-4);
+                : (_sincePose > MinPosePeriod ? _sincePose : MinPosePeriod);
+            if (interval < 1e-4) interval = 1e-4;
             double delta = f.PoseY - _poseY;
 
             f.Bridged = _lost;
