@@ -7,6 +7,8 @@ using Kosmos.PseudoHaptic.Benchmarks;
 //   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --filter '*Batch*'
 //   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --interleaved   (issue 10's cases, alternating)
 //   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --steps paper 20   (for callgrind: StepCount)
+//   dotnet run -c Release --project Tools/Kosmos.PseudoHaptic.Benchmarks -- --ablation paper   (each effect taken out in turn: EffectAblation)
 if (args.Length == 1 && args[0] == "--interleaved") { InterleavedTiming.Run(Console.Out); return; }
+if (args.Length == 2 && args[0] == "--ablation") { EffectAblation.Run(args[1], Console.Out); return; }
 if (args.Length == 3 && args[0] == "--steps") { StepCount.Run(args[1], int.Parse(args[2]), Console.Out); return; }
 BenchmarkSwitcher.FromAssembly(typeof(BenchmarkConfig).Assembly).Run(args, new BenchmarkConfig());
