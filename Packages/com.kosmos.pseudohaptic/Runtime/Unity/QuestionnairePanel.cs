@@ -55,6 +55,7 @@ namespace Kosmos.PseudoHaptic
 
         QuestionnairePanelModel _model;
         QuestionnairePanelParts _parts;
+        SaveLifecycle _saves; // a pause, quitting, the end: waiting for the answer being written
 
         public QuestionnairePanelModel Model => _model ?? (_model = CreateModel());
         public QuestionnaireSession Session => Model.Session; // null before Begin
@@ -133,27 +134,12 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Waits up to <paramref name="timeoutMs"/> for the answer being written and shows the result (a pause, quitting, a test). True when nothing is left unsaved.</summary>
-        public bool WaitForSaves(int timeoutMs = 5000)
-        {
-            if (_model == null) return true;
-            bool saved = _model.Flush(timeoutMs);
-            Show();
-            return saved;
-        }
+        public bool WaitForSaves(int timeoutMs = SaveLifecycle.TimeoutMs) => Saves.Wait(timeoutMs);
 
-        void OnApplicationPause(bool paused)
-        {
-            if (paused) WaitForSaves();
-        }
-
-        void OnApplicationQuit() => WaitForSaves();
-
-        void OnDestroy()
-        {
-            if (_model == null) return;
-            _model.Flush();
-            _model.Saver.Dispose();
-        }
+        SaveLifecycle Saves => _saves ?? (_saves = new SaveLifecycle(() => _model?.Saver, Show));
+        void OnApplicationPause(bool paused) => Saves.OnPause(paused);
+        void OnApplicationQuit() => Saves.OnQuit();
+        void OnDestroy() => Saves.OnDestroy();
 
         void Awake()
         {

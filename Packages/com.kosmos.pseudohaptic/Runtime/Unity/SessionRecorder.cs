@@ -30,6 +30,7 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] int _framesPerHold = HoldRecording.DefaultCapacity;
 
         SessionLog _log;
+        SaveLifecycle _saves; // a pause, quitting, the end: writing running holds and waiting for the writer
 
         public SessionLog Log => _log ?? (_log = CreateLog());
         public string SessionFolder => Log.SessionFolder;
@@ -87,27 +88,16 @@ namespace Kosmos.PseudoHaptic
             if (_log != null) _log.Pump(); // acknowledgements of written holds, retries of failed ones
         }
 
-        void OnApplicationPause(bool paused)
-        {
-            if (paused) FlushActive();
-        }
+        SaveLifecycle Saves => _saves ?? (_saves = new SaveLifecycle(() => _log?.Saver, null, () => Log.FlushActive()));
+        void OnApplicationPause(bool paused) => Saves.OnPause(paused);
+        void OnApplicationQuit() => Saves.OnQuit();
+        void OnDestroy() => Saves.OnDestroy(); // OnDisable has written and waited for everything: this stops the writer
 
-        void OnApplicationQuit() => FlushActive();
-
-        void OnDestroy()
-        {
-            if (_log != null) _log.Saver.Dispose();
-        }
-
-        /// <summary>Writes every hold still running as far as it got, and waits (up to 5 s) for every queued write.</summary>
-        public void FlushActive()
-        {
-            Log.FlushActive();
-            Log.Drain();
-        }
+        /// <summary>Writes every hold still running as far as it got, and waits (up to 5 s) for every queued write (what a pause and quitting do).</summary>
+        public void FlushActive() => Saves.OnQuit();
 
         /// <summary>Waits up to <paramref name="timeoutMs"/> for every queued write and delivers <see cref="HoldWritten"/>. True when nothing is left unwritten.</summary>
-        public bool WaitForSaves(int timeoutMs = 5000) => Log.Drain(timeoutMs);
+        public bool WaitForSaves(int timeoutMs = SaveLifecycle.TimeoutMs) => Saves.Wait(timeoutMs);
 
         /// <summary>Files written but not yet acknowledged (being written, or failed and waiting to be tried again).</summary>
         public int PendingWrites => Log.PendingWrites;
