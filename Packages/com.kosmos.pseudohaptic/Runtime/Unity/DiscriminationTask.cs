@@ -1,5 +1,3 @@
-using System;
-using System.IO;
 using Kosmos.PseudoHaptic.Evaluation;
 using UnityEngine;
 
@@ -17,11 +15,12 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     /// <remarks>
     /// The two objects must take their mass from <c>Explicit Mass Kg</c> (Mass = Explicit); the task sets it
-    /// for every trial. The trials file is read by <c>pseudohaptic psychometric</c>.
+    /// for every trial. The trials file is read by <c>pseudohaptic psychometric</c>. The inspector's settings both
+    /// ways: DiscriminationTask.Settings.cs; the two objects: DiscriminationTask.Objects.cs.
     /// </remarks>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Discrimination Task")]
-    public sealed class DiscriminationTask : MonoBehaviour
+    public sealed partial class DiscriminationTask : MonoBehaviour
     {
         [Header("Participant and file")]
         [Tooltip("The participant's id as the trials file names it.")]
@@ -73,7 +72,7 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] float _releaseTime = (float)PokeDebounce.DefaultReleaseTime;
 
         DiscriminationTaskModel _model;
-        Vector3 _leftHome, _rightHome;
+        SaveLifecycle _saves; // a pause, quitting, the end: waiting for the answer being written
 
         public DiscriminationTaskModel Model => _model ?? (_model = CreateModel());
         public DiscriminationSession Session => Model.Session;
@@ -90,51 +89,6 @@ namespace Kosmos.PseudoHaptic
             _rightButton = rightButton;
             _display = display;
         }
-
-        /// <summary>The inspector's plan and staircase settings.</summary>
-        public DiscriminationSettings Settings => new DiscriminationSettings
-        {
-            Procedure = _procedure, StandardKg = _standardKg, Seed = _seed,
-            ComparisonKg = DiscriminationSettings.ToDoubles(_comparisonKg), Repetitions = _repetitions,
-            CatchKg = DiscriminationSettings.ToDoubles(_catchKg), CatchRepetitions = _catchRepetitions,
-            StaircaseStartKg = _staircaseStartKg, StaircaseStepKg = _staircaseStepKg, HalvingReversals = _halvingReversals,
-            MinStepKg = _minStepKg, StopAfterReversals = _stopAfterReversals, LastReversals = _lastReversals, MaxTrials = _maxTrials,
-        };
-
-        /// <summary>Takes the procedure, plan and staircase of <paramref name="settings"/> (as the inspector would set them), for a
-        /// task another component runs (the calibration's cue-strength staircase, <see cref="CueStrengthCalibrator"/>).</summary>
-        public void Use(DiscriminationSettings settings)
-        {
-            if (settings == null) throw new ArgumentNullException(nameof(settings));
-            _procedure = settings.Procedure;
-            _standardKg = (float)settings.StandardKg;
-            _comparisonKg = ToFloats(settings.ComparisonKg);
-            _repetitions = settings.Repetitions;
-            _catchKg = ToFloats(settings.CatchKg);
-            _catchRepetitions = settings.CatchRepetitions;
-            _seed = settings.Seed;
-            _staircaseStartKg = (float)settings.StaircaseStartKg;
-            _staircaseStepKg = (float)settings.StaircaseStepKg;
-            _halvingReversals = settings.HalvingReversals;
-            _minStepKg = (float)settings.MinStepKg;
-            _stopAfterReversals = settings.StopAfterReversals;
-            _lastReversals = settings.LastReversals;
-            _maxTrials = settings.MaxTrials;
-        }
-
-        static float[] ToFloats(double[] values)
-        {
-            if (values == null) return new float[0];
-            var f = new float[values.Length];
-            for (int i = 0; i < f.Length; i++) f[i] = (float)values[i];
-            return f;
-        }
-
-        /// <summary>The plan these settings give (the same for the same seed).</summary>
-        public ConstantStimuliPlan Plan() => Settings.Plan();
-
-        /// <summary>The staircase these settings give for a participant and condition (the same for the same seed).</summary>
-        public Staircase MakeStaircase(string participant, string condition) => Settings.MakeStaircase(participant, condition);
 
         /// <summary>The trials file as set (a relative path is taken under Kosmos.PseudoHaptic in persistentDataPath).</summary>
         public string TrialsFile { get => _trialsFile; set => _trialsFile = value; }
@@ -161,28 +115,18 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Waits up to <paramref name="timeoutMs"/> for the answer being written and shows the result (a pause, quitting, a test). True when nothing is left unsaved.</summary>
-        public bool WaitForSaves(int timeoutMs = 5000) => _model == null || _model.Flush(timeoutMs);
+        public bool WaitForSaves(int timeoutMs = SaveLifecycle.TimeoutMs) => Saves.Wait(timeoutMs);
 
-        void OnApplicationPause(bool paused)
-        {
-            if (paused) WaitForSaves();
-        }
-
-        void OnApplicationQuit() => WaitForSaves();
-
-        void OnDestroy()
-        {
-            if (_model == null) return;
-            _model.Flush();
-            _model.Saver.Dispose();
-        }
+        SaveLifecycle Saves => _saves ?? (_saves = new SaveLifecycle(() => _model?.Saver, Show));
+        void OnApplicationPause(bool paused) => Saves.OnPause(paused);
+        void OnApplicationQuit() => Saves.OnQuit();
+        void OnDestroy() => Saves.OnDestroy();
 
         void Awake()
         {
             if (_leftButton != null) _leftButton.Initialize(this, PairSide.Left);
             if (_rightButton != null) _rightButton.Initialize(this, PairSide.Right);
-            if (_left != null) _leftHome = _left.transform.position;
-            if (_right != null) _rightHome = _right.transform.position;
+            RememberHomes();
         }
 
         void OnEnable() => PseudoHapticWeight.HoldBegan += OnHoldBegan;
@@ -197,15 +141,6 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>Begins or resumes the session of <see cref="Participant"/> in <see cref="Condition"/>. False (and <see cref="Error"/>) when it cannot.</summary>
         public bool Begin() => Shown(Model.Begin(ObjectsError, Settings, _participant, _condition, TrialsPath) && Applied());
-
-        /// <summary>Why the two objects cannot carry the trials' masses (one missing, or one whose mass does not come from Explicit Mass Kg), or null.</summary>
-        public string ObjectsError => _left == null || _right == null ? "the left and right objects are not set"
-            : WeightSettings.ExplicitMassError("left", _left.Mass) ?? WeightSettings.ExplicitMassError("right", _right.Mass);
-
-        void OnHoldBegan(PseudoHapticWeight weight)
-        {
-            if (Model.NoteLift(weight == _left, weight == _right)) Show();
-        }
 
         /// <summary>A fingertip's contact with a button begins: a poke answers (see <see cref="PokeDebounce"/>).</summary>
         public void Touch(DiscriminationButton button, double now)
@@ -222,24 +157,7 @@ namespace Kosmos.PseudoHaptic
         /// failed (then it is kept, shown as not saved, and written again until it is).
         /// </summary>
         public bool Answer(PairSide heavier)
-            => Shown(Model.Answer(heavier, (_left != null && _left.IsHeld) || (_right != null && _right.IsHeld)));
-
-        /// <summary>The current trial's masses on the objects, which go back to where they started.</summary>
-        bool Applied()
-        {
-            if (!Model.HasTrial) return true;
-            Place(_left, _leftHome, (float)Session.MassAt(PairSide.Left));
-            Place(_right, _rightHome, (float)Session.MassAt(PairSide.Right));
-            return true;
-        }
-
-        static void Place(PseudoHapticWeight weight, Vector3 home, float massKg)
-        {
-            weight.ExplicitMassKg = massKg;
-            weight.transform.position = home;
-            var body = weight.GetComponent<Rigidbody>();
-            if (body != null && !body.isKinematic) body.velocity = body.angularVelocity = Vector3.zero;
-        }
+            => Shown(Model.Answer(heavier, AnyHeld));
 
         bool Shown(bool result)
         {
