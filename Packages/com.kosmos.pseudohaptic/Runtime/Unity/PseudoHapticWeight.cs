@@ -13,10 +13,12 @@ namespace Kosmos.PseudoHaptic
     /// its hand's id (two hands may hold one object); it moves x and z itself unless <see cref="HeldObject.MovesHorizontal"/>,
     /// and releases when <see cref="HeldObject.BrokeAway"/> (the Rigidbody then falls). Overloads without a hand id:
     /// <see cref="PseudoHapticWeightCalls"/>. Give held objects an upright parent of unit scale. Steps allocate nothing and never write NaN.
+    /// From the settings to the solver's configuration: PseudoHapticWeight.Configuration.cs; where the held object is
+    /// written (the hold's frame, the parent's space): PseudoHapticWeight.Placement.cs.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pseudo-Haptic Weight")]
-    public sealed class PseudoHapticWeight : MonoBehaviour, IParentSpace
+    public sealed partial class PseudoHapticWeight : MonoBehaviour, IParentSpace
     {
         [Header("Mass")]
         [SerializeField] MassSource _massSource = MassSource.Rigidbody;
@@ -50,11 +52,6 @@ namespace Kosmos.PseudoHaptic
         HeldObject _hold;
         HeldBody _body;
         RigidbodyControl _rigidbodyControl;
-        HoldFrame _frame;             // the rig as it stood at the grab: the hold's frame
-        Vector3 _heldPosition;        // the object's position in that frame, as last written
-        Quaternion _heldRotation;     // and its rotation at the grab (in that frame it does not turn)
-        readonly ConfigurationWatch _watch = new ConfigurationWatch();
-        string _error;
 
         /// <summary>Raised after a hold began (first hand), after each solver step, and after it ended (last hand); a throwing handler is logged.</summary>
         public static event Action<PseudoHapticWeight> HoldBegan, HoldStepped, HoldEnded;
@@ -63,42 +60,24 @@ namespace Kosmos.PseudoHaptic
         public static IReadOnlyList<PseudoHapticWeight> Enabled => s_enabled;
         public HeldObject Hold => _hold ?? (_hold = CreateHold());
         public WeightSolver Solver => Hold.Solver;
-        public string ConfigurationError => _error;
         public bool IsHeld => Hold.IsHeld;
         public double MassKg => Hold.MassKg;
         public double Gain => Solver != null ? Solver.Gain : double.NaN;
         public double StandardSpeed => Solver != null ? Solver.StandardSpeed : double.NaN;
         /// <summary>The cue strength the solver runs at (NaN until configured).</summary>
         public double CueStrength => Solver != null ? Solver.CueStrength : double.NaN;
-        /// <summary>Whether the user's stored cue strength applies (else 1).</summary>
-        public bool UserCueStrength { get => _userCueStrength; set { _userCueStrength = value; _watch.MarkDirty(); } }
         /// <summary>hand − object in the parent's space, m (its value at the grab is Solver.GrabOffset); 0 when not held.</summary>
         public double Offset => IsHeld ? Hold.Offset : 0;
         public HandSample LastHand => Hold.LastHand;
         public float LastDeltaTime => (float)Hold.LastDeltaTime;
-        /// <summary>The point the solver follows, world space (its height converted from the parent's).</summary>
-        public Vector3 HandWorldPosition => _frame.Out(Hold.HandPoint.ToUnity() + (transform.parent != null ? transform.parent.position.y : 0) * Vector3.up);
 
         /// <summary>The tracking space the hands are tracked in (null: the world); a new value applies from the next hold.</summary>
         public Transform Rig { get => _rig; set => _rig = value; }
 
-        /// <summary>A world point, now, in the frame the hold is solved in (the rig as it stood at the grab; see <see cref="HoldFrame"/>).</summary>
-        public Vector3 InHoldFrame(Vector3 world) => _frame.In(world);
-
-        /// <summary>A direction of the hold's frame (an offset, a velocity) in the world, now.</summary>
-        public Vector3 OutOfHoldFrame(Vector3 direction) => _frame.OutDirection(direction);
         public HandDrawingMode HandDrawing => _profile != null ? _profile.HandDrawing : HandDrawingMode.HandTrue;
         public Collider Collider => _volumeCollider != null ? _volumeCollider : GetComponent<Collider>();
-        public Collider VolumeCollider { get => _volumeCollider; set { _volumeCollider = value; _watch.MarkDirty(); } }
-        public PseudoHapticProfile Profile { get => _profile; set { _profile = value; _watch.MarkDirty(); } }
-        public MassSource Mass { get => _massSource; set { _massSource = value; _watch.MarkDirty(); } }
-        public float ExplicitMassKg { get => _explicitMassKg; set { _explicitMassKg = value; _watch.MarkDirty(); } }
-        public float DensityKgPerCubicMetre { get => _densityKgPerCubicMetre; set { _densityKgPerCubicMetre = value; _watch.MarkDirty(); } }
-        public StandardSpeedSource SpeedSource { get => _standardSpeedSource; set { _standardSpeedSource = value; _watch.MarkDirty(); } }
-        public float ExplicitStandardSpeed { get => _explicitStandardSpeed; set { _explicitStandardSpeed = value; _watch.MarkDirty(); } }
         public ReleaseVelocity Release { get => _releaseVelocity; set => _releaseVelocity = value; }
         Rigidbody Body => GetComponent<Rigidbody>();
-        bool NeedsConfiguration => _watch.IsStale(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
 
         HeldObject CreateHold()
         {
@@ -111,64 +90,6 @@ namespace Kosmos.PseudoHaptic
 
         void OnEnable() { s_enabled.Add(this); UserCalibrationStore.Changed += MarkDirty; Application.onBeforeRender += FollowRig; }
         void OnDisable() { Hold.EndAll(); s_enabled.Remove(this); UserCalibrationStore.Changed -= MarkDirty; Application.onBeforeRender -= FollowRig; }
-
-        // Just before the frame renders (after every LateUpdate): a rig moved late in the frame carries the held object
-        // along in this very frame. OVR moves its anchors here too; the object's place in the rig's frame stays the step's.
-        void FollowRig()
-        {
-            if (IsHeld && _frame.Rig != null) Place();
-        }
-        void MarkDirty() => _watch.MarkDirty();
-
-        void OnValidate()
-        {
-            _watch.MarkDirty();
-#if UNITY_EDITOR
-            if (_massSource == MassSource.DensityTimesVolume) StoreMeshVolume();
-#endif
-        }
-
-        /// <summary>Stores the mesh collider's volume with the component (read in the editor), so a player build that strips the mesh needs none. Allocates.</summary>
-        public bool StoreMeshVolume()
-        {
-            if (!ColliderVolume.TryReadMesh(Collider, out Mesh mesh, out double volume)) return false; // keeps what was stored
-            _storedVolumeMesh = mesh;
-            _storedMeshVolume = volume;
-            _watch.MarkDirty();
-            return true;
-        }
-
-        /// <summary>The weight model of this object's settings, or false with the reason. Reading a mesh's volume allocates.</summary>
-        public bool TryCreateModel(out WeightModel model, out string error) =>
-            WeightSettings.TryCreateModel(_massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg, Volume, name, out model, out error);
-
-        bool Volume(out double volume, out string error) => ColliderVolume.TryGet(Collider, _storedVolumeMesh, _storedMeshVolume, out volume, out error);
-
-        /// <summary>The profile this object uses: its asset's, or the "paper" preset.</summary>
-        public bool TryGetProfile(out WeightProfile profile, out string error)
-        {
-            error = null;
-            profile = NamedProfiles.Paper;
-            return _profile == null || _profile.TryBuild(out profile, out error);
-        }
-
-        public double ResolveStandardSpeed() =>
-            WeightSettings.StandardSpeed(_standardSpeedSource, _explicitStandardSpeed, UserCalibrationStore.StandardSpeedOrDefault);
-
-        /// <summary>The cue strength this object applies: the user's stored one, or 1.</summary>
-        public double ResolveCueStrength() => WeightSettings.CueStrength(_userCueStrength, UserCalibrationStore.CueStrengthOrDefault);
-
-        /// <summary>Applies the settings to the solver (also during a hold); on invalid ones logs the reason, keeps the last valid configuration, returns false.</summary>
-        public bool Configure()
-        {
-            _watch.Configured(_profile != null ? _profile : null, _profile != null ? _profile.Version : 0);
-            TryGetProfile(out WeightProfile profile, out string profileError);
-            bool ok = WeightSettings.TryConfigure(Hold, _massSource, Body != null ? Body.mass : double.NaN, _densityKgPerCubicMetre, _explicitMassKg,
-                                                  Volume, name, profile, profileError, ResolveStandardSpeed(), out double write, out _error, ResolveCueStrength());
-            if (!ok) Debug.LogError("Pseudo-haptic weight on '" + name + "' is not configured: " + _error, this);
-            if (!double.IsNaN(write)) Body.mass = (float)write;
-            return ok;
-        }
 
         /// <summary>Hand <paramref name="hand"/> takes the object at <paramref name="handWorld"/> (a second hand joins). False when it cannot.</summary>
         public bool BeginHold(int hand, Vector3 handWorld, double poseTime = double.NaN, RigidbodyControl rigidbody = RigidbodyControl.ByThisComponent)
@@ -208,33 +129,6 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>Every hand lets go.</summary>
         public void EndHold() => Hold.EndAll();
-
-        /// <summary>A world point's height in this object's parent space, the space its local y lives in.</summary>
-        public double ParentY(Vector3 world) => transform.parent == null ? world.y : transform.parent.InverseTransformPoint(world).y;
-
-        double IParentSpace.HeightOf(Vector3d world) => ParentY(world.ToUnity());
-
-        /// <summary>The object at <paramref name="held"/> (the hold's frame) with its parent-space height <paramref name="localY"/> (NaN: kept), placed through the rig.</summary>
-        void SetHeld(Vector3 held, double localY)
-        {
-            if (double.IsFinite(localY)) // NaN: nothing to write (another hand's step)
-            {
-                Transform parent = transform.parent;
-                Vector3 local = parent != null ? parent.InverseTransformPoint(held) : held;
-                local.y = (float)localY;
-                held = parent != null ? parent.TransformPoint(local) : local;
-            }
-            if (!held.ToDouble().IsFinite) return; // never NaN on a transform
-            _heldPosition = held;
-            Place();
-        }
-
-        /// <summary>Writes the object's world pose: its place in the hold's frame, through the rig as it is now.</summary>
-        void Place()
-        {
-            transform.position = _frame.Out(_heldPosition);
-            if (_frame.Rig != null) transform.rotation = _frame.Turn * _heldRotation;
-        }
 
         void Raise(Action<PseudoHapticWeight> handlers)
         {
