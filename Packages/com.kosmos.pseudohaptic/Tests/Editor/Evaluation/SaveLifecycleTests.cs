@@ -13,61 +13,74 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     /// </summary>
     public class SaveLifecycleTests
     {
-        /// <summary>A background queue whose one write waits for <paramref name="gate"/>; the events in order go to <paramref name="log"/>.</summary>
-        static SaveQueue GatedWrite(ManualResetEventSlim gate, List<string> log)
+        /// <summary>
+        /// A background queue whose one write waits for a gate, and a lifecycle over it that logs, in order, what it
+        /// queues before waiting, the acknowledgement (or failure) of the write and what it shows.
+        /// </summary>
+        sealed class GatedWrite : IDisposable
         {
-            var queue = new SaveQueue(background: true);
-            queue.Enqueue(() => gate.Wait(10000), () => log.Add("saved"), e => log.Add("failed: " + e));
-            return queue;
-        }
+            public readonly List<string> Log = new List<string>();
+            public readonly SaveQueue Queue = new SaveQueue(background: true);
+            public readonly SaveLifecycle Life;
+            readonly ManualResetEventSlim _gate = new ManualResetEventSlim(false);
+            Thread _opener;
 
-        /// <summary>Opens <paramref name="gate"/> from another thread after <paramref name="ms"/>: the write ends while the main thread waits.</summary>
-        static Thread OpenLater(ManualResetEventSlim gate, int ms)
-        {
-            var opener = new Thread(() => { Thread.Sleep(ms); gate.Set(); });
-            opener.Start();
-            return opener;
+            public GatedWrite()
+            {
+                Queue.Enqueue(() => _gate.Wait(10000), () => Log.Add("saved"), e => Log.Add("failed: " + e));
+                Life = new SaveLifecycle(() => Queue, () => Log.Add("shown"), () => Log.Add("running queued"));
+            }
+
+            /// <summary>The write ends now.</summary>
+            public void Open() => _gate.Set();
+
+            /// <summary>The write ends <paramref name="ms"/> from now, from another thread, while the main thread waits.</summary>
+            public void OpenAfter(int ms)
+            {
+                _opener = new Thread(() => { Thread.Sleep(ms); _gate.Set(); });
+                _opener.Start();
+            }
+
+            public void Dispose()
+            {
+                _gate.Set();
+                _opener?.Join();
+                Queue.Dispose();
+                _gate.Dispose();
+            }
         }
 
         [Test]
         public void APauseWaitsForTheWriteUnderWayThenShowsItAndAResumeDoesNothing()
         {
-            var log = new List<string>();
-            using (var gate = new ManualResetEventSlim(false))
+            using (var w = new GatedWrite())
             {
-                SaveQueue queue = GatedWrite(gate, log);
-                var life = new SaveLifecycle(() => queue, () => log.Add("shown"), () => log.Add("running queued"));
+                Assert.That(w.Life.OnPause(false), Is.True);
+                Assert.That(w.Log, Is.Empty, "a resume neither queues, waits nor shows");
+                Assert.That(w.Queue.Pending, Is.EqualTo(1));
 
-                Assert.That(life.OnPause(false), Is.True);
-                Assert.That(log, Is.Empty, "a resume neither queues, waits nor shows");
-                Assert.That(queue.Pending, Is.EqualTo(1));
-
-                Thread opener = OpenLater(gate, 100);
-                Assert.That(life.OnPause(true), Is.True, "the write ended within the wait");
-                Assert.That(log, Is.EqualTo(new[] { "running queued", "saved", "shown" }), "queued what runs, waited for the acknowledgement, then showed it");
-                Assert.That(queue.Pending, Is.Zero);
-                opener.Join();
-                queue.Dispose();
+                w.OpenAfter(100);
+                Assert.That(w.Life.OnPause(true), Is.True, "the write ended within the wait");
+                Assert.That(w.Log, Is.EqualTo(new[] { "running queued", "saved", "shown" }), "queued what runs, waited for the acknowledgement, then showed it");
+                Assert.That(w.Queue.Pending, Is.Zero);
             }
         }
 
         [Test]
         public void QuittingDoesWhatAPauseDoes()
         {
-            var pause = new List<string>();
-            var quit = new List<string>();
-            foreach (bool quitting in new[] { false, true })
+            List<string> pause, quit;
+            using (var w = new GatedWrite())
             {
-                List<string> log = quitting ? quit : pause;
-                using (var gate = new ManualResetEventSlim(false))
-                {
-                    SaveQueue queue = GatedWrite(gate, log);
-                    var life = new SaveLifecycle(() => queue, () => log.Add("shown"), () => log.Add("running queued"));
-                    Thread opener = OpenLater(gate, 50);
-                    Assert.That(quitting ? life.OnQuit() : life.OnPause(true), Is.True);
-                    opener.Join();
-                    queue.Dispose();
-                }
+                w.OpenAfter(50);
+                Assert.That(w.Life.OnPause(true), Is.True);
+                pause = w.Log;
+            }
+            using (var w = new GatedWrite())
+            {
+                w.OpenAfter(50);
+                Assert.That(w.Life.OnQuit(), Is.True);
+                quit = w.Log;
             }
             Assert.That(quit, Is.EqualTo(pause));
             Assert.That(quit, Has.Count.EqualTo(3));
@@ -89,19 +102,15 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void AWaitThatRunsOutSaysSoAndStillShowsWhereTheWriteIs()
         {
-            var log = new List<string>();
-            using (var gate = new ManualResetEventSlim(false))
+            using (var w = new GatedWrite())
             {
-                SaveQueue queue = GatedWrite(gate, log);
-                var life = new SaveLifecycle(() => queue, () => log.Add("shown"));
                 var watch = System.Diagnostics.Stopwatch.StartNew();
-                Assert.That(life.Wait(100), Is.False, "the write is still under way");
+                Assert.That(w.Life.Wait(100), Is.False, "the write is still under way");
                 Assert.That(watch.ElapsedMilliseconds, Is.GreaterThanOrEqualTo(90).And.LessThan(5000), "waited about the time asked");
-                Assert.That(log, Is.EqualTo(new[] { "shown" }));
-                gate.Set();
-                Assert.That(life.Wait(), Is.True);
-                Assert.That(log, Is.EqualTo(new[] { "shown", "saved", "shown" }));
-                queue.Dispose();
+                Assert.That(w.Log, Is.EqualTo(new[] { "shown" }), "a wait queues nothing, and shows even when it ran out");
+                w.Open();
+                Assert.That(w.Life.Wait(), Is.True);
+                Assert.That(w.Log, Is.EqualTo(new[] { "shown", "saved", "shown" }));
             }
         }
 
@@ -122,16 +131,12 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void TheEndWaitsForTheQueueThenStopsTheWriterAndShowsNothing()
         {
-            var log = new List<string>();
-            using (var gate = new ManualResetEventSlim(false))
+            using (var w = new GatedWrite())
             {
-                SaveQueue queue = GatedWrite(gate, log);
-                var life = new SaveLifecycle(() => queue, () => log.Add("shown"), () => log.Add("running queued"));
-                Thread opener = OpenLater(gate, 100);
-                life.OnDestroy();
-                Assert.That(log, Is.EqualTo(new[] { "saved" }), "waited for the write, queued nothing more, showed nothing");
-                Assert.That(() => queue.Enqueue(() => { }, null, null), Throws.TypeOf<ObjectDisposedException>(), "the writer is stopped");
-                opener.Join();
+                w.OpenAfter(100);
+                w.Life.OnDestroy();
+                Assert.That(w.Log, Is.EqualTo(new[] { "saved" }), "waited for the write, queued nothing more, showed nothing");
+                Assert.That(() => w.Queue.Enqueue(() => { }, null, null), Throws.TypeOf<ObjectDisposedException>(), "the writer is stopped");
             }
         }
 
