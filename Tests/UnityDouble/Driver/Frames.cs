@@ -53,3 +53,19 @@ namespace UnityDouble
         }
     }
 }
+
+namespace UnityDouble
+{
+    /// <summary>
+    /// The application's messages, which the double's frames never send: the app paused or resumed (the headset taken
+    /// off, the menu button) and quitting. Sent to the enabled scripts on active GameObjects.
+    /// </summary>
+    public static class AppEvents
+    {
+        /// <summary>OnApplicationPause(<paramref name="paused"/>).</summary>
+        public static void Pause(bool paused) => Engine.Broadcast("OnApplicationPause", paused);
+
+        /// <summary>OnApplicationQuit().</summary>
+        public static void Quit() => Engine.Broadcast("OnApplicationQuit");
+    }
+}

@@ -220,6 +220,13 @@ namespace UnityEngine
             }
         }
 
+        /// <summary>Sends <paramref name="message"/> to every enabled script on an active GameObject, in the order they were added (the application's messages).</summary>
+        internal static void Broadcast(string message, params object[] args)
+        {
+            foreach (MonoBehaviour mb in s_behaviours.ToArray())
+                if (!mb.IsDestroyed && mb.IsEnabledState && mb.gameObject.activeInHierarchy) Send(mb, message, args);
+        }
+
         internal static bool Has(Object target, string message, int arity = 0) => Message(target.GetType(), message, arity) != null;
 
         static MethodInfo Message(Type type, string name, int arity)
