@@ -13,10 +13,11 @@ namespace Kosmos.PseudoHaptic
     /// debounce, what is shown): this reads the assigned JSON assets, forwards pokes from <see cref="PokeButton"/>s or
     /// the Interaction SDK (<see cref="PokeAt"/>), and writes the view into primitives built by
     /// <see cref="QuestionnairePanelParts"/>. The panel faces −z; its own scale should be 1 (sizes are in metres).
+    /// Its look (sizes, parts, the texts shown): QuestionnairePanel.Look.cs.
     /// </summary>
     [DisallowMultipleComponent]
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Questionnaire Panel")]
-    public sealed class QuestionnairePanel : MonoBehaviour
+    public sealed partial class QuestionnairePanel : MonoBehaviour
     {
         [Header("Questionnaires")]
         [Tooltip("The questionnaire definitions (JSON), in report order: the package's Runtime/Evaluation/Questionnaires/*.json, or translated copies.")]
@@ -54,27 +55,12 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] string _savingText = "Saving…";
 
         QuestionnairePanelModel _model;
-        QuestionnairePanelParts _parts;
         SaveLifecycle _saves; // a pause, quitting, the end: waiting for the answer being written
 
         public QuestionnairePanelModel Model => _model ?? (_model = CreateModel());
         public QuestionnaireSession Session => Model.Session; // null before Begin
         public string Error => Model.Error; // why the panel cannot run or the last answer was not saved; null when all is well
         public PokeDebounce Debounce => Model.Debounce;
-        public IReadOnlyList<PokeButton> ScaleButtons => Parts.Scale;
-        public PokeButton BackButton => Parts.Back;
-        public PokeButton NextButton => Parts.Next;
-        public string TitleText => Parts.Title.text;
-        public string ProgressText => Parts.Progress.text;
-        public string ItemText => Parts.Item.text;
-        public string MinLabelText => Parts.MinLabel.text;
-        public string MaxLabelText => Parts.MaxLabel.text;
-        public string MessageText => Parts.Message.text;
-        QuestionnairePanelParts Parts => _parts ?? (_parts = new QuestionnairePanelParts(this, new QuestionnairePanelParts.Style
-        {
-            Size = LookError == null ? _size : DefaultSize, TextSize = LookError == null ? _textSize : DefaultTextSize, Panel = _panelColor, Text = _textColor, Button = _buttonColor, Chosen = _chosenColor,
-            ButtonText = _buttonTextColor, Back = _backText, Next = _nextText,
-        }));
 
         /// <summary>Raised once when the last item has been answered; after each answer is saved.</summary>
         public event Action<QuestionnaireSession> Completed, Answered;
@@ -82,30 +68,6 @@ namespace Kosmos.PseudoHaptic
         public void InjectQuestionnaires(params TextAsset[] definitions) => _questionnaires = definitions ?? new TextAsset[0];
         public string[] Ask { get => _ask; set => _ask = value ?? new string[0]; }
 
-        /// <summary>Width and height of the panel, m (each finite, &gt; 0); set before the panel is first shown.</summary>
-        public Vector2 Size
-        {
-            get => _size;
-            set
-            {
-                FieldRules.Require(FieldRules.First(FieldRules.Positive("Size.x", value.x), FieldRules.Positive("Size.y", value.y)), nameof(Size), value.x);
-                _size = value;
-            }
-        }
-
-        /// <summary>Character size of the item text (finite, &gt; 0); set before the panel is first shown.</summary>
-        public float TextSize
-        {
-            get => _textSize;
-            set
-            {
-                FieldRules.Require(FieldRules.Positive(nameof(TextSize), value), nameof(TextSize), value);
-                _textSize = value;
-            }
-        }
-
-        /// <summary>Why the panel's look cannot be built (a size or text size that is not a positive length), or null.</summary>
-        public string LookError => FieldRules.First(FieldRules.Positive("Size.x", _size.x), FieldRules.Positive("Size.y", _size.y), FieldRules.Positive("Text Size", _textSize));
         public string Participant { get => _participant; set => _participant = value ?? ""; }
         public string ResponsesFile { get => _responsesFile; set => _responsesFile = value ?? ""; }
 
@@ -140,16 +102,6 @@ namespace Kosmos.PseudoHaptic
         void OnApplicationPause(bool paused) => Saves.OnPause(paused);
         void OnApplicationQuit() => Saves.OnQuit();
         void OnDestroy() => Saves.OnDestroy();
-
-        void Awake()
-        {
-            if (LookError != null) Debug.LogError("Questionnaire panel '" + name + "': " + LookError + "; the defaults are used", this);
-        }
-
-        void OnValidate()
-        {
-            if (LookError != null) Debug.LogError("Questionnaire panel '" + name + "': " + LookError, this);
-        }
 
         void Start()
         {
@@ -203,10 +155,5 @@ namespace Kosmos.PseudoHaptic
             return result;
         }
 
-        /// <summary>Shows the model's current view.</summary>
-        public void Show() => Parts.Apply(LookError == null ? Model.View(_size.x, _textSize) : Model.View(DefaultSize.x, DefaultTextSize));
-
-        static readonly Vector2 DefaultSize = new Vector2(0.6f, 0.42f);
-        const float DefaultTextSize = 0.004f;
     }
 }
