@@ -34,8 +34,11 @@ piece_globs() {
     logic-grab) printf '%s\n' "$l/ContactSet.cs" "$l/GrabFollow.cs" "$l/GrabSelection.cs" "$l/GrabbingHands.cs" \
       "$l/HandDrawing.cs" "$l/HandGrab.cs" "$l/HeldObject.cs" "$l/PinchDetector.cs" "$l/RigHands.cs" \
       "$l/Vector3d.cs" "$l/VelocityTracker.cs" ;;
-    logic-session) printf '%s\n' "$l/CalibrationStation.cs" "$l/FieldRules.cs" "$l/QuestionnairePanelModel.cs" \
-      "$l/SessionLog.cs" "$l/WeightSettings.cs" ;;
+    # Every other Logic file (calibration station, field rules, the questionnaire panel's model, the session log, weight
+    # and profile settings, …): a file added to Logic lands here unless it is listed above.
+    logic-session) printf '%s\n' "$l/*.cs" "!$l/ContactSet.cs" "!$l/GrabFollow.cs" "!$l/GrabSelection.cs" \
+      "!$l/GrabbingHands.cs" "!$l/HandDrawing.cs" "!$l/HandGrab.cs" "!$l/HeldObject.cs" "!$l/PinchDetector.cs" \
+      "!$l/RigHands.cs" "!$l/Vector3d.cs" "!$l/VelocityTracker.cs" ;;
     evaluation-files) printf '%s\n' "$e/AtomicFile.cs" "$e/SaveQueue.cs" "$e/CsvReader.cs" "$e/CsvTable.cs" \
       "$e/ResponsesCsv.cs" "$e/ScoresCsv.cs" "$e/QuestionnaireJson.cs" "$e/TextWrap.cs" \
       "$e/EvaluationFormatException.cs" ;;
