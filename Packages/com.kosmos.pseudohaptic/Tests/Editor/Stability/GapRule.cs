@@ -42,6 +42,7 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             double worst = double.NegativeInfinity, scale = Math.Max(1, gain);
             worstFrame = -1;
+            NearFrames.Ranges(time, out var nearFirst, out var nearLast);
             for (int i = 1; i < n; i++)
             {
                 if (time[i] < from || time[i] > to) continue;
@@ -50,8 +51,8 @@ namespace Kosmos.PseudoHaptic.Tests
                 else
                 {
                     double near = 0;
-                    for (int j = 0; j < n; j++)
-                        if (!gap[j] && Math.Abs(time[j] - time[i]) <= 0.1 + 1e-9) near = Math.Max(near, step[j]);
+                    for (int j = nearFirst[i]; j <= nearLast[i]; j++)
+                        if (!gap[j] && NearFrames.Near(time[j], time[i])) near = Math.Max(near, step[j]);
                     allowed = scale * near;
                 }
                 double excess = Math.Abs(objectY[i] - objectY[i - 1]) - allowed - Allowance;

@@ -69,13 +69,16 @@ namespace Kosmos.PseudoHaptic.Tests
                 last = i;
             }
             double worst = double.NegativeInfinity, scale = Math.Max(1, gain);
+            var times = new double[frames.Length];
+            for (int i = 0; i < frames.Length; i++) times[i] = frames[i].Time;
+            NearFrames.Ranges(times, out var nearFirst, out var nearLast);
             for (int i = 1; i < frames.Length; i++)
             {
                 double t = frames[i].Time;
                 if (t < from || t > to) continue;
                 double near = 0;
-                for (int j = 0; j < frames.Length; j++)
-                    if (Math.Abs(frames[j].Time - t) <= 0.1 + 1e-9) near = Math.Max(near, handStep[j]);
+                for (int j = nearFirst[i]; j <= nearLast[i]; j++)
+                    if (NearFrames.Near(frames[j].Time, t)) near = Math.Max(near, handStep[j]);
                 worst = Math.Max(worst, Math.Abs(objectY[i] - objectY[i - 1]) - scale * near);
             }
             return worst;
