@@ -94,6 +94,21 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheWindowAveragesRunningSumIsRecomputedEveryCapacityPoses()
+        {
+            // Four slots, a long window: 10¹⁶ three times, then 0.1 … 0.5. Adding 0.1–0.3 to a sum of order 10¹⁶ loses them,
+            // so once the large poses have left, the running sum is wrong; the sum is recomputed from the slots when the
+            // capacity's count of poses has come in since the last time (here at 0.1 and again at 0.5), so at 0.5 the
+            // average is the slots' own.
+            var f = new OneSecondAverage(10, 4);
+            f.Reset(0);
+            for (int i = 0; i < 3; i++) f.Filter(1e16, true, 0.01, 0.01);
+            double y = 0;
+            foreach (var pose in new[] { 0.1, 0.2, 0.3, 0.4, 0.5 }) y = f.Filter(pose, true, 0.01, 0.01);
+            Assert.That(y, Is.EqualTo((0.2 + 0.3 + 0.4 + 0.5) / 4), "the four poses in the window, summed afresh");
+        }
+
+        [Test]
         public void OneSecondAverageGivesTheLastPoseItselfWhenItIsAlone()
         {
             // 0.1 + 0.2 − 0.1 is 0.20000000000000004 in doubles: alone, the newest pose is returned, not the running sum.
