@@ -10,6 +10,10 @@
 # (commit, start and end in UTC, the command), which Tools/stryker-summary.py reads. Sets
 # PSEUDOHAPTIC_SKIP_SOAK=1 (the ten-hour soak tests skip themselves) and runs at nice 15, concurrency 2
 # unless --concurrency is given after PIECE.
+#
+# Run it from a git worktree nothing else builds in (git worktree add ../wt-stryker): Stryker restores and
+# builds the projects into their obj/ and bin/ folders, and puts the mutated assembly into the test project's
+# bin; a build in the same tree during the run breaks its compile (CS0518) or makes every mutant survive.
 set -euo pipefail
 
 root="$(cd "$(dirname "$0")/.." && pwd)"
