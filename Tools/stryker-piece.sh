@@ -8,8 +8,8 @@
 #
 # Writes out/stryker/PIECE/ (Stryker's reports: reports/mutation-report.json) and out/stryker/PIECE/run.txt
 # (commit, start and end in UTC, the command), which Tools/stryker-summary.py reads. Sets
-# PSEUDOHAPTIC_SKIP_SOAK=1 (the ten-hour soak tests skip themselves) and runs at nice 15, concurrency 2
-# unless --concurrency is given after PIECE.
+# PSEUDOHAPTIC_SKIP_SOAK=1 (the ten-hour soak tests skip themselves) and runs at nice 15, concurrency 2 and the
+# Release configuration unless --concurrency or --configuration is given after PIECE.
 #
 # Run it from a git worktree nothing else builds in (git worktree add ../wt-stryker): Stryker restores and
 # builds the projects into their obj/ and bin/ folders, and puts the mutated assembly into the test project's
@@ -82,6 +82,8 @@ shift
 
 args=(--output "$root/out/stryker/$piece")
 case " $* " in *" --concurrency "*|*" -c "*) ;; *) args+=(--concurrency 2) ;; esac
+# Release: the edit-mode suite runs in 19 s instead of Debug's 27 s, and each mutant pays its covering tests' time.
+case " $* " in *" --configuration "*) ;; *) args+=(--configuration Release) ;; esac
 while IFS= read -r g; do args+=(-m "$g"); done < <(piece_globs "$piece")
 
 mkdir -p "$root/out/stryker/$piece"
