@@ -66,6 +66,17 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ARiseOfExactly10CmCounts()
+        {
+            // "A rise under 0.10 m" is refused, 0.10 m is not. Samples 0.25 s apart (beyond the ±25 ms smoothing) and a single
+            // rising interval keep the heights exact: the rise is 0.10 m to the last bit.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5 }, new[] { 0, 0, 0.1, 0.1 });
+            Assert.That(lift.Rise, Is.EqualTo(StandardSpeedCalibration.MinRise));
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Duration, Is.EqualTo(0.2).Within(1e-12), "10–90 % of a straight interval of 0.25 s");
+        }
+
+        [Test]
         public void OnlyTheLargestRiseCounts()
         {
             // A small lift (0.12 m) first, down again, then the real one (0.3 m) from a lower start.
