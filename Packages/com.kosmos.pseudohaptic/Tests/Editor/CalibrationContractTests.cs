@@ -46,6 +46,37 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ACoarselyOrUnevenlySampledRampIsMeasuredExactly()
+        {
+            // Samples farther apart than the ±25 ms smoothing leave the heights as they are; linear interpolation between
+            // samples is exact on a straight ramp: 0.3 m in 0.6 s from t = 0.5 s, 10–90 % from 0.56 s to 1.04 s.
+            var (t, y) = Ramp(0.3, 0.6, 10);
+            var coarse = StandardSpeedCalibration.MeasureLift(t, y);
+            Assert.That(coarse.IsAccepted, Is.True, coarse.Reason);
+            Assert.That(coarse.Duration, Is.EqualTo(0.48).Within(1e-9), "at 10 Hz: 90 % is crossed in the last rising sample's interval");
+            Assert.That(coarse.Speed, Is.EqualTo(0.5).Within(1e-9));
+
+            var times = new[] { 0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.55, 0.58, 0.7, 0.76, 0.9, 1.03, 1.06, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6 };
+            var heights = new double[times.Length];
+            for (int i = 0; i < times.Length; i++) heights[i] = 1.0 + 0.3 * Math.Min(1, Math.Max(0, (times[i] - 0.5) / 0.6));
+            var uneven = StandardSpeedCalibration.MeasureLift(times, heights);
+            Assert.That(uneven.IsAccepted, Is.True, uneven.Reason);
+            Assert.That(uneven.Duration, Is.EqualTo(0.48).Within(1e-9), "uneven frame times");
+            Assert.That(uneven.Speed, Is.EqualTo(0.5).Within(1e-9));
+        }
+
+        [Test]
+        public void ARiseOfExactly10CmCounts()
+        {
+            // "A rise under 0.10 m" is refused, 0.10 m is not. Samples 0.25 s apart (beyond the ±25 ms smoothing) and a single
+            // rising interval keep the heights exact: the rise is 0.10 m to the last bit.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5 }, new[] { 0, 0, 0.1, 0.1 });
+            Assert.That(lift.Rise, Is.EqualTo(StandardSpeedCalibration.MinRise));
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Duration, Is.EqualTo(0.2).Within(1e-12), "10–90 % of a straight interval of 0.25 s");
+        }
+
+        [Test]
         public void OnlyTheLargestRiseCounts()
         {
             // A small lift (0.12 m) first, down again, then the real one (0.3 m) from a lower start.
@@ -152,12 +183,24 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void LiftsSpreadExactly35PercentAreStillConsistent()
+        {
+            // Median 1.25, MAD 0.4375 (binary-exact): spread 0.4375 / 1.25 = 0.35, "more than 35 %" refused, 35 % not.
+            var r = StandardSpeedCalibration.Combine(new[] { Accepted(0.8125), Accepted(1.25), Accepted(1.6875) });
+            Assert.That(r.RelativeSpread, Is.EqualTo(0.35));
+            Assert.That(r.IsAccepted, Is.True, r.Reason);
+            Assert.That(r.StandardSpeed, Is.EqualTo(1.25));
+        }
+
+        [Test]
         public void FromLiftsRefusesMismatchedLists()
         {
             var (t, y) = Ramp(0.3, 0.6);
             Assert.That(() => StandardSpeedCalibration.FromLifts(null, new[] { y }), Throws.ArgumentNullException);
             Assert.That(() => StandardSpeedCalibration.FromLifts(new[] { t }, null), Throws.ArgumentNullException);
-            Assert.That(Assert.Throws<ArgumentException>(() => StandardSpeedCalibration.FromLifts(new[] { t, t }, new[] { y })).ParamName, Is.EqualTo("heights"));
+            var mismatch = Assert.Throws<ArgumentException>(() => StandardSpeedCalibration.FromLifts(new[] { t, t }, new[] { y }));
+            Assert.That(mismatch.ParamName, Is.EqualTo("heights"));
+            Assert.That(mismatch.Message, Does.Contain("same number of lifts"), "says what does not match");
             var one = StandardSpeedCalibration.FromLifts(new[] { t }, new[] { y });
             Assert.That(one.IsAccepted, Is.True);
             Assert.That(one.StandardSpeed, Is.EqualTo(0.5).Within(1e-9));

@@ -56,12 +56,51 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheMassesMayComeInAnyOrder()
+        {
+            var shuffled = CueStrengthTuning.Solve(2, 0.3, new[] { 2.0, 0.6, 1.0 });
+            var sorted = CueStrengthTuning.Solve(2, 0.3, Boxes);
+            Assert.That(shuffled.Masses, Is.EqualTo(new[] { 0.6, 1.0, 2.0 }), "sorted here");
+            Assert.That(shuffled.CueStrength, Is.EqualTo(sorted.CueStrength));
+            Assert.That(shuffled.AdjacentCue, Is.EqualTo(sorted.AdjacentCue));
+        }
+
+        [Test]
+        public void AThresholdMetExactlyAtABoundCountsAsReached()
+        {
+            // "At least Δc*": a threshold equal to the adjacent cue at a bound is met there.
+            var frames = ReferenceLift.Frames();
+            double atWeakest = CueStrengthTuning.AdjacentCueAt(Boxes, WeightSolver.MinCueStrength, WeightSolver.DefaultStandardSpeed, frames);
+            var weakest = CueStrengthTuning.SolveForThresholdCue(2, atWeakest, Boxes);
+            Assert.That(weakest.CueStrength, Is.EqualTo(WeightSolver.MinCueStrength), "the weakest strength is the smallest that suffices");
+            Assert.That(weakest.Reached, Is.True);
+
+            double atStrongest = CueStrengthTuning.AdjacentCueAt(Boxes, WeightSolver.MaxCueStrength, WeightSolver.DefaultStandardSpeed, frames);
+            var strongest = CueStrengthTuning.SolveForThresholdCue(2, atStrongest, Boxes);
+            Assert.That(strongest.Reached, Is.True, "met at the upper bound, not short of it");
+            Assert.That(strongest.CueStrength, Is.EqualTo(WeightSolver.MaxCueStrength).Within(1e-6));
+            Assert.That(strongest.AdjacentCue, Is.GreaterThanOrEqualTo(atStrongest));
+        }
+
+        [Test]
         public void BadArgumentsThrowNamingThem()
         {
             Assert.That(() => CueStrengthTuning.Solve(0, 0.1, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Message.Contains("standardKg"));
             Assert.That(() => CueStrengthTuning.Solve(1, double.NaN, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Message.Contains("jndKg"));
             Assert.That(() => CueStrengthTuning.Solve(1, 0.1, new[] { 1.0 }), Throws.ArgumentException.With.Message.Contains("masses"));
             Assert.That(() => CueStrengthTuning.Solve(1, 0.1, new[] { 1.0, -2 }), Throws.TypeOf<ArgumentOutOfRangeException>().With.Message.Contains("masses"));
+            Assert.That(() => CueStrengthTuning.Solve(1, 0.1, new[] { 1.0 }), Throws.ArgumentException.With.Message.Contains("at least two"), "says what is missing");
+            Assert.That(() => CueStrengthTuning.Solve(1, 0.1, Boxes, 0.01), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("standardSpeed"));
+        }
+
+        [Test]
+        public void BadArgumentsOfTheThresholdCueThrowNamingThem()
+        {
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(0, 0.1, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("standardKg"));
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(1, 0, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("thresholdCue"));
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(1, double.NaN, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("thresholdCue"));
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(1, 0.1, Boxes, 100), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("standardSpeed"));
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(1, 0.1, new[] { 1.0 }), Throws.ArgumentException.With.Property("ParamName").EqualTo("masses"));
         }
     }
 }
