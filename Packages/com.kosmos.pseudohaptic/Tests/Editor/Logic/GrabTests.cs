@@ -126,6 +126,79 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(pinch.Began, Is.False);
         }
 
+        sealed class Driver : IGrabDriver
+        {
+            public bool Held = true;
+            public int Grabs, Follows, Releases;
+            public bool TryGrab() { Grabs++; return true; }
+            public bool IsStillHeld => Held;
+            public bool BrokeAway => false;
+            public void Follow(bool tracked) => Follows++;
+            public void Release() => Releases++;
+        }
+
+        static HandGrab Holding(Driver scene)
+        {
+            var grab = new HandGrab();
+            grab.Tick(true, 1, 0.125, scene);
+            Assert.That(grab.IsHolding, Is.True);
+            return grab;
+        }
+
+        [Test]
+        public void ReleaseAfterLostAcceptsZeroAndAnyFinitePositiveValue()
+        {
+            var grab = new HandGrab();
+            grab.ReleaseAfterLost = 0;
+            Assert.That(grab.ReleaseAfterLost, Is.EqualTo(0), "finite and >= 0");
+            grab.ReleaseAfterLost = 0.5;
+            Assert.That(grab.ReleaseAfterLost, Is.EqualTo(0.5));
+            Assert.That(() => grab.ReleaseAfterLost = -0.5, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("ReleaseAfterLost"));
+        }
+
+        [Test]
+        public void ALostHandReleasesAfterExactlyReleaseAfterLostAndBadFrameTimesCountForNothing()
+        {
+            var scene = new Driver();
+            HandGrab grab = Holding(scene);
+            grab.ReleaseAfterLost = 0.25;
+            grab.Tick(false, 0, -1, scene);
+            grab.Tick(false, 0, double.PositiveInfinity, scene);
+            Assert.That(grab.LostFor, Is.EqualTo(0), "negative and infinite frames are no time lost");
+            grab.Tick(false, 0, 0.125, scene);
+            Assert.That(grab.IsHolding, Is.True);
+            grab.Tick(false, 0, 0.125, scene);
+            Assert.That(grab.IsHolding, Is.False, "lost for ReleaseAfterLost seconds");
+            Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.TrackingLost));
+        }
+
+        [Test]
+        public void AnObjectGoneElsewhereIsNeitherFollowedNorReleasedAgain()
+        {
+            var scene = new Driver();
+            HandGrab grab = Holding(scene);
+            scene.Held = false;
+            grab.Tick(true, 1, 0.125, scene);
+            Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.Elsewhere));
+            Assert.That(scene.Follows, Is.EqualTo(0));
+            Assert.That(scene.Releases, Is.EqualTo(0), "it was released elsewhere");
+        }
+
+        [Test]
+        public void ReleaseEndsAHoldOnceAndDoesNothingWhenIdle()
+        {
+            var scene = new Driver();
+            var idle = new HandGrab();
+            idle.Release(scene);
+            Assert.That(scene.Releases, Is.EqualTo(0), "nothing held");
+            Assert.That(idle.LastEnd, Is.EqualTo(GrabEnd.None));
+            HandGrab grab = Holding(scene);
+            grab.Release(scene);
+            Assert.That(grab.IsHolding, Is.False);
+            Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.Called));
+            Assert.That(scene.Releases, Is.EqualTo(1));
+        }
+
         sealed class Points : IGrabCandidates
         {
             public Vector3d[] At;
