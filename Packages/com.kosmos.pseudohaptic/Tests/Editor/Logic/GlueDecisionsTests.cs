@@ -116,5 +116,18 @@ namespace Kosmos.PseudoHaptic.Tests
             set.Clear();
             Assert.That(set.Contains(1), Is.False);
         }
+
+        [Test]
+        public void RemovingAnAbsentContactChangesNothingInAFullOrShrunkSet()
+        {
+            var set = new ContactSet();
+            for (int id = 1; id <= 4; id++) set.Add(id);
+            set.Remove(99);
+            Assert.That(set.Count, Is.EqualTo(4));
+            set.Remove(4);
+            set.Remove(4);
+            Assert.That(set.Count, Is.EqualTo(3), "the second removal of 4 removes nothing");
+            Assert.That(set.Contains(1) && set.Contains(2) && set.Contains(3), Is.True);
+        }
     }
 }

@@ -61,6 +61,178 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ThePinchSettingsAcceptTheirWholeDocumentedRangesAndNothingOutside()
+        {
+            // CloseAt in (0, 1] and not below OpenBelow; OpenBelow in (0, CloseAt]; OpenAfter finite and >= 0.
+            var pinch = new PinchDetector();
+            Assert.That(() => pinch.CloseAt = 0, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("CloseAt"));
+            Assert.That(() => pinch.CloseAt = pinch.OpenBelow / 2, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("CloseAt"), "below OpenBelow");
+            Assert.That(() => pinch.OpenBelow = 0, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("OpenBelow"));
+            Assert.That(() => pinch.OpenBelow = (pinch.CloseAt + 1) / 2, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("OpenBelow"), "above CloseAt");
+            pinch.CloseAt = 1;
+            Assert.That(pinch.CloseAt, Is.EqualTo(1), "1 is in (0, 1]");
+            pinch.OpenBelow = 1;
+            Assert.That(pinch.OpenBelow, Is.EqualTo(1), "OpenBelow may equal CloseAt");
+            pinch.OpenBelow = 0.25;
+            pinch.CloseAt = 0.75;
+            Assert.That(pinch.CloseAt, Is.EqualTo(0.75));
+            pinch.CloseAt = 0.25;
+            Assert.That(pinch.CloseAt, Is.EqualTo(0.25), "CloseAt may equal OpenBelow");
+            pinch.OpenAfter = 0;
+            Assert.That(pinch.OpenAfter, Is.EqualTo(0), "OpenAfter may be 0");
+        }
+
+        [Test]
+        public void ThePinchClosesOnReachingCloseAtAndStaysClosedAtOpenBelow()
+        {
+            var pinch = new PinchDetector { OpenBelow = 0.5, CloseAt = 0.75, OpenAfter = 0 };
+            pinch.Update(true, 0.75, 0.125);
+            Assert.That(pinch.IsPinching && pinch.Began, Is.True, "the strength reached CloseAt");
+            for (int i = 0; i < 10; i++) pinch.Update(true, 0.5, 0.125);
+            Assert.That(pinch.IsPinching, Is.True, "0.5 is not below OpenBelow");
+            pinch.Update(true, 1, 0.125);
+            Assert.That(pinch.IsPinching, Is.True, "a closed strength never opens the pinch, even with OpenAfter 0");
+            pinch.Update(true, 0.25, 0.125);
+            Assert.That(pinch.IsPinching, Is.False, "below OpenBelow with OpenAfter 0");
+        }
+
+        [Test]
+        public void ThePinchOpensAfterExactlyOpenAfterBelowOpenBelowAndBadFrameTimesCountForNothing()
+        {
+            var pinch = new PinchDetector { OpenAfter = 0.25 };
+            pinch.Update(true, 1, 0.125);
+            pinch.Update(true, 0, 0.125);
+            Assert.That(pinch.IsPinching, Is.True, "0.125 s of 0.25");
+            pinch.Update(true, 0, 0.125);
+            Assert.That(pinch.IsPinching, Is.False, "stayed below OpenBelow for OpenAfter seconds");
+
+            pinch.Update(true, 1, 0.125);
+            pinch.Update(true, 0, double.PositiveInfinity);
+            Assert.That(pinch.IsPinching, Is.True, "an infinite frame is not a long open hand");
+            pinch.Update(true, 0, -1);
+            pinch.Update(true, 0, 0.125);
+            pinch.Update(true, 0, 0.125);
+            Assert.That(pinch.IsPinching, Is.False, "a negative frame does not delay the opening");
+        }
+
+        [Test]
+        public void AResetPinchIsOpenAndHasNotBegun()
+        {
+            var pinch = new PinchDetector();
+            pinch.Update(true, 1, 0.01);
+            Assert.That(pinch.IsPinching && pinch.Began, Is.True);
+            pinch.Reset();
+            Assert.That(pinch.IsPinching, Is.False);
+            Assert.That(pinch.Began, Is.False);
+        }
+
+        sealed class Driver : IGrabDriver
+        {
+            public bool Held = true;
+            public int Grabs, Follows, Releases;
+            public bool TryGrab() { Grabs++; return true; }
+            public bool IsStillHeld => Held;
+            public bool BrokeAway => false;
+            public void Follow(bool tracked) => Follows++;
+            public void Release() => Releases++;
+        }
+
+        static HandGrab Holding(Driver scene)
+        {
+            var grab = new HandGrab();
+            grab.Tick(true, 1, 0.125, scene);
+            Assert.That(grab.IsHolding, Is.True);
+            return grab;
+        }
+
+        [Test]
+        public void ReleaseAfterLostAcceptsZeroAndAnyFinitePositiveValue()
+        {
+            var grab = new HandGrab();
+            grab.ReleaseAfterLost = 0;
+            Assert.That(grab.ReleaseAfterLost, Is.EqualTo(0), "finite and >= 0");
+            grab.ReleaseAfterLost = 0.5;
+            Assert.That(grab.ReleaseAfterLost, Is.EqualTo(0.5));
+            Assert.That(() => grab.ReleaseAfterLost = -0.5, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("ReleaseAfterLost"));
+        }
+
+        [Test]
+        public void ALostHandReleasesAfterExactlyReleaseAfterLostAndBadFrameTimesCountForNothing()
+        {
+            var scene = new Driver();
+            HandGrab grab = Holding(scene);
+            grab.ReleaseAfterLost = 0.25;
+            grab.Tick(false, 0, -1, scene);
+            grab.Tick(false, 0, double.PositiveInfinity, scene);
+            Assert.That(grab.LostFor, Is.EqualTo(0), "negative and infinite frames are no time lost");
+            grab.Tick(false, 0, 0.125, scene);
+            Assert.That(grab.IsHolding, Is.True);
+            grab.Tick(false, 0, 0.125, scene);
+            Assert.That(grab.IsHolding, Is.False, "lost for ReleaseAfterLost seconds");
+            Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.TrackingLost));
+        }
+
+        [Test]
+        public void AnObjectGoneElsewhereIsNeitherFollowedNorReleasedAgain()
+        {
+            var scene = new Driver();
+            HandGrab grab = Holding(scene);
+            scene.Held = false;
+            grab.Tick(true, 1, 0.125, scene);
+            Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.Elsewhere));
+            Assert.That(scene.Follows, Is.EqualTo(0));
+            Assert.That(scene.Releases, Is.EqualTo(0), "it was released elsewhere");
+        }
+
+        [Test]
+        public void ReleaseEndsAHoldOnceAndDoesNothingWhenIdle()
+        {
+            var scene = new Driver();
+            var idle = new HandGrab();
+            idle.Release(scene);
+            Assert.That(scene.Releases, Is.EqualTo(0), "nothing held");
+            Assert.That(idle.LastEnd, Is.EqualTo(GrabEnd.None));
+            HandGrab grab = Holding(scene);
+            grab.Release(scene);
+            Assert.That(grab.IsHolding, Is.False);
+            Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.Called));
+            Assert.That(scene.Releases, Is.EqualTo(1));
+        }
+
+        sealed class Points : IGrabCandidates
+        {
+            public Vector3d[] At;
+            public int[] Hands;
+            public int Count => At.Length;
+            public Vector3d ClosestPoint(int index, Vector3d hand) => At[index];
+            public int HandsOn(int index) => Hands == null ? 0 : Hands[index];
+        }
+
+        [Test]
+        public void TheNearestIsTheFirstOnATieAndReachIsInclusiveEvenAtZero()
+        {
+            var hand = new Vector3d(1, 1, 1);
+            var tie = new Points { At = new[] { hand + new Vector3d(0.5, 0, 0), hand + new Vector3d(0, 0, -0.5), hand + new Vector3d(0, 0.5, 0) } };
+            Assert.That(GrabSelection.Nearest(hand, 0.5, 2, tie), Is.EqualTo(0), "three at exactly the reach: the first");
+            Assert.That(GrabSelection.Nearest(hand, 1, 2, tie), Is.EqualTo(0), "three equally near: the first");
+            tie.Hands = new[] { 2, 0, 0 };
+            Assert.That(GrabSelection.Nearest(hand, 1, 2, tie), Is.EqualTo(1), "the first is full: the next of the tie");
+            var touching = new Points { At = new[] { hand + new Vector3d(0.25, 0, 0), hand } };
+            Assert.That(GrabSelection.Nearest(hand, 0, 2, touching), Is.EqualTo(1), "reach 0 takes what the hand touches");
+        }
+
+        [Test]
+        public void ANegativeReachNoCandidatesOrAnInfinitePointGrabNothing()
+        {
+            var hand = new Vector3d(1, 1, 1);
+            var one = new Points { At = new[] { hand + new Vector3d(0.01, 0, 0) } };
+            Assert.That(GrabSelection.Nearest(hand, -0.06, 2, one), Is.EqualTo(-1), "nothing is within a negative reach");
+            Assert.That(GrabSelection.Nearest(hand, 0.06, 2, null), Is.EqualTo(-1));
+            var infinite = new Points { At = new[] { new Vector3d(double.PositiveInfinity, 0, 0) } };
+            Assert.That(GrabSelection.Nearest(hand, double.PositiveInfinity, 2, infinite), Is.EqualTo(-1), "an infinite point is no point, even in unlimited reach");
+        }
+
+        [Test]
         public void ThePinchTakesTheNearestObjectInReachAndNothingOutOfReach()
         {
             var scene = new BoxScene();

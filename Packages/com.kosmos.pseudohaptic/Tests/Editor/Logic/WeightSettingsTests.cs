@@ -82,6 +82,49 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(v.VelocityAt(0.3), Is.EqualTo(Vector3d.Zero), "still for 0.2 s");
         }
 
+        static readonly Vector3d Up = new Vector3d(0, 1, 0);
+
+        [Test]
+        public void AVelocityNeedsTwoPosesAtLeastAWindowApartAndIsKeptUntilTheNextWindow()
+        {
+            var v = new VelocityTracker();
+            v.Add(Up, 10);
+            Assert.That(v.VelocityAt(10), Is.EqualTo(Vector3d.Zero), "one pose has no velocity");
+            v.Add(Up * 1.0625, 10.0625);
+            Assert.That(v.VelocityAt(10.0625).Y, Is.EqualTo(1).Within(1e-9), "the first pose anchors the second");
+
+            v.Reset(Up, 0);
+            v.Add(Up * 1.5, VelocityTracker.Window);
+            Assert.That(v.VelocityAt(VelocityTracker.Window).Y, Is.EqualTo(0.5 / VelocityTracker.Window).Within(1e-9), "exactly a window apart");
+
+            v.Reset(Up, 0);
+            v.Add(Up * 1.0625, 0.0625);
+            v.Add(Up * 1.0725, 0.078125); // a change sooner than a window after the last measurement
+            Assert.That(v.VelocityAt(0.078125).Y, Is.EqualTo(1).Within(1e-9), "not measured over less than a window");
+            v.Add(Up * 1.0825, 0.078125); // another pose at the same time
+            Assert.That(v.VelocityAt(0.078125).Y, Is.EqualTo(1).Within(1e-9), "a pose at the same time does not discard the velocity");
+        }
+
+        [Test]
+        public void NonFinitePosesAndTimesNeitherAnchorNorDelayTheVelocity()
+        {
+            var v = new VelocityTracker();
+            v.Reset(Vector3d.NaN, 0);
+            v.Add(Up, 0.015625);
+            v.Add(Up * 1.0625, 0.078125);
+            Assert.That(v.VelocityAt(0.078125).Y, Is.EqualTo(1).Within(1e-9), "a NaN reset leaves the first finite pose as the anchor");
+
+            v.Reset(Up, 0);
+            v.Add(Vector3d.NaN, 0.0625);
+            v.Add(Up * 1.125, 0.125);
+            Assert.That(v.VelocityAt(0.125).Y, Is.EqualTo(1).Within(1e-9), "a NaN pose is ignored");
+
+            v.Reset(Up, 0);
+            v.Add(Up * 1.0625, double.NaN);
+            v.Add(Up * 1.125, 0.125);
+            Assert.That(v.VelocityAt(0.125).Y, Is.EqualTo(1).Within(1e-9), "a pose at a NaN time is ignored");
+        }
+
         [Test]
         public void FollowingMovesXAndZOnlyWithATrackedFiniteHand()
         {
