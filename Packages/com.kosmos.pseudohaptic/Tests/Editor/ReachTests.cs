@@ -192,17 +192,22 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(r.TryAccept(1.4, 1, 0, Speed), Is.True);
         }
 
+        /// <summary>One 11 ms frame, then whether the pose at <paramref name="x"/> is taken.</summary>
+        static bool Next(ref Reach r, double x)
+        {
+            r.Tick(0.011, Longest);
+            return r.TryAccept(x, 1, 0, Speed);
+        }
+
         [Test]
         public void ThePosesBeforeTheLastHasItsOwnClock()
         {
             // 0, then −0.3 (within reach of 0), then two frames unseen: 0.4 m from 0 is within the reach of 0's 44 ms (0.44 m),
             // though not within one pose period (0.333 m) nor of −0.3: the last pose is overruled by the one before it.
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(-0.3, 1, 0, Speed), Is.True);
+            Assert.That(Next(ref r, -0.3), Is.True);
             for (int i = 0; i < 2; i++) { r.Tick(0.011, Longest); r.Miss(); }
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.4, 1, 0, Speed), Is.True, "0.4 m from the pose before the last, 44 ms after it");
+            Assert.That(Next(ref r, 0.4), Is.True, "0.4 m from the pose before the last, 44 ms after it");
         }
 
         [Test]
@@ -211,14 +216,10 @@ namespace Kosmos.PseudoHaptic.Tests
             // 0, 0.1, then 2.0 refused and 2.01 taken as a sighting: the hand is at its new place, and a pose back near 0 is
             // out of reach of it; the pose before the sighting (0) is not a place to go back to.
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.1, 1, 0, Speed), Is.True);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2.0, 1, 0, Speed), Is.False);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2.01, 1, 0, Speed), Is.True, "seen twice at its new place");
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.05, 1, 0, Speed), Is.False, "back near the pose before the sighting");
+            Assert.That(Next(ref r, 0.1), Is.True);
+            Assert.That(Next(ref r, 2.0), Is.False);
+            Assert.That(Next(ref r, 2.01), Is.True, "seen twice at its new place");
+            Assert.That(Next(ref r, 0.05), Is.False, "back near the pose before the sighting");
         }
 
         [Test]
@@ -226,12 +227,9 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             // 2.0 refused, then 0.1 taken: the refused pose is forgotten, so 2.01 is no sighting of it.
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2.0, 1, 0, Speed), Is.False);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.1, 1, 0, Speed), Is.True);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2.01, 1, 0, Speed), Is.False, "near a pose refused before the last accepted one");
+            Assert.That(Next(ref r, 2.0), Is.False);
+            Assert.That(Next(ref r, 0.1), Is.True);
+            Assert.That(Next(ref r, 2.01), Is.False, "near a pose refused before the last accepted one");
         }
 
         [Test]
