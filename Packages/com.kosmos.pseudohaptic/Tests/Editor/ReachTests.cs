@@ -17,21 +17,25 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var r = new Reach();
             Assert.That(r.HasPose, Is.False);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(x, 1, 0, Speed), Is.True, "the first pose is always taken");
+            Assert.That(Next(ref r, x), Is.True, "the first pose is always taken");
             Assert.That(r.HasPose, Is.True);
             return r;
+        }
+
+        /// <summary>One 11 ms frame, then whether the pose at <paramref name="x"/> is taken.</summary>
+        static bool Next(ref Reach r, double x)
+        {
+            r.Tick(0.011, Longest);
+            return r.TryAccept(x, 1, 0, Speed);
         }
 
         [Test]
         public void AStepWithinOnePosePeriodAtFullSpeedIsTaken()
         {
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.33, 1, 0, Speed), Is.True, "0.33 m < 10 m/s × 1/30 s, however short the frame");
+            Assert.That(Next(ref r, 0.33), Is.True, "0.33 m < 10 m/s × 1/30 s, however short the frame");
             var s = At(0);
-            s.Tick(0.011, Longest);
-            Assert.That(s.TryAccept(0.34, 1, 0, Speed), Is.False, "0.34 m is out of reach");
+            Assert.That(Next(ref s, 0.34), Is.False, "0.34 m is out of reach");
         }
 
         [Test]
@@ -110,8 +114,7 @@ namespace Kosmos.PseudoHaptic.Tests
             s.Tick(0.1, Longest);
             s.Miss();
             // A 0.1 s frame: 0.075 s unseen as a hitch, and Miss adds only the 0.025 s counted: lost 0.1 s, not 0.175 s.
-            s.Tick(0.011, Longest);
-            Assert.That(s.TryAccept(1.1, 1, 0, Speed), Is.True, "window min(0.111, 0.15) = 0.111 s: 1.11 m");
+            Assert.That(Next(ref s, 1.1), Is.True, "window min(0.111, 0.15) = 0.111 s: 1.11 m");
             var t = At(0);
             t.Tick(0.1, Longest);
             t.Miss();
@@ -141,62 +144,43 @@ namespace Kosmos.PseudoHaptic.Tests
             var r = At(0);
             for (int i = 0; i < 200; i++) { r.Tick(0.01, Longest); r.Miss(); }
             Assert.That(r.TryAccept(3, 1, 0, Speed), Is.True, "after 2 s lost, 3 m away is reachable (the glitch)");
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.1, 1, 0, Speed), Is.True, "out of the glitch's reach, within the pose before it");
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2.9, 1, 0, Speed), Is.True, "the glitch stays the prior pose, as its outlier did not replace it");
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0.2, 1, 0, Speed), Is.True, "so the hand near 0.1 is taken again");
+            Assert.That(Next(ref r, 0.1), Is.True, "out of the glitch's reach, within the pose before it");
+            Assert.That(Next(ref r, 2.9), Is.True, "the glitch stays the prior pose, as its outlier did not replace it");
+            Assert.That(Next(ref r, 0.2), Is.True, "so the hand near 0.1 is taken again");
         }
 
         [Test]
         public void AHandSeenTwiceAtItsNewPlaceIsThere()
         {
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(1, 1, 0, Speed), Is.False);
+            Assert.That(Next(ref r, 1), Is.False);
             r.Miss();
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(1, 1, 0, Speed), Is.False, "the same refused pose again is not a second sighting");
+            Assert.That(Next(ref r, 1), Is.False, "the same refused pose again is not a second sighting");
             r.Miss();
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(1.01, 1, 0, Speed), Is.True, "a second, different pose within reach of the refused one");
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(0, 1, 0, Speed), Is.False, "the old place has no standing as a prior any more");
+            Assert.That(Next(ref r, 1.01), Is.True, "a second, different pose within reach of the refused one");
+            Assert.That(Next(ref r, 0), Is.False, "the old place has no standing as a prior any more");
         }
 
         [Test]
         public void ASightingMustBeNearTheLastRefusedPose()
         {
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(1, 1, 0, Speed), Is.False);
+            Assert.That(Next(ref r, 1), Is.False);
             r.Miss();
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2, 1, 0, Speed), Is.False, "1 m from the refused pose is no sighting");
+            Assert.That(Next(ref r, 2), Is.False, "1 m from the refused pose is no sighting");
             r.Miss();
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(2.01, 1, 0, Speed), Is.True, "but near the newest refused pose it is");
+            Assert.That(Next(ref r, 2.01), Is.True, "but near the newest refused pose it is");
         }
 
         [Test]
         public void TheRefusedPosesClockStartsWhenItIsFirstSeen()
         {
             var r = At(0);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(1, 1, 0, Speed), Is.False);
+            Assert.That(Next(ref r, 1), Is.False);
             // The same refused pose three frames more: its clock is not restarted, so after 44 ms a pose 0.4 m on is
             // within its reach (0.44 m), though not within one pose period's (0.333 m) nor the last accepted pose's.
             for (int i = 0; i < 3; i++) { r.Tick(0.011, Longest); Assert.That(r.TryAccept(1, 1, 0, Speed), Is.False); }
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(1.4, 1, 0, Speed), Is.True);
-        }
-
-        /// <summary>One 11 ms frame, then whether the pose at <paramref name="x"/> is taken.</summary>
-        static bool Next(ref Reach r, double x)
-        {
-            r.Tick(0.011, Longest);
-            return r.TryAccept(x, 1, 0, Speed);
+            Assert.That(Next(ref r, 1.4), Is.True);
         }
 
         [Test]
@@ -238,8 +222,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var r = At(0);
             r.Reset();
             Assert.That(r.HasPose, Is.False);
-            r.Tick(0.011, Longest);
-            Assert.That(r.TryAccept(100, 1, 0, Speed), Is.True);
+            Assert.That(Next(ref r, 100), Is.True);
         }
     }
 }
