@@ -12,35 +12,65 @@ namespace Kosmos.PseudoHaptic.Simulation
     /// </summary>
     public sealed class HeadsetSimulator
     {
-        public double FrameRate = 90;
+        // Every setting is checked when it is set (the exception names it): a simulator with a zero frame rate or a
+        // negative jitter would loop for ever or render a different headset than the one asked for.
+        double _frameRate = 90, _frameTimeWobble, _poseRate = 30, _latency = 0.045, _jitterSd;
+        double _lowConfidenceAboveSpeed = double.PositiveInfinity, _lowConfidenceChance = 0.5, _glitchChance, _glitchSize = 0.03;
 
-        /// <summary>Each frame's duration varies uniformly by ± this fraction.</summary>
-        public double FrameTimeWobble;
+        /// <summary>Frames per second (finite, &gt; 0; default 90).</summary>
+        public double FrameRate { get => _frameRate; set => _frameRate = ConfigurationGuard.Positive(value, nameof(FrameRate)); }
 
-        public double PoseRate = 30;
+        /// <summary>Each frame's duration varies uniformly by ± this fraction, within [0, <see cref="MaxFrameTimeWobble"/>]
+        /// (default 0).</summary>
+        public double FrameTimeWobble
+        {
+            get => _frameTimeWobble;
+            set => _frameTimeWobble = ConfigurationGuard.InRange(value, 0, MaxFrameTimeWobble, nameof(FrameTimeWobble));
+        }
 
-        /// <summary>Pose latency, s: a pose shows the hand where it was at its stamp and reaches the frames this much later.</summary>
-        public double Latency = 0.045;
+        /// <summary>The largest <see cref="FrameTimeWobble"/>: at ±100 % a frame could last no time and the clock not advance.</summary>
+        public const double MaxFrameTimeWobble = 0.9;
 
-        /// <summary>Gaussian jitter of each pose, standard deviation, m.</summary>
-        public double JitterSd;
+        /// <summary>Poses per second (finite, &gt; 0; default 30).</summary>
+        public double PoseRate { get => _poseRate; set => _poseRate = ConfigurationGuard.Positive(value, nameof(PoseRate)); }
+
+        /// <summary>Pose latency, s (finite, ≥ 0; default 0.045): a pose shows the hand where it was at its stamp and reaches
+        /// the frames this much later.</summary>
+        public double Latency { get => _latency; set => _latency = ConfigurationGuard.NonNegative(value, nameof(Latency)); }
+
+        /// <summary>Gaussian jitter of each pose, standard deviation, m (finite, ≥ 0; default 0).</summary>
+        public double JitterSd { get => _jitterSd; set => _jitterSd = ConfigurationGuard.NonNegative(value, nameof(JitterSd)); }
 
         /// <summary>Whether frames carry the pose's timestamp (else NaN, as in traces without pose_t).</summary>
         public bool WritePoseTime = true;
 
         public int Seed = 1;
 
-        /// <summary>A pose whose true hand speed exceeds this, m/s, may be delivered with low confidence (∞: never).</summary>
-        public double LowConfidenceAboveSpeed = double.PositiveInfinity;
+        /// <summary>A pose whose true hand speed exceeds this, m/s, may be delivered with low confidence (≥ 0; default ∞:
+        /// never).</summary>
+        public double LowConfidenceAboveSpeed
+        {
+            get => _lowConfidenceAboveSpeed;
+            set => _lowConfidenceAboveSpeed = ConfigurationGuard.InRange(value, 0, double.PositiveInfinity, nameof(LowConfidenceAboveSpeed));
+        }
 
-        /// <summary>The chance that such a fast pose is low-confidence, 0–1.</summary>
-        public double LowConfidenceChance = 0.5;
+        /// <summary>The chance that such a fast pose is low-confidence, 0–1 (default 0.5).</summary>
+        public double LowConfidenceChance
+        {
+            get => _lowConfidenceChance;
+            set => _lowConfidenceChance = ConfigurationGuard.InRange(value, 0, 1, nameof(LowConfidenceChance));
+        }
 
-        /// <summary>The chance that a pose is a glitch: displaced by ±<see cref="GlitchSize"/> for that one pose, 0–1.</summary>
-        public double GlitchChance;
+        /// <summary>The chance that a pose is a glitch: displaced by ±<see cref="GlitchSize"/> for that one pose, 0–1
+        /// (default 0).</summary>
+        public double GlitchChance
+        {
+            get => _glitchChance;
+            set => _glitchChance = ConfigurationGuard.InRange(value, 0, 1, nameof(GlitchChance));
+        }
 
-        /// <summary>How far a glitched pose is off, m (a joint jumping a few centimetres).</summary>
-        public double GlitchSize = 0.03;
+        /// <summary>How far a glitched pose is off, m (finite, ≥ 0; default 0.03: a joint jumping a few centimetres).</summary>
+        public double GlitchSize { get => _glitchSize; set => _glitchSize = ConfigurationGuard.NonNegative(value, nameof(GlitchSize)); }
 
         readonly List<(double start, double end, double size)> _offsets = new List<(double, double, double)>();
         readonly List<double> _dropStart = new List<double>();
@@ -51,6 +81,7 @@ namespace Kosmos.PseudoHaptic.Simulation
         /// <summary>Tracking is lost from <paramref name="start"/> for <paramref name="seconds"/> (frames there are untracked, NaN).</summary>
         public HeadsetSimulator Drop(double start, double seconds)
         {
+            CheckSpan(start, seconds);
             _dropStart.Add(start);
             _dropEnd.Add(start + seconds);
             return this;
@@ -65,6 +96,8 @@ namespace Kosmos.PseudoHaptic.Simulation
         /// again are centimetres off, then snap back).</summary>
         public HeadsetSimulator Offset(double start, double seconds, double size)
         {
+            CheckSpan(start, seconds);
+            ConfigurationGuard.Finite(size, nameof(size));
             _offsets.Add((start, start + seconds, size));
             return this;
         }
@@ -73,14 +106,23 @@ namespace Kosmos.PseudoHaptic.Simulation
         /// tracked, with their poses, but flagged <see cref="TraceFrame.LowConfidence"/>).</summary>
         public HeadsetSimulator LowConfidence(double start, double seconds)
         {
+            CheckSpan(start, seconds);
             _lowStart.Add(start);
             _lowEnd.Add(start + seconds);
             return this;
         }
 
-        /// <summary>Renders frames from 0 to the path's end (plus <paramref name="extra"/> seconds).</summary>
+        static void CheckSpan(double start, double seconds)
+        {
+            ConfigurationGuard.Finite(start, nameof(start));
+            ConfigurationGuard.NonNegative(seconds, nameof(seconds));
+        }
+
+        /// <summary>Renders frames from 0 to the path's end (plus <paramref name="extra"/> seconds, finite, ≥ 0).</summary>
         public TraceFrame[] Render(HandPath path, double extra = 0)
         {
+            if (path == null) throw new ArgumentNullException(nameof(path));
+            ConfigurationGuard.NonNegative(extra, nameof(extra));
             var rng = new Random(Seed);
             var frames = new List<TraceFrame>();
             double end = path.Duration + extra;

@@ -231,5 +231,64 @@ namespace Kosmos.PseudoHaptic.Tests
             // uniform on ±w: mean 1, standard error w / sqrt(3 n)
             Assert.That(sum / n, Is.EqualTo(1).Within(4 * w / Math.Sqrt(3.0 * n)));
         }
+
+        // Each setting, a value just outside its documented range, and the range's own ends (which must be accepted).
+        static readonly object[] Settings =
+        {
+            new object[] { "FrameRate", new[] { 0.0, -1, double.NaN, double.PositiveInfinity }, new[] { 1e-3, 1000.0 } },
+            new object[] { "PoseRate", new[] { 0.0, -30, double.NaN, double.PositiveInfinity }, new[] { 1e-3, 1000.0 } },
+            new object[] { "FrameTimeWobble", new[] { -1e-9, 0.9 + 1e-9, 1, double.NaN }, new[] { 0.0, 0.9 } },
+            new object[] { "Latency", new[] { -1e-9, double.NaN, double.PositiveInfinity }, new[] { 0.0, 0.5 } },
+            new object[] { "JitterSd", new[] { -1e-9, double.NaN, double.PositiveInfinity }, new[] { 0.0, 0.01 } },
+            new object[] { "LowConfidenceAboveSpeed", new[] { -1e-9, double.NaN, double.NegativeInfinity }, new[] { 0.0, double.PositiveInfinity } },
+            new object[] { "LowConfidenceChance", new[] { -1e-9, 1 + 1e-9, double.NaN }, new[] { 0.0, 1.0 } },
+            new object[] { "GlitchChance", new[] { -1e-9, 1 + 1e-9, double.NaN }, new[] { 0.0, 1.0 } },
+            new object[] { "GlitchSize", new[] { -1e-9, double.NaN, double.PositiveInfinity }, new[] { 0.0, 0.05 } },
+        };
+
+        [TestCaseSource(nameof(Settings))]
+        public void ASettingOutsideItsRangeThrowsNamingItWhenSet(string name, double[] bad, double[] good)
+        {
+            var property = typeof(HeadsetSimulator).GetProperty(name);
+            foreach (double v in bad)
+            {
+                var sim = new HeadsetSimulator();
+                double before = (double)property.GetValue(sim);
+                var e = Assert.Throws<System.Reflection.TargetInvocationException>(() => property.SetValue(sim, v), name + " = " + v);
+                var inner = e.InnerException as ArgumentOutOfRangeException;
+                Assert.That(inner, Is.Not.Null, name + " = " + v);
+                Assert.That(inner.ParamName, Is.EqualTo(name));
+                Assert.That((double)property.GetValue(sim), Is.EqualTo(before), "a refused value is not kept");
+            }
+            foreach (double v in good)
+            {
+                var sim = new HeadsetSimulator();
+                property.SetValue(sim, v);
+                Assert.That((double)property.GetValue(sim), Is.EqualTo(v));
+            }
+        }
+
+        [Test]
+        public void TheLargestWobbleStillAdvancesTheClockEveryFrame()
+        {
+            var frames = new HeadsetSimulator { FrameTimeWobble = 0.9, Seed = 3 }.Render(Held(5));
+            for (int i = 1; i < frames.Length; i++)
+                Assert.That(frames[i].Time - frames[i - 1].Time, Is.GreaterThanOrEqualTo(0.1 / 90 - 1e-12));
+        }
+
+        [Test]
+        public void BadStretchesAndPathsThrowNamingTheArgument()
+        {
+            var sim = new HeadsetSimulator();
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => sim.Drop(double.NaN, 1)).ParamName, Is.EqualTo("start"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => sim.Drop(1, -0.1)).ParamName, Is.EqualTo("seconds"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => sim.LowConfidence(1, double.NaN)).ParamName, Is.EqualTo("seconds"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => sim.Offset(1, 1, double.PositiveInfinity)).ParamName, Is.EqualTo("size"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => sim.Glitch(double.PositiveInfinity, 0.03)).ParamName, Is.EqualTo("start"));
+            Assert.That(Assert.Throws<ArgumentNullException>(() => sim.Render(null)).ParamName, Is.EqualTo("path"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => sim.Render(Held(1), -1)).ParamName, Is.EqualTo("extra"));
+            // A stretch of no time is allowed (it changes nothing).
+            Assert.That(sim.Drop(0.5, 0).Render(Held(1)), Has.All.Matches<TraceFrame>(f => f.Tracked));
+        }
     }
 }
