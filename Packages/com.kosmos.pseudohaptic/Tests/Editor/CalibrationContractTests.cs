@@ -97,6 +97,42 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ABumpBeforeTheLiftThatComesBackDownIsNotTimed()
+        {
+            // At rest at 1.0 m, the hand bumps up 3 cm (above 10 % of the coming rise) and settles back at 1.005 m for half a
+            // second, then lifts 0.2 m at 0.5 m/s. The rise is measured from the lowest point (1.0 m: 0.205 m), but the timed
+            // 10–90 % is the lift's own: from the last time the hand was below 10 %, not the bump's crossing.
+            var t = new List<double>();
+            var y = new List<double>();
+            for (int i = 0; i <= 200; i++)
+            {
+                double ti = i / 100.0;
+                double h = ti < 0.2 ? 1.0 : ti < 0.3 ? 1.0 + 0.3 * (ti - 0.2) : ti < 0.4 ? 1.03 - 0.25 * (ti - 0.3)
+                    : ti < 0.9 ? 1.005 : ti < 1.3 ? 1.005 + 0.5 * (ti - 0.9) : 1.205;
+                t.Add(ti);
+                y.Add(h);
+            }
+            var lift = StandardSpeedCalibration.MeasureLift(t.ToArray(), y.ToArray());
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Rise, Is.EqualTo(0.205).Within(1e-9));
+            Assert.That(lift.Speed, Is.EqualTo(0.5).Within(1e-9), "the lift's own speed, not slowed by the rest after the bump");
+            Assert.That(lift.Duration, Is.EqualTo(0.8 * 0.205 / 0.5).Within(1e-9));
+        }
+
+        [Test]
+        public void AHandThatDipsBelowTenPercentDuringTheLiftIsTimedFromItsLastDip()
+        {
+            // A lift of 0.3 m from 1.0 m that pauses and sinks back below 10 % (1.03 m) once, then rises straight through:
+            // the rise that reaches 90 % starts from the dip; the speed is that straight rise's, 0.5 m/s.
+            var times = new[] { 0.0, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 2.1, 2.35 };
+            var heights = new[] { 1.0, 1.0, 1.05, 1.02, 1.02, 1.02, 1.0, 1.3, 1.3 };
+            var lift = StandardSpeedCalibration.MeasureLift(times, heights);
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Duration, Is.EqualTo(0.48).Within(1e-9), "10–90 % of the straight rise from 1.5 s to 2.1 s");
+            Assert.That(lift.Speed, Is.EqualTo(0.5).Within(1e-9));
+        }
+
+        [Test]
         public void EachRefusalSaysWhy()
         {
             Assert.That(StandardSpeedCalibration.MeasureLift(new[] { 0.0, 1.0 }, new[] { 1.0 }).Reason,

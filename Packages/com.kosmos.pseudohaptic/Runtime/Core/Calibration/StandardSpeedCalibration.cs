@@ -31,8 +31,9 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>
         /// Finds the largest rise in the recording (lowest point, then highest point after it, on a copy smoothed
-        /// over ±25 ms) and measures the mean speed between 10 % and 90 % of that rise, which ignores the slow
-        /// start and end of a lift and the jitter of a hand at rest before and after it.
+        /// over ±25 ms) and measures the mean speed between 10 % and 90 % of that rise (from the last time the hand
+        /// was below 10 % to the first time it reached 90 %), which ignores the slow start and end of a lift, the
+        /// jitter of a hand at rest before and after it, and a bump that reaches 10 % and comes back down before it.
         /// </summary>
         public static LiftMeasurement MeasureLift(ReadOnlySpan<double> times, ReadOnlySpan<double> heights)
         {
@@ -63,9 +64,12 @@ namespace Kosmos.PseudoHaptic
             if (bestRise < MinRise)
                 return Reject("too short: the hand rose " + Fmt(bestRise) + " m, at least " + Fmt(MinRise) + " m needed");
 
+            // The lift: from the last time the hand was below 10 % of the rise to the first time it reached 90 %. A bump
+            // after the lowest point that reaches 10 % and comes back down (the hand settling on the ball) is not lift.
             double y0 = heights[bestLow];
-            double t10 = CrossingTime(times, heights, bestLow, bestHigh, y0 + 0.10 * bestRise);
-            double t90 = CrossingTime(times, heights, bestLow, bestHigh, y0 + 0.90 * bestRise);
+            int i90 = FirstAtOrAbove(heights, bestLow, bestHigh, y0 + 0.90 * bestRise);
+            double t90 = CrossingTime(times, heights, i90, y0 + 0.90 * bestRise);
+            double t10 = CrossingTime(times, heights, LastBelow(heights, bestLow, i90, y0 + 0.10 * bestRise) + 1, y0 + 0.10 * bestRise);
             double duration = t90 - t10;
             if (!(duration >= MinDuration))
                 return new LiftMeasurement(false, double.NaN, bestRise, duration, "too short: the lift took " + Fmt(duration) + " s, at least " + Fmt(MinDuration) + " s needed");
@@ -118,20 +122,28 @@ namespace Kosmos.PseudoHaptic
             return Combine(lifts);
         }
 
-        static double CrossingTime(ReadOnlySpan<double> t, ReadOnlySpan<double> y, int from, int to, double level)
+        /// <summary>The first sample after <paramref name="from"/>, up to <paramref name="to"/>, at or above
+        /// <paramref name="level"/> (<paramref name="to"/> if none).</summary>
+        static int FirstAtOrAbove(ReadOnlySpan<double> y, int from, int to, double level)
         {
-            for (int i = from + 1; i <= to; i++)
-            {
-                if (y[i] >= level)
-                {
-                    double dy = y[i] - y[i - 1];
-                    double a = dy > 0 ? (level - y[i - 1]) / dy : 1;
-                    if (a < 0) a = 0;
-                    return t[i - 1] + a * (t[i] - t[i - 1]);
-                }
-            }
-            return t[to];
+            for (int i = from + 1; i <= to; i++) if (y[i] >= level) return i;
+            return to;
         }
+
+        /// <summary>The last sample before <paramref name="before"/> below <paramref name="level"/>, not before
+        /// <paramref name="from"/> (the lowest point, below every level of the rise).</summary>
+        static int LastBelow(ReadOnlySpan<double> y, int from, int before, double level)
+        {
+            int i = before - 1;
+            while (i > from && !(y[i] < level)) i--;
+            return i;
+        }
+
+        /// <summary>When the height reaches <paramref name="level"/> in the interval ending at sample <paramref name="i"/>,
+        /// interpolated linearly. Both callers give an interval that starts below the level and ends at or above it, so
+        /// the fraction lies in (0, 1].</summary>
+        static double CrossingTime(ReadOnlySpan<double> t, ReadOnlySpan<double> y, int i, double level)
+            => t[i - 1] + (level - y[i - 1]) / (y[i] - y[i - 1]) * (t[i] - t[i - 1]);
 
         /// <summary>Half-width of the centred moving average applied before measuring, s.</summary>
         public const double SmoothingHalfWindow = 0.025;
