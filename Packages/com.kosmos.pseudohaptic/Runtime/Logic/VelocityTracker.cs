@@ -16,9 +16,10 @@ namespace Kosmos.PseudoHaptic
         Vector3d _velocity;
         bool _hasAnchor;
 
-        /// <summary>The velocity at time <paramref name="now"/> (same clock as <see cref="Add"/>).</summary>
+        /// <summary>The velocity at time <paramref name="now"/> (same clock as <see cref="Add"/>): zero from
+        /// <see cref="StillAfter"/> seconds after the last change of position on.</summary>
         public Vector3d VelocityAt(double now) =>
-            _hasAnchor && now - _lastTime <= StillAfter ? _velocity : Vector3d.Zero;
+            _hasAnchor && now - _lastTime < StillAfter ? _velocity : Vector3d.Zero;
 
         public void Reset(Vector3d position, double time)
         {

@@ -1,3 +1,4 @@
+using System;
 using NUnit.Framework;
 
 namespace Kosmos.PseudoHaptic.Tests
@@ -80,6 +81,17 @@ namespace Kosmos.PseudoHaptic.Tests
             v.Add(Vector3d.NaN, 0.15);
             v.Add(new Vector3d(0, 1.1, 0), 0.3); // a repeated pose is no news
             Assert.That(v.VelocityAt(0.3), Is.EqualTo(Vector3d.Zero), "still for 0.2 s");
+        }
+
+        [Test]
+        public void TheVelocityReadsZeroFromExactlyStillAfterSecondsWithoutMotion()
+        {
+            // The last change of position at t = 0, so that now − last is StillAfter to the last bit at now = StillAfter.
+            var v = new VelocityTracker();
+            v.Reset(new Vector3d(0, 1, 0), -0.0625);
+            v.Add(new Vector3d(0, 1.0625, 0), 0);
+            Assert.That(v.VelocityAt(Math.BitDecrement(VelocityTracker.StillAfter)).Y, Is.EqualTo(1).Within(1e-9), "not yet still");
+            Assert.That(v.VelocityAt(VelocityTracker.StillAfter), Is.EqualTo(Vector3d.Zero), "still for StillAfter seconds: zero");
         }
 
         static readonly Vector3d Up = new Vector3d(0, 1, 0);
