@@ -55,14 +55,5 @@ namespace Kosmos.PseudoHaptic.Evaluation
             => Procedure == DiscriminationProcedure.ConstantStimuli
                 ? new DiscriminationSession(participant, condition, trialsPath, Plan())
                 : new DiscriminationSession(participant, condition, trialsPath, MakeStaircase);
-
-        /// <summary>Inspector floats as doubles (null gives an empty array).</summary>
-        public static double[] ToDoubles(float[] values)
-        {
-            if (values == null) return new double[0];
-            var result = new double[values.Length];
-            for (int i = 0; i < values.Length; i++) result[i] = values[i];
-            return result;
-        }
     }
 }

@@ -60,10 +60,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
-        public void InspectorFloatsBecomeDoubles()
+        public void NoCatchMassesGiveNoCatchLevels()
         {
-            Assert.That(DiscriminationSettings.ToDoubles(null), Is.Empty);
-            Assert.That(DiscriminationSettings.ToDoubles(new[] { 0.35f, 2f }), Is.EqualTo(new[] { (double)0.35f, 2.0 }));
             var none = Settings();
             none.CatchKg = null;
             Assert.That(none.Plan().CatchLevels, Is.Empty);
