@@ -223,7 +223,7 @@ namespace Kosmos.PseudoHaptic.Tests
             // The same poses at 32 Hz, drawn once per frame at 32 fps or four times each at 128 fps (pose time unknown).
             var poses = new List<double>();
             for (int i = 0; i < 17; i++) poses.Add(1.0);
-            poses.AddRange(Ramp(1.0, 1.3, 10));
+            for (int i = 1; i <= 10; i++) poses.Add(1.0 + 0.3 * QuestHand.MinimumJerk(i / 10.0)); // 10 % and 90 % between poses
             for (int i = 0; i < 15; i++) poses.Add(1.3);
             LiftMeasurement Measure(int repeats)
             {
