@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using NUnit.Framework;
 
 namespace Kosmos.PseudoHaptic.Tests
@@ -72,6 +73,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(c.Measurements[0].IsAccepted, Is.False);
             Assert.That(c.Measurements[0].Reason, Does.Contain("too short"));
             Assert.That(c.Message, Does.Contain("did not count").And.Contain("too short"));
+            Assert.That(c.Message, Does.Contain("try again"), "a lift too small to lower from asks for another at once");
             Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest), "and asks for another lift");
         }
 
@@ -123,6 +125,288 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(c.Message, Does.Contain("No hand"));
             c.Tick(0.011, true, 0.8, double.NaN);
             Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Idle));
+        }
+            // Scripted frames (issue 35): at 32 frames a second every time is exact in binary, so a boundary (RestTime,
+        // SettleTime, MaxLiftTime, StillBand) falls exactly on a frame. RestTime is the default 0.5 s = 16 frames; the
+        // first frame sets the still reference, so a lift starts on the 17th still frame.
+        const double Dt = 1.0 / 32;
+
+        static CalibrationStation Scripted(int wanted) => new CalibrationStation { LiftsWanted = wanted, SettleTime = 10 * Dt };
+
+        static void Frames(CalibrationStation c, params double[] heights)
+        {
+            foreach (double y in heights) c.Tick(Dt, true, y, double.NaN);
+        }
+
+        static void Still(CalibrationStation c, double y, int frames)
+        {
+            for (int i = 0; i < frames; i++) c.Tick(Dt, true, y, double.NaN);
+        }
+
+        /// <summary>The heights after <paramref name="from"/> up to <paramref name="to"/> in <paramref name="n"/> equal steps.</summary>
+        static double[] Ramp(double from, double to, int n)
+        {
+            var r = new double[n];
+            for (int i = 1; i <= n; i++) r[i - 1] = i == n ? to : from + (to - from) * i / n;
+            return r;
+        }
+
+        /// <summary>Rests at 0.8 m until the lift starts, rises 0.3 m in 10 frames and holds the top SettleTime.</summary>
+        static void GoodLift(CalibrationStation c)
+        {
+            Still(c, 0.8, 17);
+            Frames(c, Ramp(0.8, 1.1, 10));
+            Still(c, 1.1, 10);
+        }
+
+        [Test]
+        public void ANewStationSaysNothingAndBeginAsksForTheBallAtRest()
+        {
+            var c = new CalibrationStation();
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Idle));
+            Assert.That(c.Message, Is.Empty, "nothing to show before Begin");
+            c.Begin(true);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest));
+            Assert.That(c.Message, Does.Contain("Hold the golf ball still"));
+        }
+
+        [Test]
+        public void ALiftStartsOnceTheBallRestedRestTimeWithinTheBandAndSaysWhichLiftItIs()
+        {
+            var c = Scripted(3);
+            c.StillBand = Dt / 2; // 1/64 m, exact
+            c.Begin(true);
+            // A hand jittering by exactly the band stays within it: still.
+            for (int i = 0; i < 16; i++)
+            {
+                c.Tick(Dt, true, i % 2 == 0 ? 1.0 : 1.0 + c.StillBand, double.NaN);
+                Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest), "frame " + (i + 1));
+            }
+            c.Tick(Dt, true, 1.0, double.NaN);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift), "still for exactly RestTime since the first frame");
+            Assert.That(c.Message, Does.StartWith("Lift 1 of 3: ").And.Contain("lift the ball up"));
+        }
+
+        [Test]
+        public void TheLiftIsMeasuredFromEveryNewPoseSinceItsStartEvenOneAtTheSameHeight()
+        {
+            var c = Scripted(1);
+            c.Begin(true);
+            var times = new List<double>();
+            var heights = new List<double>();
+            double clock = 0;
+            int pose = 0;
+            void Frame(double y)
+            {
+                CalibrationPhase before = c.Phase;
+                clock += Dt;
+                c.Tick(Dt, true, y, pose++); // every frame a new pose, its time known
+                if (before == CalibrationPhase.Lift || c.Phase == CalibrationPhase.Lift) { times.Add(clock); heights.Add(y); }
+            }
+            for (int i = 0; i < 17; i++) Frame(1.0);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
+            foreach (double y in Ramp(1.0, 1.02, 2)) Frame(y);
+            for (int i = 0; i < 6; i++) Frame(1.02); // a pause just below 10 % of the rise: new poses at one height
+            foreach (double y in Ramp(1.02, 1.3, 10)) Frame(y);
+            for (int i = 0; i < 40 && c.Phase == CalibrationPhase.Lift; i++) Frame(1.3);
+            Assert.That(c.Measurements.Count, Is.EqualTo(1), c.Message);
+            LiftMeasurement expected = StandardSpeedCalibration.MeasureLift(times.ToArray(), heights.ToArray());
+            Assert.That(expected.IsAccepted, Is.True, expected.Reason);
+            Assert.That(expected.Rise, Is.EqualTo(0.3).Within(1e-9), "from the resting height the lift started at");
+            Assert.That(c.Measurements[0].Rise, Is.EqualTo(expected.Rise));
+            Assert.That(c.Measurements[0].Speed, Is.EqualTo(expected.Speed));
+        }
+
+        [Test]
+        public void RepeatedPosesOfUnknownTimeAreRecordedOnce()
+        {
+            // The same poses at 32 Hz, drawn once per frame at 32 fps or four times each at 128 fps (pose time unknown).
+            var poses = new List<double>();
+            for (int i = 0; i < 17; i++) poses.Add(1.0);
+            for (int i = 1; i <= 10; i++) poses.Add(1.0 + 0.3 * QuestHand.MinimumJerk(i / 10.0)); // 10 % and 90 % between poses
+            for (int i = 0; i < 15; i++) poses.Add(1.3);
+            LiftMeasurement Measure(int repeats)
+            {
+                var c = Scripted(1);
+                c.Begin(true);
+                foreach (double y in poses)
+                    for (int r = 0; r < repeats; r++) c.Tick(Dt / repeats, true, y, double.NaN);
+                Assert.That(c.Measurements.Count, Is.EqualTo(1), c.Message);
+                return c.Measurements[0];
+            }
+            LiftMeasurement once = Measure(1), four = Measure(4);
+            Assert.That(once.IsAccepted, Is.True, once.Reason);
+            Assert.That(four.Rise, Is.EqualTo(once.Rise).Within(1e-12));
+            Assert.That(four.Speed, Is.EqualTo(once.Speed).Within(1e-9));
+        }
+
+        [Test]
+        public void ALiftOfExactlyTheSmallestRiseEndsOnceHeldSettleTimeAtItsTopAndCounts()
+        {
+            // At 5⅓ frames a second the ball goes from the table (0 m) to exactly MinRise (0.1 m) in one frame, so no
+            // height in between enters the core's smoothing and the rise it measures is exactly 0.1 m too.
+            const double dt = 3.0 / 16;
+            var c = new CalibrationStation { LiftsWanted = 1, SettleTime = 2 * dt };
+            c.Begin(true);
+            int pose = 0; // pose times known: a new pose at the same height counts
+            for (int i = 0; i < 4; i++) c.Tick(dt, true, 0.0, pose++);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
+            c.Tick(dt, true, 0.1, pose++);
+            c.Tick(dt, true, 0.1, pose++);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift), "held at the top one frame less than SettleTime");
+            c.Tick(dt, true, 0.1, pose++);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Accepted), c.Message);
+        }
+
+        [Test]
+        public void ABallHeldWithinTheBandBelowItsTopIsHeldAtTheTop()
+        {
+            var c = Scripted(1);
+            c.StillBand = Dt / 2; // 1/64 m, exact
+            c.Begin(true);
+            Still(c, 0.0, 17);
+            Frames(c, 0.05, 0.1, 0.15, 0.2, 0.25);
+            Still(c, 0.25 - c.StillBand, 10); // sagged by exactly the band, still for SettleTime
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Accepted), c.Message);
+        }
+
+        [Test]
+        public void AfterALiftTheStationWaitsForTheBallToBeLoweredThenAsksForTheNext()
+        {
+            var c = Scripted(3);
+            c.Begin(true);
+            GoodLift(c);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lower), c.Message);
+            LiftMeasurement m = c.Measurements[0];
+            Assert.That(m.IsAccepted, Is.True, m.Reason);
+            Assert.That(c.Message, Does.StartWith("Lift 1: " + m.Speed.ToString("0.00", CultureInfo.InvariantCulture) + " m/s.").And.Contain("Lower the ball"));
+            Still(c, 1.1, 32);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lower), "a ball held at the top is not lowered");
+            Frames(c, Ramp(1.1, 0.8, 10));
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest));
+            Assert.That(c.Message, Does.StartWith("Hold the ball still for lift 2 of 3").And.EndWith("."));
+        }
+
+        [Test]
+        public void ALiftThatRanOutOfTimeBackNearItsStartDoesNotCountAndSaysWhy()
+        {
+            var c = Scripted(2);
+            c.MaxLiftTime = 1;
+            c.Begin(true);
+            Still(c, 0.8, 17);
+            Frames(c, Ramp(0.8, 1.1, 10));
+            Frames(c, Ramp(1.1, 0.8, 10)); // straight back down, never held at the top
+            Still(c, 0.8, 12);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift), "MaxLiftTime (32 frames) reached, not yet passed");
+            Still(c, 0.8, 1);
+            Assert.That(c.Measurements.Count, Is.EqualTo(1), "ended once longer than MaxLiftTime");
+            LiftMeasurement m = c.Measurements[0];
+            Assert.That(m.IsAccepted, Is.False);
+            Assert.That(m.Reason, Does.Contain("not held up at the top"));
+            Assert.That(c.Message, Does.StartWith("That lift did not count: " + m.Reason + ". "));
+        }
+
+        [Test]
+        public void TwiceTheWantedLiftsAreTriedThenItEndsRejectedAndBeginStartsAfresh()
+        {
+            var c = Scripted(1);
+            int completed = 0;
+            CalibrationResult got = default;
+            c.Completed += r => { completed++; got = r; };
+            c.Begin(true);
+            for (int i = 0; i < 2; i++)
+            {
+                Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest), "try " + (i + 1));
+                Still(c, 0.8, 17);
+                Frames(c, 1.1); // a jump, far too quick to be a lift
+                Still(c, 1.1, 10);
+                Assert.That(c.Measurements.Count, Is.EqualTo(i + 1));
+                Assert.That(c.Measurements[i].IsAccepted, Is.False);
+                if (i == 0)
+                {
+                    Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lower), c.Message);
+                    Frames(c, 0.8);
+                }
+            }
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rejected), c.Message);
+            Assert.That(c.Message, Does.StartWith("Calibration rejected: ").And.Contain(c.Result.Reason).And.EndWith(". Begin again."));
+            Assert.That(completed, Is.EqualTo(1));
+            Assert.That(got.IsAccepted, Is.False);
+            c.Begin(true);
+            Assert.That(c.Measurements, Is.Empty, "a new calibration forgets the last one's lifts");
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest));
+            Assert.That(c.Message, Does.Contain("Hold the golf ball still"));
+        }
+
+        [Test]
+        public void AnAcceptedCalibrationSaysTheSpeedAndWhetherItWasSaved([Values(false, true)] bool withStore)
+        {
+            var store = withStore ? new Store() : null;
+            var c = Scripted(1);
+            c.Saver = store;
+            int completed = 0;
+            c.Completed += r => completed++;
+            c.Begin(true);
+            GoodLift(c);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Accepted), c.Message);
+            Assert.That(completed, Is.EqualTo(1));
+            string said = "Your standard speed: " + c.Result + ".";
+            Assert.That(c.Message, Is.EqualTo(withStore ? said + " Saved for user 'p01'." : said));
+        }
+
+        [Test]
+        public void FramesWithoutTimeOrWithoutAUsableHandChangeNothing()
+        {
+            // The same two lifts, clean and with each frame split into quarters and garbage frames around it.
+            var heights = new List<double>();
+            for (int i = 0; i < 17; i++) heights.Add(0.8);
+            heights.AddRange(Ramp(0.8, 1.1, 10));
+            for (int i = 0; i < 10; i++) heights.Add(1.1);
+            heights.AddRange(Ramp(1.1, 0.8, 10));
+            for (int i = 0; i < 17; i++) heights.Add(0.8);
+            heights.AddRange(Ramp(0.8, 1.1, 10));
+            for (int i = 0; i < 10; i++) heights.Add(1.1);
+            var clean = Scripted(2);
+            clean.Begin(true);
+            foreach (double y in heights) clean.Tick(Dt, true, y, double.NaN);
+            Assert.That(clean.Phase, Is.EqualTo(CalibrationPhase.Accepted), clean.Message);
+
+            var noisy = Scripted(2);
+            noisy.Begin(true);
+            foreach (double y in heights)
+            {
+                foreach (double dt in new[] { 0, double.NaN, -Dt, double.PositiveInfinity, double.NegativeInfinity })
+                    noisy.Tick(dt, true, 5.0, double.NaN); // no time passed (or nonsense): nothing to record
+                noisy.Tick(Dt / 4, false, 0.0, double.NaN); // lost hand, its pose at the origin
+                noisy.Tick(Dt / 4, true, double.NaN, double.NaN);
+                noisy.Tick(Dt / 4, true, double.PositiveInfinity, double.NaN);
+                noisy.Tick(Dt / 4, true, y, double.NaN);
+            }
+            Assert.That(noisy.Phase, Is.EqualTo(clean.Phase), noisy.Message);
+            Assert.That(noisy.Message, Is.EqualTo(clean.Message));
+            Assert.That(noisy.Measurements.Count, Is.EqualTo(clean.Measurements.Count));
+            for (int i = 0; i < clean.Measurements.Count; i++)
+                Assert.That(noisy.Measurements[i].Speed, Is.EqualTo(clean.Measurements[i].Speed), "lift " + (i + 1));
+        }
+
+        [Test]
+        public void UpTo250PosesASecondALiftIsEndedByMaxLiftTimeNotByAFullBuffer()
+        {
+            // The buffer is sized for 250 samples a second ("above any tracking or frame rate").
+            const double dt = 1.0 / 250;
+            var c = new CalibrationStation { LiftsWanted = 1 };
+            c.Begin(true);
+            double y = 0.8;
+            for (int i = 0; i < 500 && c.Phase == CalibrationPhase.Rest; i++) c.Tick(dt, true, y, double.NaN);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
+            int frames = 0;
+            for (; frames < 2000 && c.Phase == CalibrationPhase.Lift; frames++)
+            {
+                y += 0.0005; // rising slowly, never settling
+                c.Tick(dt, true, y, double.NaN);
+            }
+            Assert.That(frames * dt, Is.GreaterThanOrEqualTo(c.MaxLiftTime));
+            Assert.That(c.Measurements.Count, Is.EqualTo(1));
         }
     }
 }

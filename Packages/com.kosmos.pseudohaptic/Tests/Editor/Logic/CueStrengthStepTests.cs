@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Globalization;
 using System.Linq;
 using Kosmos.PseudoHaptic.Evaluation;
 using NUnit.Framework;
@@ -103,6 +104,63 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(settings.MaxTrials, Is.LessThanOrEqualTo(60), "short: at most 60 trials");
             Assert.That(settings.StandardKg, Is.EqualTo(2.0));
             Assert.That(CueStrengthStep.Message(CueStrengthTuning.Solve(2, 0.4, CueStrengthTuning.ExperimentOneBoxes)), Does.StartWith("Your weight threshold: 20 % at 2 kg. Cue strength "));
+        }
+    
+
+        /// <summary>A finished staircase answered by an observer who calls the comparison heavier from <paramref name="pointKg"/> up.</summary>
+        static Staircase FinishedAt(double pointKg)
+        {
+            var staircase = CueStrengthStep.Settings().MakeStaircase("p", CueStrengthStep.Condition);
+            while (!staircase.Finished) staircase.Record(staircase.Next().Comparison >= pointKg ? 1 : 0);
+            return staircase;
+        }
+
+        [Test]
+        public void AThresholdBelowTheStandardIsNamedToTheGramInTheReason()
+        {
+            Staircase staircase = FinishedAt(1.8);
+            Assert.That(staircase.Threshold, Is.LessThan(CueStrengthStep.StandardKg));
+            Assert.That(staircase.Threshold, Is.Not.EqualTo(Math.Round(staircase.Threshold, 3)), "more decimals than grams");
+            Assert.That(CueStrengthStep.Tune(staircase, null, 0.5, out string reason), Is.Null);
+            Assert.That(reason, Does.StartWith("the staircase's threshold (" + staircase.Threshold.ToString("0.###", CultureInfo.InvariantCulture) + " kg)")
+                .And.EndWith("not above the standard"));
+        }
+
+        [Test]
+        public void TheStrengthIsTunedForTheScenesMassesWhenGiven()
+        {
+            Staircase staircase = FinishedAt(2.6);
+            var masses = new[] { 1.0, 3.0 };
+            CueStrengthTuning t = CueStrengthStep.Tune(staircase, masses, 0.5, out string reason);
+            Assert.That(t, Is.Not.Null, reason);
+            Assert.That(t.Masses, Is.EqualTo(masses));
+            double cue = CueStrengthStep.ThresholdCueFromThreshold(staircase.Threshold, staircase.Standard, 0.5);
+            Assert.That(t.CueStrength, Is.EqualTo(CueStrengthTuning.SolveForThresholdCue(staircase.Standard, cue, masses, 0.5).CueStrength));
+            Assert.That(CueStrengthStep.Tune(staircase, null, 0.5, out _).Masses, Is.EqualTo(CueStrengthTuning.ExperimentOneBoxes), "none given: Experiment 1's boxes");
+        }
+
+        [Test]
+        public void AThresholdAHairAboveTheStandardGivesNoZeroCueTheTuningCannotTake()
+        {
+            double ulp = Math.Pow(2, -51); // the spacing of doubles at 2
+            for (int k = 1; k <= 16; k++)
+            {
+                double cue = CueStrengthStep.ThresholdCueFromThreshold(2 + k * ulp, 2, 0.5);
+                Assert.That(double.IsNaN(cue) || cue > 0, Is.True, "2 kg + " + k + " ulp: " + cue.ToString("R", CultureInfo.InvariantCulture));
+            }
+        }
+
+        [Test]
+        public void TheParticipantIsToldTheThresholdInPercentTheStrengthAndWhetherItIsTheStrongest()
+        {
+            CueStrengthTuning reached = CueStrengthTuning.Solve(1.75, 0.5, CueStrengthTuning.ExperimentOneBoxes);
+            CueStrengthTuning strongest = CueStrengthTuning.Solve(1.75, 1.5, new[] { 1.0, 1.02 });
+            Assert.That(reached.Reached, Is.True);
+            Assert.That(strongest.Reached, Is.False);
+            // A whole percent, the standard to 0.1 kg (1.75 kg has more decimals), the strength to two decimals.
+            const string shape = @"^Your weight threshold: \d+ % at \d+(\.\d)? kg\. Cue strength \d+\.\d\d";
+            Assert.That(CueStrengthStep.Message(reached), Does.Match(shape + @"\.$"));
+            Assert.That(CueStrengthStep.Message(strongest), Does.Match(shape + @" \(the strongest; .+\)\.$"));
         }
     }
 }

@@ -78,6 +78,7 @@ namespace Kosmos.PseudoHaptic.Tests
             string error = FieldRules.Positive("Radius", value);
             Assert.That(error == null, Is.EqualTo(ok));
             if (!ok) Assert.That(error, Does.StartWith("Radius must be finite and greater than 0"));
+            Assert.That(FieldRules.Positive("Radius", -0.5), Does.EndWith("(was -0.5)"), "the value given");
         }
 
         [Test]
@@ -85,6 +86,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             Assert.That(FieldRules.NonNegative("Reach", 0), Is.Null);
             Assert.That(FieldRules.NonNegative("Reach", -1e-9), Does.Contain("Reach must be finite and at least 0"));
+            Assert.That(FieldRules.NonNegative("Reach", -0.5), Does.EndWith("(was -0.5)"), "the value given");
             Assert.That(() => FieldRules.Require(FieldRules.NonNegative("Reach", double.NaN), "Reach", double.NaN),
                 Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("Reach"));
             Assert.That(FieldRules.First(null, "b", "c"), Is.EqualTo("b"));
@@ -98,7 +100,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             string error = WeightSettings.ExplicitMassError("left", source);
             Assert.That(error == null, Is.EqualTo(ok));
-            if (!ok) Assert.That(error, Does.Contain("left object's Mass Source is " + source).And.Contains("Explicit"));
+            if (!ok) Assert.That(error, Does.StartWith("the left object's Mass Source is " + source).And.Contains("Explicit"));
         }
 
         [Test]

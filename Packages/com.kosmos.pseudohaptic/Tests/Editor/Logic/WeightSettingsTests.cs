@@ -27,7 +27,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void EachFailureSaysWhy()
         {
             Assert.That(WeightSettings.TryCreateModel(MassSource.Rigidbody, double.NaN, 1000, 1, Volume, "crate", out _, out string error), Is.False);
-            Assert.That(error, Does.Contain("no Rigidbody").And.Contain("crate"));
+            Assert.That(error, Does.Contain("no Rigidbody").And.Contain("'crate'"), "the object named, quoted");
             VolumeQuery unreadable = (out double v, out string e) => { v = 0; e = "mesh 'bottle' is not readable"; return false; };
             Assert.That(WeightSettings.TryCreateModel(MassSource.DensityTimesVolume, 1, 1000, 1, unreadable, "b", out _, out error), Is.False);
             Assert.That(error, Does.Contain("not readable"));
@@ -186,8 +186,26 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void WithoutAProfileOrWithAStrengthTheHoldRefusesItIsNotConfigured()
+        {
+            var hold = new HeldObject(new BoxScene.Box(Vector3d.Zero, 1));
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.Explicit, double.NaN, 0, 2, Volume, "box", null, null, 0.5, out _, out string error), Is.False);
+            Assert.That(error, Does.Contain("no profile"));
+            Assert.That(WeightSettings.TryConfigure(hold, MassSource.Explicit, double.NaN, 0, 2, Volume, "box", NamedProfiles.Paper, null, 0.5, out _, out error, cueStrength: 10), Is.False);
+            Assert.That(error, Does.Contain("CueStrength"), "the hold's reason");
+        }
+
+        [Test]
+        public void TheCueStrengthIsTheUsersStoredOneOrOne()
+        {
+            Assert.That(WeightSettings.CueStrength(true, 1.7), Is.EqualTo(1.7));
+            Assert.That(WeightSettings.CueStrength(false, 1.7), Is.EqualTo(1.0), "the paper's cue");
+        }
+
+        [Test]
         public void TheWatchAsksForAConfigurationAfterASettingTheAssetOrItsVersionChanged()
         {
+            Assert.That(new ConfigurationWatch().IsStale(null, 0), Is.True, "never configured, even with no asset at version 0");
             var watch = new ConfigurationWatch();
             object asset = new object();
             Assert.That(watch.IsStale(asset, 1), Is.True, "never configured");
