@@ -133,6 +133,17 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ARefusalJustShortOfItsBoundShowsTheDigitsThatMakeItShort()
+        {
+            // 0.09999 m rounds to the bound's own "0.1": the message must not read "rose 0.1 m, at least 0.1 m needed".
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5 }, new[] { 0, 0, 0.09999, 0.09999 });
+            Assert.That(lift.IsAccepted, Is.False);
+            Assert.That(lift.Reason, Is.EqualTo("too short: the hand rose 0.09999 m, at least 0.1 m needed"));
+            var clear = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5 }, new[] { 0, 0, 0.05, 0.05 });
+            Assert.That(clear.Reason, Is.EqualTo("too short: the hand rose 0.05 m, at least 0.1 m needed"), "to the millimetre otherwise");
+        }
+
+        [Test]
         public void EachRefusalSaysWhy()
         {
             Assert.That(StandardSpeedCalibration.MeasureLift(new[] { 0.0, 1.0 }, new[] { 1.0 }).Reason,

@@ -62,7 +62,7 @@ namespace Kosmos.PseudoHaptic
                 if (rise > bestRise) { bestRise = rise; bestLow = lowIdx; bestHigh = j; }
             }
             if (bestRise < MinRise)
-                return Reject("too short: the hand rose " + Fmt(bestRise) + " m, at least " + Fmt(MinRise) + " m needed");
+                return Reject("too short: the hand rose " + Fmt(bestRise, MinRise) + " m, at least " + Fmt(MinRise) + " m needed");
 
             // The lift: from the last time the hand was below 10 % of the rise to the first time it reached 90 %. A bump
             // after the lowest point that reaches 10 % and comes back down (the hand settling on the ball) is not lift.
@@ -72,12 +72,12 @@ namespace Kosmos.PseudoHaptic
             double t10 = CrossingTime(times, heights, LastBelow(heights, bestLow, i90, y0 + 0.10 * bestRise) + 1, y0 + 0.10 * bestRise);
             double duration = t90 - t10;
             if (!(duration >= MinDuration))
-                return new LiftMeasurement(false, double.NaN, bestRise, duration, "too short: the lift took " + Fmt(duration) + " s, at least " + Fmt(MinDuration) + " s needed");
+                return new LiftMeasurement(false, double.NaN, bestRise, duration, "too short: the lift took " + Fmt(duration, MinDuration) + " s, at least " + Fmt(MinDuration) + " s needed");
             double speed = 0.8 * bestRise / duration;
             if (speed < MinSpeed)
-                return new LiftMeasurement(false, double.NaN, bestRise, duration, "too slow: " + Fmt(speed) + " m/s, at least " + Fmt(MinSpeed) + " m/s expected");
+                return new LiftMeasurement(false, double.NaN, bestRise, duration, "too slow: " + Fmt(speed, MinSpeed) + " m/s, at least " + Fmt(MinSpeed) + " m/s expected");
             if (speed > MaxSpeed)
-                return new LiftMeasurement(false, double.NaN, bestRise, duration, "too fast: " + Fmt(speed) + " m/s, at most " + Fmt(MaxSpeed) + " m/s expected");
+                return new LiftMeasurement(false, double.NaN, bestRise, duration, "too fast: " + Fmt(speed, MaxSpeed) + " m/s, at most " + Fmt(MaxSpeed) + " m/s expected");
             return new LiftMeasurement(true, speed, bestRise, duration, null);
         }
 
@@ -179,5 +179,13 @@ namespace Kosmos.PseudoHaptic
 
         static LiftMeasurement Reject(string reason) => new LiftMeasurement(false, double.NaN, double.NaN, double.NaN, reason);
         static string Fmt(double v) => v.ToString("0.###", CultureInfo.InvariantCulture);
+
+        /// <summary>A refused value beside its bound: to the millimetre (or millisecond), unless that prints the bound itself
+        /// ("rose 0.1 m, at least 0.1 m"), then every digit.</summary>
+        static string Fmt(double v, double bound)
+        {
+            string s = Fmt(v);
+            return s == Fmt(bound) ? v.ToString("R", CultureInfo.InvariantCulture) : s;
+        }
     }
 }
