@@ -107,6 +107,117 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(((OffsetCorrection)oc.Build()).Band, Is.EqualTo(0.02));
         }
 
+        // Issue 35 (logic-session survivors): what the profile inspector and the profile asset rely on of an entry and the list.
+
+        [Test]
+        public void AnEntryKeepsTheValuesItWasMadeWithAndShowsItsSettingsWhenAdded()
+        {
+            var oc = ProfileEffect.Of(OffsetCorrection.Descriptor.DefaultSettings().Set("band", 0.05).Set("maxScale", 2));
+            Assert.That(oc.Get("band"), Is.EqualTo(0.05));
+            Assert.That(((OffsetCorrection)oc.Build()).MaxScale, Is.EqualTo(2));
+            Assert.That(oc.Get("threshold"), Is.EqualTo(0.2), "the others at their defaults");
+            // A preset as a list keeps a value that is not the default.
+            var p = new WeightProfile("p", new WeightEffect[] { new OffsetCorrection(0.3, 0.04, 0.1, 0.75, 1.3) }, SolverLimits.Default);
+            Assert.That(ProfileEffectList.FromProfile(p)[0].Get("band"), Is.EqualTo(0.04));
+            // An effect just added to the inspector's list shows its settings (unfolded), so the user sees what was added.
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Gain);
+            ProfileEffectList.Add(list, "offset-correction");
+            Assert.That(list[ProfileEffectList.IndexOf(list, "offset-correction")].expanded, Is.True);
+            Assert.That(new ProfileEffect().expanded, Is.True);
+        }
+
+        [Test]
+        public void GetAndSetReadAndWriteAnySettingAndNameTheEffectAndTheSettingWhenThereIsNone()
+        {
+            var oc = ProfileEffect.Of(OffsetCorrection.Descriptor);
+            Assert.That(oc.Get("band"), Is.EqualTo(0.02), "a setting after the first");
+            var get = Assert.Catch<ArgumentException>(() => oc.Get("treshold"));
+            Assert.That(get.ParamName, Is.EqualTo("setting"));
+            Assert.That(get.Message, Does.Contain("'offset-correction'").And.Contain("'treshold'"), "both names, quoted");
+            var set = Assert.Catch<ArgumentException>(() => oc.Set("treshold", 1));
+            Assert.That(set.Message, Does.Contain("'offset-correction'").And.Contain("'treshold'"), "both names, quoted");
+            // A setting the entry lacks (an asset saved before the effect had it) is added; one it has is changed in place:
+            // however often the inspector sets a value, the asset holds it once.
+            oc.settings.RemoveAll(v => v.name == "band");
+            oc.Set("band", 0.05);
+            Assert.That(oc.Get("band"), Is.EqualTo(0.05));
+            foreach (double v in new[] { 0.1, 0.5, 0.3 }) oc.Set("threshold", v);
+            Assert.That(oc.Get("threshold"), Is.EqualTo(0.3));
+            Assert.That(oc.settings.Select(v => v.name), Is.EquivalentTo(OffsetCorrection.Descriptor.Settings.Select(s => s.Name)), "one value per setting");
+        }
+
+        [Test]
+        public void AnEmptySlotInAnEntrysValuesIsSkipped()
+        {
+            var oc = ProfileEffect.Of(OffsetCorrection.Descriptor);
+            oc.settings.Insert(0, null);
+            oc.Set("band", 0.05);
+            Assert.That(((OffsetCorrection)oc.Build()).Band, Is.EqualTo(0.05));
+            Assert.That(oc.Get("threshold"), Is.EqualTo(0.2));
+        }
+
+        [Test]
+        public void AnUnregisteredEffectIsNamedWithTheEffectsThatAreKnown()
+        {
+            string known = "known effects: " + string.Join(", ", EffectRegistry.All.Select(d => d.Name));
+            var entry = new ProfileEffect { effect = "gone" };
+            Assert.That(Assert.Catch<ArgumentException>(() => entry.Values()).Message, Does.Contain("'gone' is unknown").And.Contain(known));
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Gain);
+            var add = Assert.Catch<ArgumentException>(() => ProfileEffectList.Add(list, entry));
+            Assert.That(add.Message, Does.Contain("'gone' is unknown").And.Contain(known));
+            Assert.That(list.Count, Is.EqualTo(NamedProfiles.Gain.Effects.Count), "nothing added");
+        }
+
+        [Test]
+        public void LimitsRoundTripThroughTheirValuesAndABadOneIsNamedOnOneLine()
+        {
+            var limits = new SolverLimits(maxGain: 5, maxHandSpeed: 8, maxFrameTime: 0.05, glideSpeed: 0.4, workspaceRadius: 6);
+            var values = ProfileEffectList.LimitValues(limits);
+            Assert.That(values.Select(v => v.name), Is.EqualTo(SolverLimits.Settings.Select(s => s.Name)));
+            var back = ProfileEffectList.Limits(values);
+            Assert.That(new[] { back.MaxGain, back.MaxHandSpeed, back.MaxFrameTime, back.GlideSpeed, back.WorkspaceRadius },
+                Is.EqualTo(new[] { 5, 8, 0.05, 0.4, 6 }));
+            // The same message a profile file's bad limit gets (ProfileJson): the setting, then the one-line reason.
+            values[0].value = 0.5;
+            var e = Assert.Throws<EffectSettingException>(() => ProfileEffectList.Limits(values));
+            Assert.That(e.ParamName, Is.EqualTo("maxGain"));
+            Assert.That(e.Message, Is.EqualTo("limits: setting 'maxGain': maxGain must lie in [1, 100], got 0.5."));
+        }
+
+        [Test]
+        public void AddingToAStageThatHasEffectsPutsTheNewOneLastOfItsStage()
+        {
+            var list = ProfileEffectList.FromProfile(NamedProfiles.Gain); // motion-deadband, weight-gain, floor-clamp
+            Assert.That(ProfileEffectList.Add(list, "experimental-blend"), Is.True);
+            Assert.That(list.Select(e => e.effect), Is.EqualTo(new[] { "motion-deadband", "weight-gain", "experimental-blend", "floor-clamp" }));
+            Assert.That(ProfileEffectList.Add(list, "motion-deadband"), Is.False, "the first entry is there already");
+            Assert.That(list.Count, Is.EqualTo(4));
+            Assert.That(ProfileEffectList.Remove(list, "motion-deadband"), Is.True, "the first entry can be removed");
+            Assert.That(list.Select(e => e.effect), Is.EqualTo(new[] { "weight-gain", "experimental-blend", "floor-clamp" }));
+        }
+
+        [Test]
+        public void OnlyAStepOfOneToANeighbourInsideTheListCanMove()
+        {
+            var list = new List<ProfileEffect>
+            {
+                ProfileEffect.Of(WeightGain.Descriptor), ProfileEffect.Of(ExperimentalBlend.Descriptor), new ProfileEffect { effect = "gone" },
+            };
+            Assert.That(ProfileEffectList.CanMove(list, 0, 1), Is.True, "the first entry moves down");
+            Assert.That(ProfileEffectList.CanMove(list, 1, -1), Is.True, "to the first place");
+            Assert.That(ProfileEffectList.CanMove(list, 0, 0), Is.False, "no step");
+            Assert.That(ProfileEffectList.Move(list, 0, 0), Is.False);
+            Assert.That(ProfileEffectList.CanMove(list, 0, 2), Is.False, "more than one step");
+            Assert.That(ProfileEffectList.CanMove(list, 0, -1), Is.False, "above the first");
+            Assert.That(ProfileEffectList.CanMove(list, -1, 1), Is.False, "an index before the list");
+            Assert.That(ProfileEffectList.CanMove(list, list.Count, -1), Is.False, "an index past the list");
+            Assert.That(ProfileEffectList.CanMove(list, list.Count - 1, 1), Is.False, "below the last");
+            // An entry of an effect not registered (its assembly removed) moves nowhere and nothing moves past it.
+            Assert.That(ProfileEffectList.CanMove(list, 1, 1), Is.False);
+            Assert.That(ProfileEffectList.CanMove(list, 2, -1), Is.False);
+            Assert.That(list.Select(e => e.effect), Is.EqualTo(new[] { "weight-gain", "experimental-blend", "gone" }), "nothing moved");
+        }
+
         /// <summary>The fields an old asset saved for a named profile, as its CopyFrom wrote them (floats).</summary>
         static LegacyProfileFields OldAsset(WeightProfile p)
         {

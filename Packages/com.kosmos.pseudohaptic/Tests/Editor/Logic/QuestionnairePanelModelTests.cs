@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using Kosmos.PseudoHaptic.Evaluation;
 using NUnit.Framework;
 
@@ -61,6 +62,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(v.ScaleMin, Is.EqualTo(1));
             Assert.That(v.MinLabel, Is.EqualTo("Strongly disagree"));
             Assert.That(v.MaxLabel, Is.EqualTo("Strongly agree"));
+            Assert.That(v.Instructions, Is.EqualTo("How much do you agree?"));
             Assert.That(v.CanBack, Is.False, "nothing to go back to");
             Assert.That(v.CanNext, Is.False, "an unanswered item cannot be skipped");
             Assert.That(v.Chosen, Is.Null);
@@ -199,7 +201,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(m.Answer(4), Is.True, "taken");
             Assert.That(m.IsSaving, Is.True);
             Assert.That(View(m).Progress, Is.EqualTo("1 / 3"), "the item stays until its write is acknowledged");
-            Assert.That(View(m).Message, Is.EqualTo(m.SavingText));
+            Assert.That(View(m).Message, Is.EqualTo(m.SavingText).And.StartWith("Saving"), "the participant is told");
             Assert.That(m.Answer(5), Is.False, "no second answer while the first is being saved");
             Assert.That(m.Press(PanelAction.Back, 0), Is.False);
             Assert.That(m.Flush(10000), Is.True);
@@ -236,6 +238,126 @@ namespace Kosmos.PseudoHaptic.Tests
             now = 60;
             m.Update();
             Assert.That(m.Saver.Writes, Is.EqualTo(2));
+        }
+
+        // Issue 35 (logic-session survivors): what the participant sees and what a press or a restart does.
+
+        [Test]
+        public void APanelNotYetBegunAsksTheParticipantToWaitAndShowsNothingElse()
+        {
+            PanelView v = View(new QuestionnairePanelModel());
+            Assert.That(v.Main, Does.Contain("wait for the experimenter"));
+            Assert.That(new[] { v.Title, v.Progress, v.Instructions, v.MinLabel, v.MaxLabel, v.Message }, Is.All.Empty);
+            Assert.That(v.Points, Is.Zero);
+        }
+
+        static int Longest(string text) => text.Split('\n').Max(line => line.Length);
+
+        [Test]
+        public void TextsAreWrappedInsideThePanelsMarginsAndEachEndLabelInHalfTheRow()
+        {
+            // One-letter words: greedy wrapping fills each line to within one character of what fits.
+            string words = string.Join(" ", Enumerable.Repeat("a", 150));
+            var part = new Questionnaire("long", "Long", 1, 5, new[] { new QuestionnaireItem(1, words, false) }, words, words, words);
+            var m = new QuestionnairePanelModel();
+            Assert.That(m.Begin(new QuestionnaireCatalog(new[] { part }), "P1", _responses, null), Is.True, m.Error);
+            const float size = 0.004f;
+            foreach (float width in new[] { 0.2f, 0.6f })
+            {
+                int fits = QuestionnairePanelModel.CharsPerLine(width - 2 * QuestionnairePanelModel.Margin, size);
+                Assert.That(Longest(m.View(width, size).Main), Is.LessThanOrEqualTo(fits).And.GreaterThanOrEqualTo(fits - 1), "a panel " + width + " m wide");
+            }
+            // The two end labels sit side by side under the scale: each gets at most half the width the instructions
+            // (the same smaller text) have, so they never meet in the middle.
+            PanelView v = m.View(1.0f, size);
+            Assert.That(Longest(v.MinLabel), Is.LessThanOrEqualTo(Longest(v.Instructions) / 2));
+            Assert.That(Longest(v.MaxLabel), Is.LessThanOrEqualTo(Longest(v.Instructions) / 2));
+        }
+
+        [Test]
+        public void ALineOfCharsPerLineAverageGlyphsFitsTheWidth()
+        {
+            // A TextMesh line is characterSize × fontSize / 10 m high, and a legacy font's glyphs average about half that.
+            foreach (float width in new[] { 0.6f, 1f, 2f })
+                foreach (float size in new[] { 0.004f, 0.008f })
+                {
+                    float glyph = 0.5f * size * QuestionnairePanelModel.FontSize / 10f;
+                    int n = QuestionnairePanelModel.CharsPerLine(width, size);
+                    Assert.That(n * glyph, Is.LessThanOrEqualTo(width).And.GreaterThan(0.7f * width), width + " m at " + size);
+                }
+        }
+
+        [Test]
+        public void ScaleButtonsAreEightCentimetresWideWhenThereIsRoomAndShrinkToFillTheRowWhenNot()
+        {
+            const float width = 0.6f, gap = QuestionnairePanelModel.ButtonGap;
+            QuestionnairePanelModel.ScaleLayout(0, 5, width, out float w5, out float edge5);
+            Assert.That(w5, Is.EqualTo(0.08f), "five fit at the largest width");
+            Assert.That(2 * edge5, Is.EqualTo(5 * w5 + 4 * gap).Within(1e-6));
+            float x0 = QuestionnairePanelModel.ScaleLayout(0, 10, width, out float w, out float edge);
+            float x1 = QuestionnairePanelModel.ScaleLayout(1, 10, width, out _, out _);
+            float x9 = QuestionnairePanelModel.ScaleLayout(9, 10, width, out _, out _);
+            Assert.That(w, Is.GreaterThan(0).And.LessThan(0.08f), "ten do not fit at 8 cm");
+            Assert.That(2 * edge, Is.EqualTo(width - 2 * QuestionnairePanelModel.Margin).Within(1e-6), "they fill the row inside the margins");
+            Assert.That(x0 - w / 2, Is.EqualTo(-edge).Within(1e-6));
+            Assert.That(x9 + w / 2, Is.EqualTo(edge).Within(1e-6));
+            Assert.That(x1 - x0, Is.EqualTo(w + gap).Within(1e-6), "side by side, 1 cm apart");
+        }
+
+        [Test]
+        public void AFingerSlidingOntoAnotherButtonIsNoPokeEvenAfterTheCooldownAndANewSessionTakesTheFirstPoke()
+        {
+            QuestionnairePanelModel m = Panel();
+            Assert.That(m.Touch(10.0), Is.True);
+            for (double t = 10.02; t < 10.79; t += 0.02) m.Stay(t);
+            Assert.That(m.Touch(10.8), Is.False, "never withdrawn: it slid onto another button");
+            // The next participant's session: what the last finger did no longer counts.
+            Assert.That(m.Begin(Catalog(), "P2", _responses, null), Is.True, m.Error);
+            Assert.That(m.Touch(10.85), Is.True);
+        }
+
+        [Test]
+        public void AValueOffTheScaleIsRefusedAndItsMessageGoesWhenThePageChanges()
+        {
+            QuestionnairePanelModel m = Panel();
+            string failed = null;
+            m.Failed += e => failed = e;
+            Assert.That(m.Answer(4), Is.True);
+            Assert.That(m.Answer(9), Is.False, "the scale is 1–5");
+            Assert.That(m.Error, Is.Not.Null);
+            Assert.That(failed, Is.EqualTo(m.Error));
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,4" }), "nothing written");
+            Assert.That(m.Press(PanelAction.Next, 0), Is.False, "an unanswered item cannot be skipped");
+            Assert.That(m.Error, Is.Not.Null, "a press that changed nothing leaves the message");
+            Assert.That(m.Press(PanelAction.Back, 0), Is.True);
+            Assert.That(m.Error, Is.Null);
+            Assert.That(View(m).Message, Is.Empty);
+        }
+
+        [Test]
+        public void AnotherSessionIsRefusedWhileAnAnswerIsNotSavedAndBegunOnceItIs()
+        {
+            double now = 0;
+            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now));
+            Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
+            m.Answer(2);
+            Directory.Delete(_folder, true);
+            File.WriteAllText(_folder, "a file where the responses folder was");
+            try
+            {
+                Assert.That(m.Answer(3), Is.False);
+                Assert.That(m.Begin(Catalog(), "P2", _responses, null), Is.False);
+                Assert.That(m.Error, Does.Contain("not saved yet"));
+                Assert.That(View(m).Progress, Is.EqualTo("2 / 3"), "P1's page stays, the answer kept");
+            }
+            finally
+            {
+                File.Delete(_folder);
+            }
+            now = 5;
+            Assert.That(m.Update(), Is.True);
+            Assert.That(m.Begin(Catalog(), "P2", _responses, null), Is.True, "once it is saved");
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2", "P1,part-a,2,3" }));
         }
     }
 }

@@ -267,5 +267,163 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(SessionLog.SafeName("..hidden"), Is.EqualTo("_.hidden"));
             Assert.That(SessionLog.SafeName(""), Is.EqualTo("object"));
         }
+
+        // Issue 35 (logic-session survivors): the defaults, the guards and the files a study relies on.
+
+        [Test]
+        public void ALogWithoutASessionIdNamesItsSessionByTheLocalDateAndTimeOfItsFirstHold()
+        {
+            var unset = new SessionLog();
+            Assert.That(unset.Folder, Is.Empty, "no folder until one is set");
+            unset.Folder = null;
+            Assert.That(unset.Folder, Is.Empty, "null is no folder");
+            foreach (bool setToNull in new[] { false, true })
+            {
+                var log = new SessionLog { Folder = Path.Combine(_folder, setToNull ? "null" : "unset") };
+                if (setToNull) log.SessionId = null;
+                Assert.That(log.SessionId, Is.Empty);
+                BoxScene.Box box = Wired(log, "box", 1);
+                DateTime before = DateTime.Now.AddSeconds(-1);
+                Lift(box, 0.1, 0.3);
+                box.Hold.End(1);
+                DateTime after = DateTime.Now.AddSeconds(1);
+                string name = Path.GetFileName(log.SessionFolder);
+                Assert.That(name, Does.Match(@"^\d{8}-\d{6}$"), "yyyyMMdd-HHmmss");
+                DateTime at = DateTime.ParseExact(name, "yyyyMMdd-HHmmss", System.Globalization.CultureInfo.InvariantCulture);
+                Assert.That(at, Is.InRange(before, after));
+                Assert.That(log.SessionId, Is.EqualTo(name));
+                Assert.That(File.Exists(Path.Combine(log.SessionFolder, "hold-001-box.csv")), Is.True);
+            }
+        }
+
+        [Test]
+        public void AnObjectAnywhereOnTheListIsRecorded()
+        {
+            object a = new object(), b = new object(), c = new object();
+            Assert.That(SessionLog.IsListed(a, new[] { a, b }), Is.True);
+            Assert.That(SessionLog.IsListed(b, new[] { a, b }), Is.True);
+            Assert.That(SessionLog.IsListed(c, new[] { a, b }), Is.False);
+        }
+
+        [Test]
+        public void AHoldWithoutAnObjectOrASolverIsNotRecordedAndABeginWithoutAnEndKeepsTheFirstHold()
+        {
+            SessionLog log = Log();
+            var solver = Run.Solver(1);
+            solver.BeginHold(0.8, 0.8);
+            var hand = new HandSample(0.8);
+            log.Began(null, "box", solver, in hand, 0);
+            log.Began(new object(), "box", null, in hand, 0);
+            Assert.That(log.ActiveCount, Is.Zero);
+            Assert.That(log.HoldCount, Is.Zero);
+
+            object key = new object();
+            log.Began(key, "box", solver, in hand, 0);
+            Frames(log, key, solver, 10);
+            log.Began(key, "box", solver, in hand, 1); // its end was missed
+            Assert.That(log.ActiveCount, Is.EqualTo(1));
+            Assert.That(Read(Path.Combine(_folder, "P1", "hold-001-box.csv")).Count, Is.EqualTo(11), "the first hold as far as it got");
+            log.Ended(key);
+            Assert.That(Read(Path.Combine(_folder, "P1", "hold-002-box.csv")).Count, Is.EqualTo(1));
+            Assert.That(log.ActiveCount, Is.Zero);
+        }
+
+        [Test]
+        public void ThreeObjectsHeldAtOnceAreAllRecorded()
+        {
+            SessionLog log = Log();
+            var solver = Run.Solver(1);
+            solver.BeginHold(0.8, 0.8);
+            var hand = new HandSample(0.8);
+            var keys = new[] { new object(), new object(), new object() };
+            for (int i = 0; i < keys.Length; i++) log.Began(keys[i], "o" + i, solver, in hand, 0);
+            for (int i = 0; i < keys.Length; i++) Frames(log, keys[i], solver, 5 + i);
+            Assert.That(log.ActiveCount, Is.EqualTo(3));
+            foreach (object key in keys) log.Ended(key);
+            for (int i = 0; i < keys.Length; i++)
+                Assert.That(Read(Path.Combine(_folder, "P1", "hold-00" + (i + 1) + "-o" + i + ".csv")).Count, Is.EqualTo(6 + i));
+        }
+
+        [Test]
+        public void HoldsOfTwoHandsTakeTheReadyBuffersAndLaterHoldsReuseThem()
+        {
+            // A frame buffer is about a megabyte here (20 000 frames): beginning a hold must not allocate one, neither for the
+            // first two holds (two hands) nor for later ones once the earlier ones are written.
+            var log = new SessionLog(framesPerHold: 20000) { Folder = _folder, SessionId = "P1" };
+            var solver = Run.Solver(1);
+            solver.BeginHold(0.8, 0.8);
+            var hand = new HandSample(0.8);
+            object a = new object(), b = new object();
+            var warm = new SessionLog { Folder = _folder, SessionId = "warm-up" }; // the runtime compiles Began once, outside the count
+            warm.Began(a, "a", solver, in hand, 0);
+            for (int round = 0; round < 2; round++)
+            {
+                long before = Allocated();
+                log.Began(a, "a", solver, in hand, 0);
+                log.Began(b, "b", solver, in hand, 0);
+                Assert.That(Allocated() - before, Is.LessThan(100000), "bytes allocated by two begins, round " + round);
+                log.Ended(a);
+                log.Ended(b);
+            }
+            Assert.That(log.HoldCount, Is.EqualTo(4));
+        }
+
+        // The GC's per-thread counter under the .NET SDK; in the editor (Mono) the heap's size, which a buffer of a megabyte moves too.
+#if UNITY_5_3_OR_NEWER
+        static long Allocated() => GC.GetTotalMemory(false);
+#else
+        static long Allocated() => GC.GetAllocatedBytesForCurrentThread();
+#endif
+
+        [Test]
+        public void AHoldFlushedAtAPauseEndsInItsOwnSessionsFileWhenTheSessionChangesMeanwhile()
+        {
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "box", 1);
+            var (frames, _) = Lift(box, 0.2, 0.6);
+            log.FlushActive();
+            log.SessionId = "P2"; // the experimenter starts the next participant before the hold ends
+            box.Hold.Step(1, box.Position, true, true, double.NaN, 1 / 90.0);
+            box.Hold.End(1);
+            Assert.That(Read(Path.Combine(_folder, "P1", "hold-001-box.csv")).Count, Is.EqualTo(2 + frames), "the whole hold, where its first part is");
+            Assert.That(File.ReadAllLines(Path.Combine(_folder, "P1", "holds.csv")), Has.Length.EqualTo(2));
+            Assert.That(Directory.Exists(Path.Combine(_folder, "P2")), Is.False);
+        }
+
+        [Test]
+        public void TheIndexRowHoldsTheLastFramesMassProfileAndSpeedExactlyAndFilesHaveNoByteOrderMark()
+        {
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "Box B", 1.5);
+            Lift(box, 0.3, 1.1);
+            box.Hold.End(1);
+            string path = Path.Combine(_folder, "P1", "hold-001-Box_B.csv");
+            HoldRecording r = Read(path);
+            RecordedFrame last = r[r.Count - 1];
+            string[] row = File.ReadAllLines(Path.Combine(_folder, "P1", "holds.csv"))[1].Split(',');
+            var inv = System.Globalization.CultureInfo.InvariantCulture;
+            Assert.That(double.Parse(row[4], inv), Is.EqualTo(r.Duration), "duration_s");
+            Assert.That(double.Parse(row[5], inv), Is.EqualTo(1.5), "mass_kg");
+            Assert.That(row[6], Is.EqualTo(SessionLog.SafeName(last.Profile)).And.Not.Empty, "profile");
+            Assert.That(double.Parse(row[7], inv), Is.EqualTo(last.StandardSpeed).And.GreaterThan(0), "standard_speed");
+            Assert.That(double.Parse(row[8], inv), Is.EqualTo(12.5), "started_at_s");
+            // The header's first bytes are the file's: a reader that does not strip a byte-order mark sees "t,".
+            Assert.That(File.ReadAllBytes(path)[0], Is.EqualTo((byte)'t'));
+            Assert.That(File.ReadAllBytes(Path.Combine(_folder, "P1", "holds.csv"))[0], Is.EqualTo((byte)'h'));
+        }
+
+        [Test]
+        public void AnIndexThatCannotBeWrittenIsReportedAndTheHoldIsStillWritten()
+        {
+            Directory.CreateDirectory(Path.Combine(_folder, "P1", "holds.csv")); // a folder where the index should be
+            SessionLog log = Log();
+            var written = new List<string>();
+            log.HoldWritten += written.Add;
+            BoxScene.Box box = Wired(log, "box", 1);
+            Lift(box, 0.1, 0.3);
+            Assert.That(() => box.Hold.End(1), Throws.Nothing);
+            Assert.That(written, Is.EqualTo(new[] { Path.Combine(_folder, "P1", "hold-001-box.csv") }));
+            Assert.That(log.LastError, Does.Contain("holds.csv was not written"));
+        }
     }
 }
