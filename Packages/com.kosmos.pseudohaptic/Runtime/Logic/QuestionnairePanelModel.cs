@@ -82,6 +82,8 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Starts or resumes a session over named JSON definitions ("immersion.json", text); false, with <see cref="Error"/>, when they or the file cannot be used.</summary>
         public bool Begin(IReadOnlyList<KeyValuePair<string, string>> definitions, string participant, string responsesPath, IEnumerable<string> ids)
         {
+            // Before the session is dropped: the guard reads whether it has an answer still unsaved.
+            if (RefusesWhileUnsaved()) return false;
             Session = null; // a failed begin shows its reason, not the last participant's page
             if (definitions == null || definitions.Count == 0) return Fail("no questionnaire definitions are assigned to the panel");
             QuestionnaireCatalog catalog;
@@ -99,7 +101,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>Starts or resumes <paramref name="participant"/>'s session; false, with <see cref="Error"/>, when the catalog or the file cannot be used.</summary>
         public bool Begin(QuestionnaireCatalog catalog, string participant, string responsesPath, IEnumerable<string> ids)
         {
-            if (IsSaving && !Saver.Drain()) return Fail("the last answer is not saved yet: " + Saver.LastError);
+            if (RefusesWhileUnsaved()) return false;
             Session = null;
             _completedRaised = false;
             Debounce.Reset();
@@ -115,6 +117,10 @@ namespace Kosmos.PseudoHaptic
             _completedRaised = Session.IsComplete;
             return true;
         }
+
+        /// <summary>An answer of the current session is not on disk and cannot be written now: a new session would read the
+        /// responses file without it and write over it, so the begin is refused, the page and the answer kept.</summary>
+        bool RefusesWhileUnsaved() => IsSaving && !Saver.Drain() && !Fail("the last answer is not saved yet: " + Saver.LastError);
 
         bool Fail(string error)
         {

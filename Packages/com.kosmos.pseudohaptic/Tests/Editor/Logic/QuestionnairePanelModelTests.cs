@@ -334,11 +334,23 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(View(m).Message, Is.Empty);
         }
 
-        [Test]
-        public void AnotherSessionIsRefusedWhileAnAnswerIsNotSavedAndBegunOnceItIs()
+        /// <summary>Part A of <see cref="Catalog"/> as the JSON a panel's definition asset holds.</summary>
+        static readonly KeyValuePair<string, string>[] PartAJson =
+        {
+            new KeyValuePair<string, string>("part-a.json", "{ \"id\": \"part-a\", \"title\": \"Part A\", \"scale\": { \"min\": 1, \"max\": 5 }, " +
+                "\"items\": [ { \"number\": 1, \"text\": \"The box felt heavy.\" }, { \"number\": 2, \"text\": \"The ball felt light.\" }, " +
+                "{ \"number\": 3, \"text\": \"Nothing felt real.\", \"reverse\": true } ] }"),
+        };
+
+        // Both ways a panel begins (a catalog built in code, or the JSON definitions the panel's assets hold) refuse a new
+        // session while the last participant's answer is unsaved, and lose none of it once it is.
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AnotherSessionIsRefusedWhileAnAnswerIsNotSavedAndBegunOnceItIs(bool fromJson)
         {
             double now = 0;
             var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now));
+            Func<string, bool> begin = p => fromJson ? m.Begin(PartAJson, p, _responses, null) : m.Begin(Catalog(), p, _responses, null);
             Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
             m.Answer(2);
             Directory.Delete(_folder, true);
@@ -346,7 +358,7 @@ namespace Kosmos.PseudoHaptic.Tests
             try
             {
                 Assert.That(m.Answer(3), Is.False);
-                Assert.That(m.Begin(Catalog(), "P2", _responses, null), Is.False);
+                Assert.That(begin("P2"), Is.False);
                 Assert.That(m.Error, Does.Contain("not saved yet"));
                 Assert.That(View(m).Progress, Is.EqualTo("2 / 3"), "P1's page stays, the answer kept");
             }
@@ -356,8 +368,11 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             now = 5;
             Assert.That(m.Update(), Is.True);
-            Assert.That(m.Begin(Catalog(), "P2", _responses, null), Is.True, "once it is saved");
+            bool begun = begin("P2");
+            Assert.That(begun, Is.True, "once it is saved: " + m.Error);
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2", "P1,part-a,2,3" }));
+            m.Answer(5);
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2", "P1,part-a,2,3", "P2,part-a,1,5" }), "P2's answer is added, P1's kept");
         }
     }
 }
