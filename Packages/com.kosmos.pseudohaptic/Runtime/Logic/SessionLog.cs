@@ -81,7 +81,7 @@ namespace Kosmos.PseudoHaptic
             }
         }
 
-        /// <summary>The folder this session writes into; null until its first hold ends (or is flushed).</summary>
+        /// <summary>The folder this session writes into; null until its first hold begins.</summary>
         public string SessionFolder => _sessionFolder;
         /// <summary>Holds begun in this session.</summary>
         public int HoldCount { get; private set; }
@@ -117,7 +117,9 @@ namespace Kosmos.PseudoHaptic
             hold.Number = ++HoldCount;
             hold.ObjectName = objectName;
             hold.StartedAt = startedAt;
-            hold.File = null;
+            // Its folder, file and index are the session's it begins in: a new SessionId while it runs (the next participant
+            // started early) neither moves it nor lets it overwrite the new session's hold of the same number.
+            Name(hold);
             hold.Recording.Begin(solver, in hand);
             _active.Add(hold);
         }
@@ -145,7 +147,6 @@ namespace Kosmos.PseudoHaptic
             for (int i = 0; i < _active.Count; i++)
             {
                 Hold hold = _active[i];
-                Name(hold);
                 string file = hold.File, folder = hold.Folder, text = hold.Recording.ToCsv();
                 int number = hold.Number;
                 string objectName = hold.ObjectName;
@@ -173,7 +174,6 @@ namespace Kosmos.PseudoHaptic
             Hold hold = _active[at];
             _active.RemoveAt(at);
             hold.Key = null;
-            Name(hold);
             // The recording is no longer touched here until its write is acknowledged: the writer reads it.
             Saver.Enqueue(() => WriteHold(hold), () => HoldSaved(hold), e => NotWritten(hold.Number, hold.ObjectName, e));
             Saver.Pump();
@@ -181,7 +181,6 @@ namespace Kosmos.PseudoHaptic
 
         void Name(Hold hold)
         {
-            if (hold.File != null) return;
             hold.Folder = SessionFolderPath();
             hold.Index = _index;
             hold.File = Path.Combine(hold.Folder, "hold-" + hold.Number.ToString("000", CultureInfo.InvariantCulture) + "-" + SafeName(hold.ObjectName) + ".csv");

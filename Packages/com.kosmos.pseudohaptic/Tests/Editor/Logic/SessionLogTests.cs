@@ -391,6 +391,25 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AHoldRunningWhenTheSessionChangesIsWrittenInTheSessionItBeganIn()
+        {
+            // P1 is still holding the box when the experimenter starts P2, whose first hold is of another box: each hold
+            // lands in its own participant's folder as that session's hold 1, and neither overwrites the other.
+            SessionLog log = Log();
+            BoxScene.Box first = Wired(log, "box", 1);
+            var (frames, _) = Lift(first, 0.2, 0.6);
+            log.SessionId = "P2";
+            BoxScene.Box second = Wired(log, "box", 2);
+            var (secondFrames, _) = Lift(second, 0.1, 0.3);
+            first.Hold.End(1);
+            second.Hold.End(1);
+            Assert.That(Read(Path.Combine(_folder, "P1", "hold-001-box.csv")).Count, Is.EqualTo(1 + frames), "P1's hold, in P1");
+            Assert.That(Read(Path.Combine(_folder, "P2", "hold-001-box.csv")).Count, Is.EqualTo(1 + secondFrames), "P2's hold, in P2");
+            Assert.That(File.ReadAllLines(Path.Combine(_folder, "P1", "holds.csv")), Has.Length.EqualTo(2));
+            Assert.That(File.ReadAllLines(Path.Combine(_folder, "P2", "holds.csv")), Has.Length.EqualTo(2), "hold 1 listed once");
+        }
+
+        [Test]
         public void TheIndexRowHoldsTheLastFramesMassProfileAndSpeedExactlyAndFilesHaveNoByteOrderMark()
         {
             SessionLog log = Log();
