@@ -205,8 +205,9 @@ namespace Kosmos.PseudoHaptic
                 Main = TextWrap.Wrap(main, CharsPerLine(inner, textSize)),
                 MinLabel = q != null ? TextWrap.Wrap(q.ScaleMinLabel, CharsPerLine(labelWidth, small)) : "",
                 MaxLabel = q != null ? TextWrap.Wrap(q.ScaleMaxLabel, CharsPerLine(labelWidth, small)) : "",
-                Message = s != null && Error != null ? TextWrap.Wrap(NotSavedText, CharsPerLine(inner, small))
-                    : s != null && s.IsSaving ? TextWrap.Wrap(SavingText, CharsPerLine(inner, small)) : "",
+                // "Not saved, kept, tried again" only for an answer that is kept: a refused value (off the scale) keeps nothing.
+                Message = s == null || !s.IsSaving ? ""
+                    : TextWrap.Wrap(Error != null ? NotSavedText : SavingText, CharsPerLine(inner, small)),
                 Points = points,
                 ScaleMin = q != null ? q.ScaleMin : 0,
                 Chosen = asking ? s.CurrentAnswer : null,

@@ -327,6 +327,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(m.Error, Is.Not.Null);
             Assert.That(failed, Is.EqualTo(m.Error));
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,4" }), "nothing written");
+            Assert.That(View(m).Message, Is.Empty, "nothing is kept to be tried again: the headset does not say so");
             Assert.That(m.Press(PanelAction.Next, 0), Is.False, "an unanswered item cannot be skipped");
             Assert.That(m.Error, Is.Not.Null, "a press that changed nothing leaves the message");
             Assert.That(m.Press(PanelAction.Back, 0), Is.True);
