@@ -161,7 +161,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void ReapplyingTheSameProfileMidHoldChangesNothing()
         {
-            WeightProfile filtered = NamedProfiles.Paper.WithHandFilter(new ExponentialSmoothing(0.05));
+            WeightProfile filtered = NamedProfiles.Paper.WithHandFilter(new OneEuroFilter());
             var model = WeightModel.FromMass(2);
             var heights = new double[2];
             for (int run = 0; run < 2; run++)
