@@ -117,5 +117,69 @@ namespace Kosmos.PseudoHaptic.Tests
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => new GrabbingHands<Interactor>(0));
             Assert.That(e.ParamName, Is.EqualTo("capacity"));
         }
+
+        [Test]
+        public void AFullSetLooksUpLetsGoAndClearsWithoutOverrunning()
+        {
+            var hands = new GrabbingHands<Interactor>(capacity: 2);
+            hands.Add(1, A);
+            hands.Add(2, B);
+            Assert.That(hands.IndexOfSource(C), Is.EqualTo(-1));
+            Assert.That(hands.IndexOfSource(null), Is.EqualTo(-1), "no hand has a null source");
+            Assert.That(hands.Remove(1), Is.True);
+            Assert.That(hands.IndexOfSource(null), Is.EqualTo(-1), "the slot a leaver freed is not a hand");
+            Assert.That(hands.IdAt(0), Is.EqualTo(2));
+            hands.Add(3, C);
+            hands.Clear();
+            Assert.That(hands.Count, Is.Zero);
+            Assert.That(hands.IndexOfSource(B), Is.EqualTo(-1));
+        }
+
+        [Test]
+        public void AnIdAlreadyHereIsRefusedWhicheverHandHasIt()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            hands.Add(7, A);
+            Assert.That(hands.Add(7, B), Is.False, "the first hand's id");
+            Assert.That(hands.Count, Is.EqualTo(1));
+            Assert.That(hands.SourceAt(0), Is.SameAs(A));
+        }
+
+        /// <summary>Ids up to int.MaxValue (the Interaction SDK's pointer ids are anything) make the numbering wrap; it still never gives an id in use.</summary>
+        [Test]
+        public void NumberedIdsStayFreeAfterTheNumberingWraps()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            hands.Add(1, B);
+            hands.Add(2, C);
+            hands.Add(int.MaxValue, A);
+            var d = new Interactor("d");
+            int id = hands.Add(d);
+            Assert.That(new[] { 1, 2, int.MaxValue, id }, Is.Unique);
+            Assert.That(id, Is.Not.EqualTo(int.MinValue));
+            Assert.That(hands.Count, Is.EqualTo(4));
+            Assert.That(hands.SourceAt(hands.IndexOf(id)), Is.SameAs(d));
+        }
+
+        [Test]
+        public void TheCancelSnapshotKeepsABufferThatFitsAndGrowsOneThatDoesNot()
+        {
+            var hands = new GrabbingHands<Interactor>();
+            for (int i = 1; i <= 6; i++) hands.Add(10 + i, new Interactor("h" + i));
+            int[] exact = new int[6], kept = exact;
+            Assert.That(hands.CopyIds(ref exact), Is.EqualTo(6));
+            Assert.That(exact, Is.SameAs(kept), "a buffer of exactly the hands' count is used as it is");
+            int[] none = null;
+            Assert.That(hands.CopyIds(ref none), Is.EqualTo(6));
+            Assert.That(new[] { none[0], none[5] }, Is.EqualTo(new[] { 11, 16 }));
+        }
+
+        [Test]
+        public void AClockNeverStartedStartsAtItsFirstCall()
+        {
+            var clock = new FrameClock();
+            Assert.That(clock.Delta(5.0), Is.Zero);
+            Assert.That(clock.Delta(5.5), Is.EqualTo(0.5f).Within(1e-6f), "the time since that first call");
+        }
     }
 }

@@ -152,5 +152,52 @@ namespace Kosmos.PseudoHaptic.Tests
             for (int i = 0; i < 10; i++) Assert.That(drawing.Remeasure(new Vector3d(0, 0.3, 0)).Y, Is.EqualTo(returning.Y).Within(1e-12), "not holding: a remeasure neither moves nor returns it");
             Assert.That(drawing.IsReturning, Is.True);
         }
+
+        [Test]
+        public void ItIsReturningOnlyWhileAnOffsetIsOnItsWayBack()
+        {
+            var drawing = new HandDrawing();
+            Assert.That(drawing.IsReturning, Is.False, "new");
+            drawing.Update(HandDrawingMode.HandOnObject, true, new Vector3d(0, -0.03, 0), 1 / 90.0);
+            Assert.That(drawing.IsReturning, Is.False, "holding");
+            drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, 1 / 90.0);
+            Assert.That(drawing.IsReturning, Is.True, "released");
+            for (int i = 0; i < 90; i++) drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, 1 / 90.0);
+            Assert.That(drawing.Offset, Is.EqualTo(Vector3d.Zero));
+            Assert.That(drawing.IsReturning, Is.False, "back");
+        }
+
+        [Test]
+        public void AFrameWithoutAUsableTimeLeavesTheReturnWhereItIs([Values(double.NaN, double.PositiveInfinity, -1 / 90.0, 0)] double badDt)
+        {
+            var drawing = new HandDrawing();
+            drawing.Update(HandDrawingMode.HandOnObject, true, new Vector3d(0.01, -0.04, 0), 1 / 90.0);
+            drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, 1 / 90.0);
+            Vector3d before = drawing.Offset;
+            Assert.That(drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, badDt), Is.EqualTo(before));
+        }
+
+        /// <summary>The return runs at a steady speed over the 200 ms: halfway through, half the offset is left.</summary>
+        [Test]
+        public void TheReturnIsSteadyOverTheTwoHundredMilliseconds()
+        {
+            var drawing = new HandDrawing();
+            var atRelease = new Vector3d(0, -0.05, 0.02);
+            drawing.Update(HandDrawingMode.HandOnObject, true, atRelease, 1 / 100.0);
+            drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, 0); // released; no time yet
+            for (int i = 0; i < 10; i++) drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, 1 / 100.0);
+            Assert.That(drawing.Offset.Length, Is.EqualTo(atRelease.Length / 2).Within(1e-9), "0.1 s of 0.2 s");
+        }
+
+        [Test]
+        public void AfterAResetNothingIsDrawnOffTheHandUntilAHoldBegins()
+        {
+            var drawing = new HandDrawing();
+            drawing.Update(HandDrawingMode.HandOnObject, true, new Vector3d(0, -0.05, 0), 1 / 90.0);
+            drawing.Reset();
+            Assert.That(drawing.Offset, Is.EqualTo(Vector3d.Zero));
+            Assert.That(drawing.Remeasure(new Vector3d(0, -0.06, 0)), Is.EqualTo(Vector3d.Zero), "a remeasure begins no hold");
+            Assert.That(drawing.Update(HandDrawingMode.HandOnObject, true, new Vector3d(0, -0.02, 0), 1 / 90.0), Is.EqualTo(new Vector3d(0, -0.02, 0)));
+        }
     }
 }

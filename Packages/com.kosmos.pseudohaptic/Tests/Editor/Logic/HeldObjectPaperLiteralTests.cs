@@ -48,5 +48,45 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(hold.Configure(WeightModel.FromMass(2), NamedProfiles.PaperExperiment, 0.5), Is.True, hold.Error);
             Assert.That(hold.Literal, Is.Null, "switching away from paper-literal returns to the pipeline");
         }
+
+        /// <summary>The literal solver measures the hand's speed from the grab on: a hand already moving at the grab moves
+        /// the object on the first frame; a grab whose pose is unusable starts from the first usable height instead.</summary>
+        [TestCase(0.8), TestCase(2e5)]
+        public void TheFirstFramesSpeedIsMeasuredFromTheGrabbingHand(double grabX)
+        {
+            var hold = new HeldObject(new Floor());
+            Assert.That(hold.Configure(WeightModel.FromMass(2), NamedProfiles.PaperLiteral, 0.5), Is.True, hold.Error);
+            var grab = new Vector3d(grabX, 0.8, 0);
+            Assert.That(hold.Begin(1, grab, double.NaN, new Vector3d(0, 0.8, 0), 0.8), Is.True, hold.Error);
+            var literal = new PaperLiteralSolver(2);
+            literal.BeginHold(grabX == 0.8 ? 0.8 : double.NaN, 0.8);
+            for (int i = 1; i <= 5; i++)
+            {
+                double y = hold.Step(1, new Vector3d(0.8, 0.8 + 0.01 * i, 0), true, true, double.NaN, 1 / 90.0);
+                Assert.That(y, Is.EqualTo(literal.Step(hold.Solver3D.FollowedY, true, 1 / 90.0)), "frame " + i);
+            }
+            if (grabX == 0.8) Assert.That(hold.ObjectY, Is.GreaterThan(0.8), "the lift from the grab on moved it");
+        }
+
+        /// <summary>A new mass or cue strength (an inspector edit) rebuilds the literal solver, which mid-hold continues from where the object is.</summary>
+        [Test]
+        public void ANewMassOrCueStrengthIsAppliedAndMidHoldTheObjectStaysWhereItIs()
+        {
+            var hold = new HeldObject(new Floor());
+            Assert.That(hold.Configure(WeightModel.FromMass(2), NamedProfiles.PaperLiteral, 0.5), Is.True, hold.Error);
+            Assert.That(hold.Configure(WeightModel.FromMass(3), NamedProfiles.PaperLiteral, 0.5), Is.True, hold.Error);
+            Assert.That(hold.Literal.MassKg, Is.EqualTo(3));
+            Assert.That(hold.Configure(WeightModel.FromMass(3), NamedProfiles.PaperLiteral, 0.5, 2.0), Is.True, hold.Error);
+            Assert.That(hold.Literal.CueStrength, Is.EqualTo(2.0));
+            var start = new Vector3d(0, 0.8, 0);
+            Assert.That(hold.Begin(1, start, double.NaN, start, 0.8), Is.True, hold.Error);
+            for (int i = 1; i <= 30; i++) hold.Step(1, start + new Vector3d(0, 0.005 * i, 0), true, true, double.NaN, 1 / 90.0);
+            double there = hold.ObjectY;
+            Assert.That(there, Is.GreaterThan(0.8));
+            Assert.That(hold.Configure(WeightModel.FromMass(1), NamedProfiles.PaperLiteral, 0.5, 2.0), Is.True, hold.Error);
+            Assert.That(hold.Literal.MassKg, Is.EqualTo(1));
+            Assert.That(hold.ObjectY, Is.EqualTo(there), "the new solver starts where the object is");
+            Assert.That(hold.Step(1, start + new Vector3d(0, 0.15, 0), true, true, double.NaN, 1 / 90.0), Is.EqualTo(there).Within(1e-9), "a still hand: the object stays");
+        }
     }
 }

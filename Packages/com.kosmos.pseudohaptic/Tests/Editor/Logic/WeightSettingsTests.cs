@@ -217,5 +217,52 @@ namespace Kosmos.PseudoHaptic.Tests
             watch.MarkDirty();
             Assert.That(watch.IsStale(asset, 1), Is.True, "a setting changed");
         }
+
+        [Test]
+        public void AGrabDriverMovesXAndZOnlyWhenAskedAndTheSolverDoesNot()
+        {
+            var paper = new HeldObject(new BoxScene.Box(Vector3d.Zero, 1));
+            Assert.That(paper.Configure(WeightModel.FromMass(1), NamedProfiles.Paper, 0.5), Is.True);
+            var xyz = new HeldObject(new BoxScene.Box(Vector3d.Zero, 1));
+            Assert.That(xyz.Configure(WeightModel.FromMass(1), NamedProfiles.Xyz, 0.5), Is.True);
+            Assert.That(GrabFollow.GrabMovesHorizontal(true, null), Is.True, "no hold yet: the driver moves them");
+            Assert.That(GrabFollow.GrabMovesHorizontal(true, paper), Is.True);
+            Assert.That(GrabFollow.GrabMovesHorizontal(true, xyz), Is.False, "lateral inertia: the solver moves them");
+            Assert.That(GrabFollow.GrabMovesHorizontal(false, null), Is.False, "not asked");
+            Assert.That(GrabFollow.GrabMovesHorizontal(false, paper), Is.False, "not asked");
+        }
+
+        [Test]
+        public void ThePinchStrengthIsFullAtTouchingTipsAndAlwaysBetweenZeroAndOne()
+        {
+            Assert.That(GrabFollow.PinchStrength(0), Is.EqualTo(1), "tips touching");
+            Assert.That(GrabFollow.PinchStrength(0.02, 0.02, 0.02), Is.InRange(0.0, 1.0), "open = closed");
+            var random = new System.Random(3);
+            double[] specials = { 0, -0.01, double.NaN, double.PositiveInfinity, 0.015, 0.04 };
+            for (int i = 0; i < 500; i++)
+            {
+                double closed = i % 7 == 0 ? 0.02 : 0.05 * random.NextDouble();
+                double open = i % 7 == 0 ? 0.02 : 0.05 * random.NextDouble();
+                double d = i % 5 == 0 ? specials[i / 5 % specials.Length] : i % 3 == 0 ? open : 0.06 * random.NextDouble();
+                double s = GrabFollow.PinchStrength(d, closed, open);
+                Assert.That(s >= 0 && s <= 1, Is.True, "d " + d + ", closed " + closed + ", open " + open + ": " + s);
+            }
+        }
+
+        [Test]
+        public void AGrabOfSeveralHandsIsTrackedAndConfidentUnlessAnyHandIsNot()
+        {
+            var one = new GrabCentre();
+            one.Add(new Vector3d(0, 1, 0));
+            Assert.That(one.IsTracked && one.IsHighConfidence, Is.True, "one good hand");
+            var lost = new GrabCentre();
+            lost.Add(Vector3d.Zero, false, false);
+            lost.Add(Vector3d.Zero, false, false);
+            Assert.That(lost.IsTracked, Is.False, "two lost hands");
+            var unsure = new GrabCentre();
+            unsure.Add(Vector3d.Zero, true, false);
+            unsure.Add(Vector3d.Zero, true, false);
+            Assert.That(unsure.IsTracked && !unsure.IsHighConfidence, Is.True, "two low-confidence hands");
+        }
 }
 }
