@@ -23,13 +23,16 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>
         /// A pinch strength from the thumb–index tip distance, for sources that report no strength (Unity XR Hands):
-        /// 1 at or below <paramref name="closed"/> m, 0 at or beyond <paramref name="open"/> m, linear between; 0 for NaN.
+        /// 1 at or below <paramref name="closed"/> m, 0 at or beyond <paramref name="open"/> m, linear between; 0 for NaN or a
+        /// negative distance. <paramref name="open"/> = <paramref name="closed"/> is a binary pinch.
         /// </summary>
         public static double PinchStrength(double tipDistance, double closed = 0.015, double open = 0.04)
         {
-            if (!(tipDistance >= 0) || double.IsInfinity(tipDistance) || !(open > closed)) return 0;
+            if (!(tipDistance >= 0)) return 0;
+            if (tipDistance <= closed) return 1;
+            if (tipDistance >= open) return 0;
             double s = (open - tipDistance) / (open - closed);
-            return s < 0 ? 0 : s > 1 ? 1 : s;
+            return s > 0 && s < 1 ? s : 0; // NaN thresholds: not pinching
         }
     }
 

@@ -236,7 +236,11 @@ namespace Kosmos.PseudoHaptic.Tests
         public void ThePinchStrengthIsFullAtTouchingTipsAndAlwaysBetweenZeroAndOne()
         {
             Assert.That(GrabFollow.PinchStrength(0), Is.EqualTo(1), "tips touching");
-            Assert.That(GrabFollow.PinchStrength(0.02, 0.02, 0.02), Is.InRange(0.0, 1.0), "open = closed");
+            Assert.That(GrabFollow.PinchStrength(0.02, 0.02, 0.02), Is.EqualTo(1), "open = closed: a binary pinch, closed at the threshold");
+            Assert.That(GrabFollow.PinchStrength(0.0201, 0.02, 0.02), Is.EqualTo(0), "…and open beyond it");
+            Assert.That(GrabFollow.PinchStrength(double.PositiveInfinity), Is.EqualTo(0), "tips infinitely far apart");
+            Assert.That(GrabFollow.PinchStrength(-0.01), Is.EqualTo(0), "a negative distance is no hand's");
+            Assert.That(GrabFollow.PinchStrength(0.02, double.NaN, 0.04), Is.EqualTo(0), "a NaN threshold pinches nothing between");
             var random = new System.Random(3);
             double[] specials = { 0, -0.01, double.NaN, double.PositiveInfinity, 0.015, 0.04 };
             for (int i = 0; i < 500; i++)
