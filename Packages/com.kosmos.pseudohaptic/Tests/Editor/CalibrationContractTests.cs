@@ -28,6 +28,20 @@ namespace Kosmos.PseudoHaptic.Tests
             return (t.ToArray(), y.ToArray());
         }
 
+        /// <summary>A hand path <paramref name="height"/>(t) sampled at 100 Hz from 0 to <paramref name="seconds"/> inclusive.</summary>
+        static (double[] T, double[] Y) Sampled(double seconds, Func<double, double> height)
+        {
+            int n = (int)Math.Round(seconds * 100);
+            var t = new double[n + 1];
+            var y = new double[n + 1];
+            for (int i = 0; i <= n; i++)
+            {
+                t[i] = i / 100.0;
+                y[i] = height(t[i]);
+            }
+            return (t, y);
+        }
+
         static LiftMeasurement Accepted(double speed) => new LiftMeasurement(true, speed, 0.3, 0.5, null);
 
         static LiftMeasurement Rejected(string reason) => new LiftMeasurement(false, double.NaN, 0.05, 0.5, reason);
@@ -80,17 +94,9 @@ namespace Kosmos.PseudoHaptic.Tests
         public void OnlyTheLargestRiseCounts()
         {
             // A small lift (0.12 m) first, down again, then the real one (0.3 m) from a lower start.
-            var t = new List<double>();
-            var y = new List<double>();
-            for (int i = 0; i <= 400; i++)
-            {
-                double ti = i / 100.0;
-                double h = ti < 0.5 ? 1.0 : ti < 0.8 ? 1.0 + 0.4 * (ti - 0.5) : ti < 1.1 ? 1.12 - 0.5 * (ti - 0.8) : ti < 1.5 ? 0.97
-                    : ti < 2.1 ? 0.97 + 0.5 * (ti - 1.5) : 1.27;
-                t.Add(ti);
-                y.Add(h);
-            }
-            var lift = StandardSpeedCalibration.MeasureLift(t.ToArray(), y.ToArray());
+            var (t, y) = Sampled(4, ti => ti < 0.5 ? 1.0 : ti < 0.8 ? 1.0 + 0.4 * (ti - 0.5) : ti < 1.1 ? 1.12 - 0.5 * (ti - 0.8)
+                : ti < 1.5 ? 0.97 : ti < 2.1 ? 0.97 + 0.5 * (ti - 1.5) : 1.27);
+            var lift = StandardSpeedCalibration.MeasureLift(t, y);
             Assert.That(lift.IsAccepted, Is.True, lift.Reason);
             Assert.That(lift.Rise, Is.EqualTo(0.3).Within(1e-9));
             Assert.That(lift.Speed, Is.EqualTo(0.5).Within(1e-9));
@@ -102,17 +108,9 @@ namespace Kosmos.PseudoHaptic.Tests
             // At rest at 1.0 m, the hand bumps up 3 cm (above 10 % of the coming rise) and settles back at 1.005 m for half a
             // second, then lifts 0.2 m at 0.5 m/s. The rise is measured from the lowest point (1.0 m: 0.205 m), but the timed
             // 10–90 % is the lift's own: from the last time the hand was below 10 %, not the bump's crossing.
-            var t = new List<double>();
-            var y = new List<double>();
-            for (int i = 0; i <= 200; i++)
-            {
-                double ti = i / 100.0;
-                double h = ti < 0.2 ? 1.0 : ti < 0.3 ? 1.0 + 0.3 * (ti - 0.2) : ti < 0.4 ? 1.03 - 0.25 * (ti - 0.3)
-                    : ti < 0.9 ? 1.005 : ti < 1.3 ? 1.005 + 0.5 * (ti - 0.9) : 1.205;
-                t.Add(ti);
-                y.Add(h);
-            }
-            var lift = StandardSpeedCalibration.MeasureLift(t.ToArray(), y.ToArray());
+            var (t, y) = Sampled(2, ti => ti < 0.2 ? 1.0 : ti < 0.3 ? 1.0 + 0.3 * (ti - 0.2) : ti < 0.4 ? 1.03 - 0.25 * (ti - 0.3)
+                : ti < 0.9 ? 1.005 : ti < 1.3 ? 1.005 + 0.5 * (ti - 0.9) : 1.205);
+            var lift = StandardSpeedCalibration.MeasureLift(t, y);
             Assert.That(lift.IsAccepted, Is.True, lift.Reason);
             Assert.That(lift.Rise, Is.EqualTo(0.205).Within(1e-9));
             Assert.That(lift.Speed, Is.EqualTo(0.5).Within(1e-9), "the lift's own speed, not slowed by the rest after the bump");

@@ -50,6 +50,14 @@ namespace Kosmos.PseudoHaptic.Tests
             return (frames.Length, y);
         }
 
+        /// <summary>A 1 kg solver holding at 0.8 m and the resting hand it holds with: for driving the log directly.</summary>
+        static (WeightSolver solver, HandSample hand) HeldAtRest()
+        {
+            var solver = Run.Solver(1);
+            solver.BeginHold(0.8, 0.8);
+            return (solver, new HandSample(0.8));
+        }
+
         static HoldRecording Read(string path)
         {
             using (var reader = new StreamReader(path)) return HoldRecording.ReadCsv(reader, path);
@@ -237,9 +245,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             // Within its buffer (a hold of 200 000 frames here; 5400, one minute at 90 Hz, by default).
             var log = new SessionLog(framesPerHold: 210000) { Folder = _folder, SessionId = "P1" };
-            var solver = Run.Solver(1);
-            solver.BeginHold(0.8, 0.8);
-            var hand = new HandSample(0.8);
+            var (solver, hand) = HeldAtRest();
             object key = new object();
             log.Began(key, "box", solver, in hand, 0);
             Frames(log, key, solver, 1000);
@@ -309,9 +315,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void AHoldWithoutAnObjectOrASolverIsNotRecordedAndABeginWithoutAnEndKeepsTheFirstHold()
         {
             SessionLog log = Log();
-            var solver = Run.Solver(1);
-            solver.BeginHold(0.8, 0.8);
-            var hand = new HandSample(0.8);
+            var (solver, hand) = HeldAtRest();
             log.Began(null, "box", solver, in hand, 0);
             log.Began(new object(), "box", null, in hand, 0);
             Assert.That(log.ActiveCount, Is.Zero);
@@ -332,9 +336,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void ThreeObjectsHeldAtOnceAreAllRecorded()
         {
             SessionLog log = Log();
-            var solver = Run.Solver(1);
-            solver.BeginHold(0.8, 0.8);
-            var hand = new HandSample(0.8);
+            var (solver, hand) = HeldAtRest();
             var keys = new[] { new object(), new object(), new object() };
             for (int i = 0; i < keys.Length; i++) log.Began(keys[i], "o" + i, solver, in hand, 0);
             for (int i = 0; i < keys.Length; i++) Frames(log, keys[i], solver, 5 + i);
@@ -350,9 +352,7 @@ namespace Kosmos.PseudoHaptic.Tests
             // A frame buffer is about a megabyte here (20 000 frames): beginning a hold must not allocate one, neither for the
             // first two holds (two hands) nor for later ones once the earlier ones are written.
             var log = new SessionLog(framesPerHold: 20000) { Folder = _folder, SessionId = "P1" };
-            var solver = Run.Solver(1);
-            solver.BeginHold(0.8, 0.8);
-            var hand = new HandSample(0.8);
+            var (solver, hand) = HeldAtRest();
             object a = new object(), b = new object();
             var warm = new SessionLog { Folder = _folder, SessionId = "warm-up" }; // the runtime compiles Began once, outside the count
             warm.Began(a, "a", solver, in hand, 0);
