@@ -28,11 +28,10 @@ namespace Kosmos.PseudoHaptic
         /// </summary>
         public static double PinchStrength(double tipDistance, double closed = 0.015, double open = 0.04)
         {
-            if (!(tipDistance >= 0)) return 0;
+            if (!(tipDistance >= 0) || double.IsNaN(closed)) return 0;
             if (tipDistance <= closed) return 1;
-            if (tipDistance >= open) return 0;
-            double s = (open - tipDistance) / (open - closed);
-            return s > 0 && s < 1 ? s : 0; // NaN thresholds: not pinching
+            if (!(tipDistance < open)) return 0; // at or beyond open (or a NaN open)
+            return (open - tipDistance) / (open - closed); // closed < distance < open: in (0, 1)
         }
     }
 

@@ -243,6 +243,9 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(GrabFollow.PinchStrength(double.PositiveInfinity), Is.EqualTo(0), "tips infinitely far apart");
             Assert.That(GrabFollow.PinchStrength(-0.01), Is.EqualTo(0), "a negative distance is no hand's");
             Assert.That(GrabFollow.PinchStrength(0.02, double.NaN, 0.04), Is.EqualTo(0), "a NaN threshold pinches nothing between");
+            Assert.That(GrabFollow.PinchStrength(0.02, 0.015, double.NaN), Is.EqualTo(0), "…nor a NaN open");
+            Assert.That(GrabFollow.PinchStrength(0.03, 0.02, 0.01), Is.EqualTo(0), "open below closed: beyond both is open");
+            Assert.That(GrabFollow.PinchStrength(0.015, 0.02, 0.01), Is.EqualTo(1), "…and at or below closed is closed");
             var random = new System.Random(3);
             double[] specials = { 0, -0.01, double.NaN, double.PositiveInfinity, 0.015, 0.04 };
             for (int i = 0; i < 500; i++)
