@@ -120,7 +120,12 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>An answer of the current session is not on disk and cannot be written now: a new session would read the
         /// responses file without it and write over it, so the begin is refused, the page and the answer kept.</summary>
-        bool RefusesWhileUnsaved() => IsSaving && !Saver.Drain() && !Fail("the last answer is not saved yet: " + Saver.LastError);
+        bool RefusesWhileUnsaved()
+        {
+            if (!IsSaving || Saver.Drain()) return false;
+            Fail("the last answer is not saved yet: " + Saver.LastError);
+            return true;
+        }
 
         bool Fail(string error)
         {
