@@ -41,14 +41,16 @@ public class PerAsmdefCompileTests
     }
 
     /// <summary>
-    /// Issue 34: the XR Interaction Toolkit assembly compiles when XRI 2.5.4 is in the manifest (above), and without XRI, or
-    /// with XRI 3.x (whose types moved namespaces), it is left out while everything else, the editor's sample builder
-    /// included, compiles without a warning.
+    /// Issue 34: the XR Interaction Toolkit assembly compiles with XRI 2.x (2.5.4 pinned, above; 2.6.5) against the double's
+    /// 2.5.4 declarations and with XRI 3.x against its 3.0.8 declarations (the double's XRI_3, selected by the manifest's
+    /// version as the asmdef's KOSMOS_XRI_3 is), the editor's sample builder included; without XRI it is left out and
+    /// everything else compiles, all without a warning.
     /// </summary>
     [TestCase(null, TestName = "Without XRI in the manifest the XRI assembly is left out and the rest compiles")]
-    [TestCase("3.0.8", TestName = "With XRI 3.0.8 the XRI assembly is left out and the rest compiles")]
     [TestCase("2.6.5", TestName = "With XRI 2.6.5 the XRI assembly compiles")]
-    public void TheXriAssemblyCompilesOnlyWithXri2(string? version)
+    [TestCase("3.0.8", TestName = "With XRI 3.0.8 the XRI assembly compiles against XRI 3's declarations")]
+    [TestCase("3.0.11", TestName = "With XRI 3.0.11 the XRI assembly compiles against XRI 3's declarations")]
+    public void TheXriAssemblyCompilesWithXri2And3(string? version)
     {
         UnityProject project = Project.WithPackage("com.unity.xr.interaction.toolkit", version);
         foreach (UnityTarget target in new[] { UnityTarget.EditorAndroid, UnityTarget.PlayerAndroid })
@@ -56,14 +58,46 @@ public class PerAsmdefCompileTests
             BuildResult r = UnityCompilation.Build(project, target);
             Assert.That(r.Problems(DiagnosticSeverity.Warning), Is.Empty, target + ":\n" + Report(r));
             Assert.That(r.Warnings, Is.Empty);
-            if (version != null && version.StartsWith("2."))
+            if (version != null)
+            {
                 Assert.That(r.Compiled.Keys, Does.Contain("Kosmos.PseudoHaptic.XRI"), target.ToString());
+                if (target == UnityTarget.EditorAndroid) Assert.That(r.Compiled.Keys, Does.Contain("Kosmos.PseudoHaptic.Editor"));
+            }
             else
             {
                 Assert.That(r.LeftOut.Keys, Does.Contain("Kosmos.PseudoHaptic.XRI"), target.ToString());
                 Assert.That(r.Compiled.Keys, Does.Contain("Kosmos.PseudoHaptic").And.Contain("Assembly-CSharp"), target.ToString());
             }
         }
+    }
+
+    /// <summary>The double's XRI 3 declarations are selected by the manifest's version: from 3.0.0, below 4.0.0, and only there.</summary>
+    [TestCase("2.5.4", false)]
+    [TestCase("2.6.5", false)]
+    [TestCase("3.0.0", true)]
+    [TestCase("3.0.8", true)]
+    [TestCase("3.5.1", true)]
+    [TestCase("4.0.0", false)]
+    public void TheDoublesXri3DeclarationsFollowTheManifest(string version, bool xri3)
+    {
+        var defines = UnityCompilation.DoubleDefines(Project.WithPackage("com.unity.xr.interaction.toolkit", version).PackageVersions);
+        Assert.That(defines["Unity.XR.Interaction.Toolkit"].Contains("XRI_3"), Is.EqualTo(xri3));
+    }
+
+    /// <summary>
+    /// The two majors are different APIs: the transformer written for one does not compile against the other's declarations
+    /// (so each case above compiles the code path of its own version, not a shape both happen to accept).
+    /// </summary>
+    [TestCase("2.5.4", "KOSMOS_XRI_3", TestName = "XRI 3's code path does not compile against XRI 2.5.4")]
+    [TestCase("3.0.8", "", TestName = "XRI 2's code path does not compile against XRI 3.0.8")]
+    public void EachMajorsCodePathNeedsItsOwnDeclarations(string version, string forced)
+    {
+        UnityProject project = Project.WithPackage("com.unity.xr.interaction.toolkit", version);
+        BuildResult r = UnityCompilation.Build(project, UnityTarget.EditorAndroid, a => a.Name != "Kosmos.PseudoHaptic.XRI" ? a
+            : a with { VersionDefines = forced.Length == 0
+                ? new List<(string, string, string)> { ("com.unity.xr.interaction.toolkit", "[2.5.0,4.0.0)", "KOSMOS_XRI") }
+                : new List<(string, string, string)> { ("com.unity.xr.interaction.toolkit", "[2.5.0,4.0.0)", "KOSMOS_XRI"), ("com.unity.xr.interaction.toolkit", "[2.5.0,4.0.0)", forced) } });
+        Assert.That(r.Compiled["Kosmos.PseudoHaptic.XRI"].Where(d => d.Severity == DiagnosticSeverity.Error).Select(d => d.Id), Has.Some.AnyOf("CS0246", "CS0234", "CS0103"));
     }
 
     [Test]

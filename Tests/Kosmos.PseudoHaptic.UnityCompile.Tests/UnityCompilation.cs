@@ -35,7 +35,9 @@ public sealed class BuildResult
 /// Test Framework and NUnit as well (Unity adds them to those); and .NET Standard 2.1;</item>
 /// <item>the samples (Samples~, no asmdef) compile as Assembly-CSharp against every auto-referenced assembly.</item>
 /// </list>
-/// C# 9, as Unity 2022.3's compiler. The double's assemblies are compiled once from their folders, under their real names.
+/// C# 9, as Unity 2022.3's compiler. The double's assemblies are compiled from their folders, under their real names, once
+/// per set of their own versionDefines (assemblies.json: a folder may declare two versions of a package, e.g. XRI 2.5.4 and,
+/// with XRI_3, 3.0.8), chosen by the project's package versions as an asmdef's versionDefines are.
 /// </summary>
 public static class UnityCompilation
 {
@@ -57,10 +59,36 @@ public static class UnityCompilation
         ["Newtonsoft.Json.dll"] = (MetadataReference.CreateFromFile(typeof(Newtonsoft.Json.JsonConvert).Assembly.Location), true),
     });
 
-    static readonly Lazy<IReadOnlyList<DoubleAssembly>> Doubles = new(CompileDouble);
+    /// <summary>The double compiled once per set of its own version defines (a folder may hold two versions' declarations).</summary>
+    static readonly System.Collections.Concurrent.ConcurrentDictionary<string, Lazy<IReadOnlyList<DoubleAssembly>>> DoublesByDefines = new();
 
-    /// <summary>Compiles the double's folders, each as its named assembly; throws if one does not compile.</summary>
-    static IReadOnlyList<DoubleAssembly> CompileDouble()
+    /// <summary>The double's assemblies for a project with these package versions (their versionDefines, as an asmdef's).</summary>
+    static IReadOnlyList<DoubleAssembly> Doubles(IReadOnlyDictionary<string, string> packageVersions)
+    {
+        var defines = DoubleDefines(packageVersions);
+        string key = string.Join(";", defines.OrderBy(kv => kv.Key, StringComparer.Ordinal).Select(kv => kv.Key + "=" + string.Join(",", kv.Value.OrderBy(d => d, StringComparer.Ordinal))));
+        return DoublesByDefines.GetOrAdd(key, _ => new Lazy<IReadOnlyList<DoubleAssembly>>(() => CompileDouble(defines))).Value;
+    }
+
+    /// <summary>Per double assembly, the defines of its versionDefines that hold for <paramref name="packageVersions"/>.</summary>
+    public static Dictionary<string, List<string>> DoubleDefines(IReadOnlyDictionary<string, string> packageVersions)
+    {
+        using var doc = JsonDocument.Parse(File.ReadAllText(Path.Combine(DoubleFolder, "assemblies.json")));
+        var result = new Dictionary<string, List<string>>();
+        foreach (JsonElement a in doc.RootElement.GetProperty("assemblies").EnumerateArray())
+        {
+            var list = new List<string>();
+            if (a.TryGetProperty("versionDefines", out JsonElement vd))
+                foreach (JsonElement d in vd.EnumerateArray())
+                    if (packageVersions.TryGetValue(d.GetProperty("name").GetString()!, out string? version) && VersionExpression.Matches(d.GetProperty("expression").GetString()!, version))
+                        list.Add(d.GetProperty("define").GetString()!);
+            result[a.GetProperty("name").GetString()!] = list;
+        }
+        return result;
+    }
+
+    /// <summary>Compiles the double's folders, each as its named assembly with its defines; throws if one does not compile.</summary>
+    static IReadOnlyList<DoubleAssembly> CompileDouble(Dictionary<string, List<string>> defines)
     {
         using var doc = JsonDocument.Parse(File.ReadAllText(Path.Combine(DoubleFolder, "assemblies.json")));
         var built = new Dictionary<string, MetadataReference>();
@@ -71,8 +99,9 @@ public static class UnityCompilation
             var refs = new List<MetadataReference> { NetStandard.Value };
             if (a.TryGetProperty("references", out JsonElement r)) refs.AddRange(r.EnumerateArray().Select(e => built[e.GetString()!]));
             if (a.TryGetProperty("precompiledReferences", out JsonElement p)) refs.AddRange(p.EnumerateArray().Select(e => Precompiled.Value[e.GetString()!].Reference));
+            var parse = Parse9.WithPreprocessorSymbols(defines.TryGetValue(name, out var own) ? own : new List<string>());
             var trees = Directory.EnumerateFiles(Path.Combine(DoubleFolder, name), "*.cs", SearchOption.AllDirectories)
-                .Select(f => CSharpSyntaxTree.ParseText(File.ReadAllText(f), Parse9, f)).ToList();
+                .Select(f => CSharpSyntaxTree.ParseText(File.ReadAllText(f), parse, f)).ToList();
             var compilation = CSharpCompilation.Create(name, trees, refs, Options(allowUnsafe: false));
             var errors = compilation.GetDiagnostics().Where(d => d.Severity == DiagnosticSeverity.Error).ToList();
             if (errors.Count > 0) throw new InvalidOperationException("the double's " + name + " does not compile:\n" + string.Join("\n", errors));
@@ -94,7 +123,8 @@ public static class UnityCompilation
     {
         var result = new BuildResult();
         bool editor = target == UnityTarget.EditorAndroid;
-        var doubles = Doubles.Value.Where(d => editor || !d.EditorOnly).ToList();
+        var allDoubles = Doubles(project.PackageVersions);
+        var doubles = allDoubles.Where(d => editor || !d.EditorOnly).ToList();
         var asmdefs = project.Asmdefs().Select(a => edit != null ? edit(a) : a).ToList();
 
         // Which asmdefs this build compiles, each with its symbols.
@@ -138,7 +168,7 @@ public static class UnityCompilation
             {
                 if (compiled.TryGetValue(r, out MetadataReference? own)) refs.Add(own);
                 else if (doubles.FirstOrDefault(d => d.Name == r && !d.Unity) is { } foreign) refs.Add(foreign.Reference);
-                else if (!asmdefs.Any(a => a.Name == r) && !Doubles.Value.Any(d => d.Name == r)) result.Warnings.Add(next.Name + ": references '" + r + "', which no assembly is named");
+                else if (!asmdefs.Any(a => a.Name == r) && !allDoubles.Any(d => d.Name == r)) result.Warnings.Add(next.Name + ": references '" + r + "', which no assembly is named");
             }
             foreach (var (dll, (reference, auto)) in Precompiled.Value)
                 if (next.OverrideReferences ? next.PrecompiledReferences.Contains(dll) : auto) refs.Add(reference);

@@ -8,16 +8,22 @@ using UnityEditor.SceneManagement;
 using UnityEngine;
 using UnityEngine.SceneManagement;
 using UnityEngine.XR.Interaction.Toolkit;
+#if KOSMOS_XRI_3
+using UnityEngine.InputSystem.XR;
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+#endif
 
 namespace Kosmos.PseudoHaptic.Editor
 {
     /// <summary>
-    /// Issue 34: the Experiment 1 boxes grabbed through Unity's XR Interaction Toolkit (2.x), built into
+    /// Issue 34: the Experiment 1 boxes grabbed through Unity's XR Interaction Toolkit (2.x or 3.x), built into
     /// <see cref="ScenePath"/>: an XRI rig (the "XR Origin Hands (XR Rig)" prefab of XRI's Hands Interaction Demo sample,
     /// else the "XR Origin (XR Rig)" of its Starter Assets sample, whichever is imported; else a bare XR Origin with a
-    /// direct interactor per controller, whose input actions are left for you to bind, with a warning), an XR Interaction
-    /// Manager, and a <see cref="PseudoHapticGrabTransformer"/> on every box (which brings its XR Grab Interactable). Kept
-    /// apart from <see cref="SampleScenes"/> (its own menu item); compiled only when XRI 2.5 or a later 2.x is installed.
+    /// direct interactor per controller, whose input actions are left for you to bind, with a warning: under XRI 2.x on an
+    /// ActionBasedController, under XRI 3.x on an Input System TrackedPoseDriver, as each version's rigs pose controllers),
+    /// an XR Interaction Manager, and a <see cref="PseudoHapticGrabTransformer"/> on every box (which brings its XR Grab
+    /// Interactable). Kept apart from <see cref="SampleScenes"/> (its own menu item); compiled only when XRI 2.5 or a later
+    /// 2.x or 3.x is installed.
     /// </summary>
     public static class XriSampleScene
     {
@@ -88,7 +94,11 @@ namespace Kosmos.PseudoHaptic.Editor
             var go = new GameObject(name);
             go.transform.SetParent(offset, false);
             go.transform.localPosition = at;
+#if KOSMOS_XRI_3
+            go.AddComponent<TrackedPoseDriver>(); // XRI 3 rigs pose each controller and hand with one; its actions are yours to bind
+#else
             go.AddComponent<ActionBasedController>();
+#endif
             var reach = go.AddComponent<SphereCollider>(); // a direct interactor selects what its trigger touches
             reach.isTrigger = true;
             reach.radius = 0.1f;

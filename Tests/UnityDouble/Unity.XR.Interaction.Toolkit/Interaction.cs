@@ -13,8 +13,19 @@
 //   rendering when the state's inputTrackingState has Position/Rotation (ApplyControllerState): a lost hand's transform
 //   stays where it was. Its state is what the test sets (the real XRController/ActionBasedController read devices or
 //   input actions into it each frame).
+// With XRI_3 (see Interfaces.cs), XRI 3.0.8's shape (tag 3.0.8, same files): XRBaseInteractable in ...Toolkit.Interactables,
+// XRBaseInteractor, XRBaseInputInteractor (Interactors/XRBaseInputInteractor.cs, the 2.x XRBaseControllerInteractor
+// renamed) and XRDirectInteractor (now derived from XRBaseInputInteractor) in ...Toolkit.Interactors; the manager stays
+// in ...Toolkit with the same SelectEnter/SelectExit/SelectCancel. XRBaseController, ActionBasedController,
+// XRControllerState and XRBaseControllerInteractor are left out there: 3.0.8 still ships them, each marked [Obsolete]
+// ("deprecated in version 3.0.0"), and the package does not call them under XRI 3 (an XRI 3 rig poses its controllers and
+// hands with the Input System's TrackedPoseDriver: ../Unity.InputSystem).
 using System.Collections.Generic;
 using UnityEngine.XR;
+#if XRI_3
+using UnityEngine.XR.Interaction.Toolkit.Interactables;
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+#endif
 
 namespace UnityEngine.XR.Interaction.Toolkit
 {
@@ -76,6 +87,12 @@ namespace UnityEngine.XR.Interaction.Toolkit
         }
     }
 
+#if XRI_3
+}
+
+namespace UnityEngine.XR.Interaction.Toolkit.Interactables
+{
+#endif
     [DefaultExecutionOrder(XRInteractionUpdateOrder.k_Interactables)]
     public abstract partial class XRBaseInteractable : MonoBehaviour, IXRSelectInteractable
     {
@@ -125,6 +142,12 @@ namespace UnityEngine.XR.Interaction.Toolkit
         protected virtual void OnSelectExiting(SelectExitEventArgs args) => m_InteractorsSelecting.Remove(args.interactorObject);
     }
 
+#if XRI_3
+}
+
+namespace UnityEngine.XR.Interaction.Toolkit.Interactors
+{
+#endif
     [DefaultExecutionOrder(XRInteractionUpdateOrder.k_Interactors)]
     public abstract partial class XRBaseInteractor : MonoBehaviour, IXRSelectInteractor
     {
@@ -158,6 +181,13 @@ namespace UnityEngine.XR.Interaction.Toolkit
         internal void SelectExiting(SelectExitEventArgs args) => m_InteractablesSelected.Remove(args.interactableObject);
     }
 
+#if XRI_3
+    /// <summary>Real (3.0.8): the interactors driven by input (direct, ray, near-far…); 2.x's XRBaseControllerInteractor renamed.</summary>
+    public abstract partial class XRBaseInputInteractor : XRBaseInteractor { }
+
+    public partial class XRDirectInteractor : XRBaseInputInteractor { }
+}
+#else
     public abstract partial class XRBaseControllerInteractor : XRBaseInteractor
     {
         [SerializeField] XRBaseController m_Controller;
@@ -204,3 +234,4 @@ namespace UnityEngine.XR.Interaction.Toolkit
     /// <summary>Real: an XRBaseController reading its pose and buttons from Input System actions (Starter Assets bind them).</summary>
     public partial class ActionBasedController : XRBaseController { }
 }
+#endif

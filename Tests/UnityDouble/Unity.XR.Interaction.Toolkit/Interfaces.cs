@@ -3,7 +3,16 @@
 // Interactors/IXRInteractor.cs, IXRSelectInteractor.cs, Interactables/IXRInteractable.cs, IXRSelectInteractable.cs,
 // Transformers/IXRGrabTransformer.cs, IXRDropTransformer.cs. Declarations transcribed (namespaces, names, types); the
 // interfaces list only the members the package calls or the double's machinery needs (the real ones have more).
+// With XRI_3 (the compile check defines it when the manifest has com.unity.xr.interaction.toolkit [3.0.0,4.0.0); the
+// XRI 3 test project always): the same members in XRI 3.0.8's namespaces (tag 3.0.8, same files): the interactor
+// interfaces in ...Toolkit.Interactors, the interactable ones in ...Toolkit.Interactables; XRInteractionUpdateOrder and
+// the event args stay in ...Toolkit (Runtime/Interaction/XRInteractionEvents.cs), the transformer interfaces in
+// ...Toolkit.Transformers, each with the signature it had in 2.5.4.
 using System.Collections.Generic;
+#if XRI_3
+using UnityEngine.XR.Interaction.Toolkit.Interactables;
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+#endif
 
 namespace UnityEngine.XR.Interaction.Toolkit
 {
@@ -25,6 +34,12 @@ namespace UnityEngine.XR.Interaction.Toolkit
         }
     }
 
+#if XRI_3
+}
+
+namespace UnityEngine.XR.Interaction.Toolkit.Interactors
+{
+#endif
     public interface IXRInteractor
     {
         Transform transform { get; }
@@ -37,6 +52,12 @@ namespace UnityEngine.XR.Interaction.Toolkit
         bool hasSelection { get; }
     }
 
+#if XRI_3
+}
+
+namespace UnityEngine.XR.Interaction.Toolkit.Interactables
+{
+#endif
     public interface IXRInteractable
     {
         Transform transform { get; }
@@ -49,7 +70,13 @@ namespace UnityEngine.XR.Interaction.Toolkit
         bool isSelected { get; }
     }
 
-    /// <summary>Real: Runtime/Interaction/Interaction/InteractionEventArgs.cs (pooled; the double allocates one per event).</summary>
+#if XRI_3
+}
+
+namespace UnityEngine.XR.Interaction.Toolkit
+{
+#endif
+    /// <summary>Real: Runtime/Interaction/Interaction/InteractionEventArgs.cs (3.0.8: Runtime/Interaction/XRInteractionEvents.cs) (pooled; the double allocates one per event).</summary>
     public class SelectExitEventArgs
     {
         public IXRSelectInteractor interactorObject { get; set; }
@@ -68,6 +95,10 @@ namespace UnityEngine.XR.Interaction.Toolkit
 
 namespace UnityEngine.XR.Interaction.Toolkit.Transformers
 {
+#if XRI_3
+    using UnityEngine.XR.Interaction.Toolkit.Interactables;
+
+#endif
     public interface IXRGrabTransformer
     {
         bool canProcess { get; }

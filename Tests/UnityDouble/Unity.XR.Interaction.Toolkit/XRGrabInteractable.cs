@@ -18,10 +18,20 @@
 // registered), rotation easing and smoothing (position only here), dynamic attach transforms, throwing (detach velocity), Velocity Tracking movement (logged), character
 // collision handling, teleport handling, and registration lists' deferred flushing (here a change takes effect at the
 // next phase, as a flush would make it).
+// With XRI_3 (see Interfaces.cs): XRI 3.0.8's shape (tag 3.0.8, same files): XRGrabInteractable in
+// ...Toolkit.Interactables with the same grab-transformer members and call order (the two files differ, in the grab
+// transformer code, only by 2.5.4's legacy-transformer branch, which the double leaves out anyway; 3.0.11's file is 3.0.8's),
+// XRBaseGrabTransformer's Start and OnDestroy now `protected virtual`.
 using System.Collections.Generic;
 using UnityEngine.XR.Interaction.Toolkit.Transformers;
+#if XRI_3
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+
+namespace UnityEngine.XR.Interaction.Toolkit.Interactables
+#else
 
 namespace UnityEngine.XR.Interaction.Toolkit
+#endif
 {
     [DisallowMultipleComponent]
     [RequireComponent(typeof(Rigidbody))]
@@ -275,6 +285,10 @@ namespace UnityEngine.XR.Interaction.Toolkit
 
 namespace UnityEngine.XR.Interaction.Toolkit.Transformers
 {
+#if XRI_3
+    using UnityEngine.XR.Interaction.Toolkit.Interactables;
+
+#endif
     public abstract class XRBaseGrabTransformer : MonoBehaviour, IXRGrabTransformer
     {
         public enum RegistrationMode
@@ -290,7 +304,11 @@ namespace UnityEngine.XR.Interaction.Toolkit.Transformers
         protected virtual RegistrationMode registrationMode => RegistrationMode.Single;
 
         /// <summary>Registers with the XRGrabInteractable on this GameObject unless a starting or runtime list already holds it.</summary>
+#if XRI_3
+        protected virtual void Start()
+#else
         protected void Start()
+#endif
         {
             XRGrabInteractable grab = GetComponent<XRGrabInteractable>();
             if (grab == null) return;
@@ -302,7 +320,11 @@ namespace UnityEngine.XR.Interaction.Toolkit.Transformers
             if (mode == RegistrationMode.Multiple || mode == RegistrationMode.SingleAndMultiple) grab.AddMultipleGrabTransformer(this);
         }
 
+#if XRI_3
+        protected virtual void OnDestroy()
+#else
         protected void OnDestroy()
+#endif
         {
             XRGrabInteractable grab = GetComponent<XRGrabInteractable>();
             if (grab == null) return;

@@ -1,13 +1,20 @@
 using Unity.XR.CoreUtils;
 using UnityEngine;
-using UnityEngine.XR;
 using UnityEngine.XR.Interaction.Toolkit;
 using UnityEngine.XR.Interaction.Toolkit.Transformers;
+#if KOSMOS_XRI_3
+using System.Collections.Generic;
+using UnityEngine.InputSystem.XR;
+using UnityEngine.XR.Interaction.Toolkit.Interactables;
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+#else
+using UnityEngine.XR;
+#endif
 
 namespace Kosmos.PseudoHaptic.XRI
 {
     /// <summary>
-    /// The pseudo-haptic weight as a grab transformer of Unity's XR Interaction Toolkit 2.x (2.5.0 up to, not including, 3.0):
+    /// The pseudo-haptic weight as a grab transformer of Unity's XR Interaction Toolkit 2.x and 3.x (2.5.0 up to, not including, 4.0):
     /// add it to an object with an <see cref="XRGrabInteractable"/> (it brings one, with the Rigidbody, and a
     /// <see cref="PseudoHapticWeight"/>), and it registers itself as the interactable's single- and multiple-grab
     /// transformer in its Start (XRI's own <see cref="XRBaseGrabTransformer"/> registration). Each interactor selecting the
@@ -21,13 +28,17 @@ namespace Kosmos.PseudoHaptic.XRI
     /// the solver's, the rotation is kept and turns with the rig); in its OnBeforeRender phase the target is the object's
     /// pose as the weight last placed it through the rig. A break-away cancels every selection through the interaction
     /// manager (<see cref="XRInteractionManager.SelectCancel"/>); the interactable then restores its Rigidbody and the
-    /// object falls. Tracking: an interactor under an <see cref="XRBaseController"/> whose state has no tracked position is a
-    /// lost hand (its attach transform stays where it was; the solver holds the object); other interactors are tracked.
+    /// object falls. Tracking, under XRI 2.x: an interactor under an <c>XRBaseController</c> whose state has no tracked
+    /// position is a lost hand (its attach transform stays where it was; the solver holds the object); other interactors are
+    /// tracked. Under XRI 3.x (which dropped the controller components; its rigs pose controllers and hands with the Input
+    /// System's <c>TrackedPoseDriver</c>): the nearest enabled <c>TrackedPoseDriver</c> at or above the interactor, read by
+    /// its own rule (<see cref="PoseDriverTracking"/>); without one the interactor is tracked.
     /// The rig: the XR Origin's Camera Offset above the first hand (or <see cref="Rig"/>), so locomotion, snap turns and
     /// teleports carry the object rigidly. XRI owns the Rigidbody (kinematic while grabbed, restored and thrown on release).
     /// On link it turns the interactable's attach ease-in and position/rotation smoothing off: they would add a lag the
     /// solver does not know about. Use Instantaneous or Kinematic movement (Velocity Tracking is warned about).
-    /// Compiled only when com.unity.xr.interaction.toolkit 2.5.0 or later 2.x is installed. Process allocates nothing.
+    /// Compiled only when com.unity.xr.interaction.toolkit 2.5.0 or a later 2.x or 3.x is installed (KOSMOS_XRI; KOSMOS_XRI_3
+    /// from 3.0.0 selects XRI 3's namespaces and the pose-driver reading). Process allocates nothing.
     /// </summary>
     [AddComponentMenu("Kosmos/Pseudo-Haptic/Pseudo-Haptic Grab Transformer (XR Interaction Toolkit)")]
     [RequireComponent(typeof(XRGrabInteractable))]
@@ -43,6 +54,9 @@ namespace Kosmos.PseudoHaptic.XRI
         FrameClock _clock;
         bool _cancelling;
         IXRSelectInteractor[] _cancel = new IXRSelectInteractor[4];
+#if KOSMOS_XRI_3
+        readonly Dictionary<IXRSelectInteractor, TrackedPoseDriver> _drivers = new Dictionary<IXRSelectInteractor, TrackedPoseDriver>();
+#endif
 
         /// <summary>Registered in both lists: XRI gives the multiple-grab list the object while two or more interactors select it.</summary>
         protected override RegistrationMode registrationMode => RegistrationMode.SingleAndMultiple;
@@ -106,6 +120,9 @@ namespace Kosmos.PseudoHaptic.XRI
         void EndAll()
         {
             _hands.Clear();
+#if KOSMOS_XRI_3
+            _drivers.Clear();
+#endif
             if (_weight != null) _weight.EndHold();
         }
 
@@ -121,6 +138,9 @@ namespace Kosmos.PseudoHaptic.XRI
                 if (_hands.IndexOfSource(interactor) >= 0) continue;
                 bool first = _weight.Hold.HandCount == 0;
                 if (first) _weight.Rig = _rig != null ? _rig : RigAbove(interactor);
+#if KOSMOS_XRI_3
+                _drivers[interactor] = interactor.transform != null ? interactor.transform.GetComponentInParent<TrackedPoseDriver>() : null; // looked up once per join
+#endif
                 int id = _hands.Add(interactor);
                 if (!_weight.BeginHold(id, HandPosition(interactor, grab, out _), double.NaN, RigidbodyControl.External))
                 {
@@ -152,20 +172,38 @@ namespace Kosmos.PseudoHaptic.XRI
             EndAll(); // whatever the interactable did not report
         }
 
-        /// <summary>The interactor's attach transform (the point it holds by), and whether its controller tracks its position.</summary>
-        static Vector3 HandPosition(IXRSelectInteractor interactor, XRGrabInteractable grab, out bool tracked)
+        /// <summary>The interactor's attach transform (the point it holds by), and whether what poses it tracks its position.</summary>
+        Vector3 HandPosition(IXRSelectInteractor interactor, XRGrabInteractable grab, out bool tracked)
         {
-            tracked = true;
-            if (interactor is XRBaseControllerInteractor controlled)
-            {
-                XRBaseController controller = controlled.xrController;
-                XRControllerState state = controller != null ? controller.currentControllerState : null;
-                if (state != null) tracked = (state.inputTrackingState & InputTrackingState.Position) != 0;
-            }
+            tracked = PositionTracked(interactor);
             Transform attach = interactor.GetAttachTransform(grab);
             if (attach == null) attach = interactor.transform;
             return attach.position;
         }
+
+#if KOSMOS_XRI_3
+        /// <summary>XRI 3: the interactor's TrackedPoseDriver (found when it joined), by the driver's own rule.</summary>
+        bool PositionTracked(IXRSelectInteractor interactor)
+        {
+            _drivers.TryGetValue(interactor, out TrackedPoseDriver driver);
+            if (driver == null || !driver.isActiveAndEnabled) return true;
+            var action = driver.trackingStateInput.action;
+            bool hasAction = action != null;
+            bool enabled = hasAction && action.enabled;
+            int controls = enabled ? action.controls.Count : 0;
+            int state = enabled && controls > 0 ? action.ReadValue<int>() : 0;
+            return PoseDriverTracking.PositionTracked(true, driver.ignoreTrackingState, hasAction, enabled, controls, state);
+        }
+#else
+        /// <summary>XRI 2: the tracking state of the interactor's XRBaseController, if it has one.</summary>
+        static bool PositionTracked(IXRSelectInteractor interactor)
+        {
+            if (!(interactor is XRBaseControllerInteractor controlled)) return true;
+            XRBaseController controller = controlled.xrController;
+            XRControllerState state = controller != null ? controller.currentControllerState : null;
+            return state == null || (state.inputTrackingState & InputTrackingState.Position) != 0;
+        }
+#endif
 
         /// <summary>The XR Origin's Camera Offset (the tracking space) above <paramref name="interactor"/>, else its origin, else null (the world).</summary>
         static Transform RigAbove(IXRSelectInteractor interactor)
