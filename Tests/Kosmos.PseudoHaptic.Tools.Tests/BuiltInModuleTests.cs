@@ -167,6 +167,7 @@ public class BuiltInModuleTests
         ("Unity.XR.Oculus", "com.unity.xr.oculus 4.2.0: Runtime/Unity.XR.Oculus.asmdef"),
         ("Unity.XR.Hands", "com.unity.xr.hands 1.5.0: Runtime/Unity.XR.Hands.asmdef"),
         ("Unity.XR.Interaction.Toolkit", "com.unity.xr.interaction.toolkit 2.5.4: Runtime/Unity.XR.Interaction.Toolkit.asmdef"),
+        ("Unity.InputSystem", "com.unity.inputsystem 1.7.0 (XRI 2.5.4 depends on it) and 1.8.1 (XRI 3.0.8): InputSystem/Unity.InputSystem.asmdef"),
         ("Unity.XR.CoreUtils", "com.unity.xr.core-utils 2.2.0 (com.unity.xr.hands 1.5.0 depends on it; its Runtime/Unity.XR.Hands.asmdef references it): Runtime/Unity.XR.CoreUtils.asmdef"),
         ("UnityEngine.TestRunner", "com.unity.test-framework 1.1.33: UnityEngine.TestRunner/UnityEngine.TestRunner.asmdef"),
         ("UnityEditor.TestRunner", "com.unity.test-framework 1.1.33: UnityEditor.TestRunner/UnityEditor.TestRunner.asmdef"),

@@ -7,8 +7,15 @@ using UnityDouble;
 using UnityEditor;
 using UnityEngine;
 using UnityEngine.TestTools;
-using UnityEngine.XR;
 using UnityEngine.XR.Interaction.Toolkit;
+#if KOSMOS_XRI_3
+using UnityEngine.InputSystem;
+using UnityEngine.InputSystem.XR;
+using UnityEngine.XR.Interaction.Toolkit.Interactables;
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+#else
+using UnityEngine.XR;
+#endif
 
 namespace Kosmos.PseudoHaptic.Tests
 {
@@ -44,13 +51,26 @@ namespace Kosmos.PseudoHaptic.Tests
             XRDirectInteractor right = Object.FindObjectsByType<XRDirectInteractor>(FindObjectsSortMode.InstanceID).First(h => h.name == "Right Controller");
             PseudoHapticGrabTransformer boxB = Object.FindObjectsByType<PseudoHapticGrabTransformer>(FindObjectsSortMode.None).First(t => t.name == "Box B");
             var grab = boxB.GetComponent<XRGrabInteractable>();
+#if KOSMOS_XRI_3
+            // The bare rig's controllers carry an unbound TrackedPoseDriver (XRI 3's rigs pose them so): bind it as the Starter Assets do.
+            TrackedPoseDriver driver = right.GetComponent<TrackedPoseDriver>();
+            Assert.That(driver, Is.Not.Null, "XRI 3: the bare controller is posed by a TrackedPoseDriver");
+            driver.positionInput = new InputActionProperty(new InputAction("Position", expectedControlType: "Vector3"));
+            driver.trackingStateInput = new InputActionProperty(new InputAction("Tracking State", expectedControlType: "Integer"));
+            void Report(Vector3 p)
+            {
+                InputActions.Report(driver.positionInput.action, p);
+                InputActions.Report(driver.trackingStateInput.action, 3); // Position | Rotation
+            }
+#else
             ActionBasedController controller = right.GetComponent<ActionBasedController>();
-            Vector3 start = offset.InverseTransformPoint(boxB.transform.position + new Vector3(0, 0.05f, 0));
             void Report(Vector3 p)
             {
                 controller.currentControllerState.position = p;
                 controller.currentControllerState.inputTrackingState = InputTrackingState.Position | InputTrackingState.Rotation;
             }
+#endif
+            Vector3 start = offset.InverseTransformPoint(boxB.transform.position + new Vector3(0, 0.05f, 0));
             Report(start);
             Frames.Run(1);
             float y0 = boxB.transform.position.y;

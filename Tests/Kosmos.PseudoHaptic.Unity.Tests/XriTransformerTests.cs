@@ -5,15 +5,26 @@ using NUnit.Framework;
 using Unity.XR.CoreUtils;
 using UnityDouble;
 using UnityEngine;
-using UnityEngine.XR;
 using UnityEngine.XR.Interaction.Toolkit;
 using UnityEngine.XR.Interaction.Toolkit.Transformers;
+#if KOSMOS_XRI_3
+using UnityEngine.InputSystem;
+using UnityEngine.XR.Interaction.Toolkit.Interactables;
+using UnityEngine.XR.Interaction.Toolkit.Interactors;
+using Controller = UnityEngine.InputSystem.XR.TrackedPoseDriver;
+#else
+using UnityEngine.XR;
+using Controller = UnityEngine.XR.Interaction.Toolkit.ActionBasedController;
+#endif
 
 namespace Kosmos.PseudoHaptic.Tests
 {
     /// <summary>
     /// Issue 34 item 1: the XR Interaction Toolkit grab transformer on an XRGrabInteractable of the double (XRI 2.5.4's call
-    /// order), held by direct interactors under an XR Origin as the Starter Assets rig lays them out. Each lift is run twice
+    /// order), held by direct interactors under an XR Origin as the Starter Assets rig lays them out. The same file runs
+    /// under XRI 3 (Tests/Kosmos.PseudoHaptic.Unity.Xri3.Tests, KOSMOS_XRI_3: the double's XRI 3.0.8 declarations, whose
+    /// call order is 2.5.4's): there each controller is posed by an Input System TrackedPoseDriver, as in XRI 3's Starter
+    /// Assets rig, instead of an ActionBasedController. Each lift is run twice
     /// in the same frames: through XRI, and by a twin box driven straight through the weight's own grab API
     /// (BeginHold/Step/EndHold, what Pinch Grab calls) with the same hands; the two must agree to 0.01 mm, so the
     /// transformer adds no grab rule of its own. Absolute checks (the box rose, lagged, held still, fell) ride along.
@@ -25,7 +36,7 @@ namespace Kosmos.PseudoHaptic.Tests
         sealed class Rig
         {
             public Transform Origin, Offset;
-            public ActionBasedController Left, Right;
+            public Controller Left, Right;
             public XRDirectInteractor LeftHand, RightHand;
         }
 
@@ -41,25 +52,36 @@ namespace Kosmos.PseudoHaptic.Tests
             xrOrigin.CameraFloorOffsetObject = offset;
             rig.Origin = origin.transform;
             rig.Offset = offset.transform;
-            (rig.Left, rig.LeftHand) = Controller("Left Controller", offset.transform);
-            (rig.Right, rig.RightHand) = Controller("Right Controller", offset.transform);
+            (rig.Left, rig.LeftHand) = MakeController("Left Controller", offset.transform);
+            (rig.Right, rig.RightHand) = MakeController("Right Controller", offset.transform);
             return rig;
         }
 
-        static (ActionBasedController, XRDirectInteractor) Controller(string name, Transform parent)
+        static (Controller, XRDirectInteractor) MakeController(string name, Transform parent)
         {
             var go = new GameObject(name);
             go.transform.SetParent(parent, false);
-            return (go.AddComponent<ActionBasedController>(), go.AddComponent<XRDirectInteractor>());
+            Controller c = go.AddComponent<Controller>();
+#if KOSMOS_XRI_3
+            // As XRI 3's Starter Assets bind it: position and tracking state of the XR controller (here reported by the test).
+            c.positionInput = new InputActionProperty(new InputAction("Position", expectedControlType: "Vector3"));
+            c.trackingStateInput = new InputActionProperty(new InputAction("Tracking State", expectedControlType: "Integer"));
+#endif
+            return (c, go.AddComponent<XRDirectInteractor>());
         }
 
         /// <summary>What the XR runtime reports for a controller this frame: its pose in the tracking space, and whether it is tracked.</summary>
-        static void Report(ActionBasedController c, Vector3 trackingSpacePosition, bool tracked = true)
+        static void Report(Controller c, Vector3 trackingSpacePosition, bool tracked = true)
         {
+#if KOSMOS_XRI_3
+            InputActions.Report(c.positionInput.action, trackingSpacePosition);
+            InputActions.Report(c.trackingStateInput.action, tracked ? 3 : 0); // InputTrackingState Position | Rotation, or None
+#else
             XRControllerState s = c.currentControllerState;
             s.position = trackingSpacePosition;
             s.inputTrackingState = tracked ? InputTrackingState.Position | InputTrackingState.Rotation : InputTrackingState.None;
             s.isTracked = tracked;
+#endif
         }
 
         (PseudoHapticWeight weight, XRGrabInteractable grab, PseudoHapticGrabTransformer transformer) Grabbable(float massKg, PseudoHapticProfile profile = null)
