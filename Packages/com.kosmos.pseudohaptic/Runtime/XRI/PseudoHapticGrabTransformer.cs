@@ -30,9 +30,10 @@ namespace Kosmos.PseudoHaptic.XRI
     /// manager (<see cref="XRInteractionManager.SelectCancel"/>); the interactable then restores its Rigidbody and the
     /// object falls. Tracking, under XRI 2.x: an interactor under an <c>XRBaseController</c> whose state has no tracked
     /// position is a lost hand (its attach transform stays where it was; the solver holds the object); other interactors are
-    /// tracked. Under XRI 3.x (which dropped the controller components; its rigs pose controllers and hands with the Input
-    /// System's <c>TrackedPoseDriver</c>): the nearest enabled <c>TrackedPoseDriver</c> at or above the interactor, read by
-    /// its own rule (<see cref="PoseDriverTracking"/>); without one the interactor is tracked.
+    /// tracked. Under XRI 3.x (which deprecated the controller components; its rigs pose controllers and hands with the Input
+    /// System's <c>TrackedPoseDriver</c>): the nearest <c>TrackedPoseDriver</c> at or above the interactor (looked up when it
+    /// joins), read by the driver's own rule (<see cref="PoseDriverTracking"/>); without one, or with a disabled one, the
+    /// interactor is tracked.
     /// The rig: the XR Origin's Camera Offset above the first hand (or <see cref="Rig"/>), so locomotion, snap turns and
     /// teleports carry the object rigidly. XRI owns the Rigidbody (kinematic while grabbed, restored and thrown on release).
     /// On link it turns the interactable's attach ease-in and position/rotation smoothing off: they would add a lag the
@@ -186,13 +187,13 @@ namespace Kosmos.PseudoHaptic.XRI
         bool PositionTracked(IXRSelectInteractor interactor)
         {
             _drivers.TryGetValue(interactor, out TrackedPoseDriver driver);
-            if (driver == null || !driver.isActiveAndEnabled) return true;
-            var action = driver.trackingStateInput.action;
+            bool hasDriver = driver != null && driver.isActiveAndEnabled; // a disabled driver moves nothing: as none
+            var action = hasDriver ? driver.trackingStateInput.action : null;
             bool hasAction = action != null;
             bool enabled = hasAction && action.enabled;
             int controls = enabled ? action.controls.Count : 0;
             int state = enabled && controls > 0 ? action.ReadValue<int>() : 0;
-            return PoseDriverTracking.PositionTracked(true, driver.ignoreTrackingState, hasAction, enabled, controls, state);
+            return PoseDriverTracking.PositionTracked(hasDriver, hasDriver && driver.ignoreTrackingState, hasAction, enabled, controls, state);
         }
 #else
         /// <summary>XRI 2: the tracking state of the interactor's XRBaseController, if it has one.</summary>
