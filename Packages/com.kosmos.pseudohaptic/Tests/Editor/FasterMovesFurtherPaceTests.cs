@@ -25,20 +25,23 @@ namespace Kosmos.PseudoHaptic.Tests
             public readonly WeightSolver Solver;
             public double Time;
             public double Y;
+            readonly bool _stamped;
 
-            public Hold(FasterMovesFurther effect = null, double massKg = 2)
+            /// <summary><paramref name="stamped"/>: each pose carries its time, so a pose at the same height is still a new one.</summary>
+            public Hold(FasterMovesFurther effect = null, double massKg = 2, bool stamped = false)
             {
+                _stamped = stamped;
                 Solver = new WeightSolver(WeightModel.FromMass(massKg),
                     new WeightProfile("pace", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), effect ?? new FasterMovesFurther() }), StandardSpeed);
-                Solver.BeginHold(0, 0);
+                Solver.BeginHold(0, 0, stamped ? 0 : double.NaN);
             }
 
             public double Pace => Solver.State.Pace;
 
             public Hold Pose(double y, double dt)
             {
-                Solver.Step(new HandSample(y), dt);
                 Time += dt;
+                Solver.Step(_stamped ? new HandSample(y, poseTime: Time) : new HandSample(y), dt);
                 Y = y;
                 return this;
             }
@@ -136,33 +139,38 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
-        public void ARiseCreepingUpByTheNewTopStepEachPoseKeepsRising()
+        public void ARiseClimbingStairsOfTheNewTopStepKeepsRising()
         {
-            // "A new top needs 2 mm more": a hand that, after a quick 2 cm, creeps up by exactly that much per pose is still
-            // rising, and the pace is the whole rise's mean speed (not the quick start's).
-            var h = new Hold();
+            // "A new top needs 2 mm more": a hand that, after a quick 2 cm, climbs a staircase of exactly that step, one stair
+            // every 0.1 s (shorter than the pause time), is still rising, and its pace is the whole climb's mean speed (not the
+            // quick start's). Time-stamped poses: the hand stands still on each stair, every frame a new pose.
+            var h = new Hold(stamped: true);
             h.Pose(1e-4, Dt90).Pose(2e-4, Dt90).Pose(3e-4, Dt90);
-            double startTime = h.Time, startY = h.Y;
-            h.Pose(0.02, Dt90);
-            for (int i = 0; i < 60; i++) h.Pose(h.Y + FasterMovesFurther.TopStep, Dt90);
-            double mean = (h.Y - startY) / (h.Time - startTime);
+            double startTime = h.Time, startY = h.Y, stair = 0.02, topTime = 0;
+            for (int k = 0; k < 20; k++)
+            {
+                if (k > 0) stair += FasterMovesFurther.TopStep;
+                for (int i = 0; i < 9; i++) { h.Pose(stair, Dt90); if (i == 0) topTime = h.Time; }
+            }
+            double mean = (stair - startY) / (topTime - startTime);
             h.Rest(0.5);
-            Assert.That(h.Pace, Is.EqualTo(mean).Within(0.05 * mean));
+            Assert.That(h.Solver.State.PaceSettled, Is.True);
+            Assert.That(h.Pace, Is.EqualTo(mean).Within(0.05 * mean), "the staircase's mean speed");
         }
 
         [Test]
-        public void AnUnseenPauseDuringARiseDoesNotSlowItsPace()
+        public void AnUnseenPauseDuringARiseDoesNotSlowItsPaceAndTheClimbSeenAfterItCounts()
         {
-            // A 0.35 m lift at 0.5 m/s. In the second, tracking is lost at 0.15 m for 0.6 s, while the hand goes on to 0.2 m
-            // and waits there; it is seen again climbing on at the same speed. What the gap hid cannot be told from a steady
-            // climb: both lifts read the same pace, the climb's speed.
-            const double speed = 0.5;
-            var clean = new Hold().Rest(0.3).Ramp(0.35, speed).Rest(0.5);
-            var lost = new Hold().Rest(0.3).Ramp(0.15, speed).Lost(0.6);
+            // A 0.35 m lift: 0.2 m at 0.5 m/s, then 0.15 m at 0.25 m/s (1 s in all: 0.35 m/s). In the second, tracking is
+            // lost at 0.15 m for 0.6 s, while the hand goes on to 0.2 m and waits there for 0.5 s; it is seen again
+            // climbing on at 0.25 m/s. What the gap hid cannot be told from a steady climb, and what is seen after it counts
+            // at its own speed: both lifts read the same pace.
+            var clean = new Hold().Rest(0.3).Ramp(0.2, 0.5).Ramp(0.35, 0.25).Rest(0.5);
+            var lost = new Hold().Rest(0.3).Ramp(0.15, 0.5).Lost(0.6);
             lost.Y = 0.2;
-            lost.Ramp(0.35, speed).Rest(0.5);
-            Assert.That(clean.Pace, Is.EqualTo(speed).Within(0.02 * speed), "the clean lift");
-            Assert.That(lost.Pace, Is.EqualTo(clean.Pace).Within(0.02 * clean.Pace), "the lift with a hidden pause");
+            lost.Ramp(0.35, 0.25).Rest(0.5);
+            Assert.That(clean.Pace, Is.EqualTo(0.35).Within(0.02 * 0.35), "the clean lift");
+            Assert.That(lost.Pace, Is.EqualTo(clean.Pace).Within(0.03 * clean.Pace), "the lift with a hidden pause");
         }
 
         [Test]
