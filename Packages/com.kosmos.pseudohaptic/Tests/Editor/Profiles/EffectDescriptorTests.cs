@@ -52,6 +52,25 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void EveryEffectSaysWhereItComesFromAndEverySettingWhatItIsInAUnitTheDocsWrite()
+        {
+            // The tool's listing, ALGORITHM.md's generated effects table and the Unity list show the source and the summaries:
+            // none may be blank. A unit is SI as the docs write it ("" for a ratio), or a multiple of a named speed.
+            var units = new[] { "", "m", "s", "m/s", "kg" };
+            foreach (var d in Package)
+            {
+                Assert.That(string.IsNullOrWhiteSpace(d.Source), Is.False, d.Name + ": where it comes from");
+                Assert.That(string.IsNullOrWhiteSpace(d.Summary), Is.False, d.Name + ": what it does");
+                foreach (var s in d.Settings)
+                {
+                    Assert.That(string.IsNullOrWhiteSpace(s.Summary), Is.False, d.Name + "." + s.Name + ": what it is");
+                    Assert.That(Array.IndexOf(units, s.Unit) >= 0 || System.Text.RegularExpressions.Regex.IsMatch(s.Unit, "^× v_[a-z]+$"), Is.True,
+                        d.Name + "." + s.Name + ": unit '" + s.Unit + "'");
+                }
+            }
+        }
+
+        [Test]
         public void TheDeclaredRangeIsTheRangeTheEffectEnforcesAndTheMessageNamesEffectAndSetting()
         {
             int checkedEnds = 0;

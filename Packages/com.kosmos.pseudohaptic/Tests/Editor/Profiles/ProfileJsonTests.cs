@@ -67,6 +67,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [ { \"effect\": \"floor-clamp\" },\n{ \"effect\": \"floor-clamp\" } ]\n}", 5, "floor-clamp", "twice")]
         [TestCase("{\n\"format\": 2,\n\"name\": \"x\",\n\"effects\": []\n}", 2, "format", "reads format 1")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n", 5, "not valid JSON", "ends")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"break-away\",\n\"distance\": \"far\" }\n]\n}", 6, "effect 'break-away': setting 'distance'", "a number (m)")]
         [TestCase("{\"format\":1,\"name\":\"x\",\"effects\":[],\"colour\":3}", 1, "unknown key 'colour'", "effects")]
         public void ABadFileNamesTheFileTheLineTheEffectAndTheSetting(string json, int line, string what, string hint)
         {

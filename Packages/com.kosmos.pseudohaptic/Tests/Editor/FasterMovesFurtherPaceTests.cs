@@ -1,0 +1,231 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// The lift's pace (<see cref="FasterMovesFurther"/>, ALGORITHM.md "Faster moves further") pose by pose: where a rise
+    /// starts (the rest band), what keeps it going (a new top), when it settles (a pause), what a gap in tracking hides, and the
+    /// 60 Hz floor on its time. Each hold is driven pose by pose from a grab at height 0 (the base stays there: no base effect),
+    /// so the steady hand, the median of the last three poses, is known exactly; the expected paces are the hand path's own
+    /// mean speeds.
+    /// </summary>
+    public class FasterMovesFurtherPaceTests
+    {
+        const double StandardSpeed = 0.5;
+        const double Dt90 = 1.0 / 90;
+
+        /// <summary>The user's standard pace: a lift at it reads x = 1 (the gain of Eq. 4–6).</summary>
+        static readonly double StandardPace = StandardSpeed / FasterMovesFurther.StandardLiftRatio;
+
+        /// <summary>A 2 kg hold under weight gain, the experimental blend and <paramref name="effect"/>, begun with hand and
+        /// object at 0, fed one pose per frame.</summary>
+        sealed class Hold
+        {
+            public readonly WeightSolver Solver;
+            public double Time;
+            public double Y;
+            readonly bool _stamped;
+
+            /// <summary><paramref name="stamped"/>: each pose carries its time, so a pose at the same height is still a new one.</summary>
+            public Hold(FasterMovesFurther effect = null, double massKg = 2, bool stamped = false)
+            {
+                _stamped = stamped;
+                Solver = new WeightSolver(WeightModel.FromMass(massKg),
+                    new WeightProfile("pace", new WeightEffect[] { new WeightGain(), new ExperimentalBlend(), effect ?? new FasterMovesFurther() }), StandardSpeed);
+                Solver.BeginHold(0, 0, stamped ? 0 : double.NaN);
+            }
+
+            public double Pace => Solver.State.Pace;
+
+            public Hold Pose(double y, double dt)
+            {
+                Time += dt;
+                Solver.Step(_stamped ? new HandSample(y, poseTime: Time) : new HandSample(y), dt);
+                Y = y;
+                return this;
+            }
+
+            public Hold Lost(double seconds, double dt = Dt90)
+            {
+                for (int i = 0, n = Frames(seconds, dt); i < n; i++) { Solver.Step(HandSample.Lost, dt); Time += dt; }
+                return this;
+            }
+
+            /// <summary>The hand stays where it is, its poses 0.01–0.02 mm below it (a tracked hand is never exactly still, and
+            /// a pose repeated frame after frame would reach the steady hand only every <c>SolverLimits.RepeatTime</c>).</summary>
+            public Hold Rest(double seconds, double dt = Dt90)
+            {
+                double at = Y;
+                for (int i = 0, n = Frames(seconds, dt); i < n; i++) Pose(at - 1e-5 * (1 + i % 2), dt);
+                Y = at;
+                return this;
+            }
+
+            /// <summary>The hand moves at constant speed to <paramref name="to"/>, one pose per frame.</summary>
+            public Hold Ramp(double to, double speed, double dt = Dt90)
+            {
+                double from = Y;
+                int n = Math.Max(1, Frames(Math.Abs(to - from) / speed, dt));
+                for (int i = 1; i <= n; i++) Pose(from + (to - from) * i / n, dt);
+                return this;
+            }
+
+            static int Frames(double seconds, double dt) => (int)Math.Round(seconds / dt);
+        }
+
+        [Test]
+        public void AtTheUsersStandardPaceTheGainIsEq4To6sAndFasterItIsGToTheExponent()
+        {
+            var e = new FasterMovesFurther();
+            foreach (double g in new[] { 0.05, 0.32, 0.9 })
+            {
+                Assert.That(e.GainAt(g, StandardPace, StandardSpeed), Is.EqualTo(g).Within(1e-12 * g), "x = 1: G_p = G");
+                double r = e.ExponentAt(3 * StandardPace, StandardSpeed);
+                Assert.That(e.GainAt(g, 3 * StandardPace, StandardSpeed), Is.EqualTo(Math.Pow(g, r)).Within(1e-12), "G_p = G^r");
+            }
+        }
+
+        [Test]
+        public void AHandRestingAtTheEdgeOfTheRestBandHasNotStartedARise()
+        {
+            // The band is "how far above the base the steady hand is still at rest": a hand whose steady pose sits exactly
+            // there (its poses jitter 0.1 mm either side) has not left it, so no rise has a pace and the gain is Eq. 4–6's.
+            const double band = 0.01;
+            var h = new Hold(new FasterMovesFurther(restBand: band));
+            h.Pose(1e-4, Dt90).Pose(2e-4, Dt90).Pose(3e-4, Dt90).Pose(band, Dt90);
+            for (int i = 0; i < 30; i++) h.Pose(band + 1e-4, Dt90).Pose(band - 1e-4, Dt90).Pose(band, Dt90);
+            Assert.That(h.Pace, Is.EqualTo(0), "no rise");
+            Assert.That(h.Solver.ObjectY, Is.EqualTo(h.Solver.Gain * band).Within(1e-12), "the object rose G times the lift");
+        }
+
+        [Test]
+        public void ALiftBegunWithTheGrabReadsThePaceOfTheSameLiftBegunAfterARest()
+        {
+            // With a band narrower than the hand's first pose step the first steady pose is already above it: the rise started
+            // at the grab, and it has its pace from there.
+            const double speed = 0.36; // 4 mm per 90 Hz pose: above a 2 mm band, within the grab's 5 mm glitch allowance
+            var effect = new FasterMovesFurther(restBand: 0.002);
+            var atGrab = new Hold(effect).Ramp(0.3, speed).Rest(0.5);
+            var afterRest = new Hold(effect).Rest(0.3).Ramp(0.3, speed).Rest(0.5);
+            Assert.That(afterRest.Pace, Is.EqualTo(speed).Within(0.05 * speed), "the lift's own speed");
+            Assert.That(atGrab.Pace, Is.EqualTo(afterRest.Pace).Within(0.05 * afterRest.Pace), "begun with the grab");
+        }
+
+        [TestCase(5, false)]
+        [TestCase(10, false)]
+        [TestCase(11, true)]
+        public void ARiseThatPausesNoLongerThanPauseTimeGoesOnALongerPauseSettlesIt(int pausePoses, bool settles)
+        {
+            // 64 Hz poses (every time on the hold's clock exact) and a pause time of 10 pose periods: the rise climbs 0.2 m
+            // at 0.64 m/s, holds still (steady poses 0.01 mm apart) for `pausePoses` poses, then climbs 0.2 m more. Through a
+            // pause of at most the pause time the rise goes on and its pace is the mean speed over the whole of it, pause
+            // included; one pose longer, the pace was settled before the climb went on.
+            const double dt = 1.0 / 64, step = 0.01;
+            var h = new Hold(new FasterMovesFurther(pauseTime: 10 * dt));
+            h.Pose(1e-4, dt).Pose(2e-4, dt).Pose(3e-4, dt);
+            double startTime = h.Time, startY = h.Y;
+            for (int i = 0; i < 20; i++) h.Pose(h.Y + step, dt);
+            double firstMean = (h.Y - startY) / (h.Time - startTime), top = h.Y;
+            for (int j = 1; j <= pausePoses; j++) h.Pose(top - 1e-5 * j, dt);
+            h.Pose(top + step, dt);
+            for (int i = 1; i < 20; i++) h.Pose(h.Y + step, dt);
+            double wholeMean = (h.Y - startY) / (h.Time - startTime);
+            h.Rest(0.5, dt);
+            Assert.That(h.Solver.State.PaceSettled, Is.True);
+            double expected = settles ? firstMean : wholeMean;
+            Assert.That(h.Pace, Is.EqualTo(expected).Within(0.05 * expected),
+                "a pause of " + pausePoses + " poses: the first climb's mean " + firstMean + " m/s, the whole rise's " + wholeMean);
+        }
+
+        [Test]
+        public void ARiseClimbingStairsOfTheNewTopStepKeepsRising()
+        {
+            // "A new top needs 2 mm more": a hand that, after a quick 2 cm, climbs a staircase of exactly that step, one stair
+            // every 0.1 s (shorter than the pause time), is still rising, and its pace is the whole climb's mean speed (not the
+            // quick start's). Time-stamped poses: the hand stands still on each stair, every frame a new pose.
+            var h = new Hold(stamped: true);
+            h.Pose(1e-4, Dt90).Pose(2e-4, Dt90).Pose(3e-4, Dt90);
+            double startTime = h.Time, startY = h.Y, stair = 0.02, topTime = 0;
+            for (int k = 0; k < 20; k++)
+            {
+                if (k > 0) stair += FasterMovesFurther.TopStep;
+                for (int i = 0; i < 9; i++) { h.Pose(stair, Dt90); if (i == 0) topTime = h.Time; }
+            }
+            double mean = (stair - startY) / (topTime - startTime);
+            h.Rest(0.5);
+            Assert.That(h.Solver.State.PaceSettled, Is.True);
+            Assert.That(h.Pace, Is.EqualTo(mean).Within(0.05 * mean), "the staircase's mean speed");
+        }
+
+        [Test]
+        public void AnUnseenPauseDuringARiseDoesNotSlowItsPaceAndTheClimbSeenAfterItCounts()
+        {
+            // A 0.35 m lift: 0.2 m at 0.5 m/s, then 0.15 m at 0.25 m/s (1 s in all: 0.35 m/s). In the second, tracking is
+            // lost at 0.15 m for 0.6 s, while the hand goes on to 0.2 m and waits there for 0.5 s; it is seen again
+            // climbing on at 0.25 m/s. What the gap hid cannot be told from a steady climb, and what is seen after it counts
+            // at its own speed: both lifts read the same pace.
+            var clean = new Hold().Rest(0.3).Ramp(0.2, 0.5).Ramp(0.35, 0.25).Rest(0.5);
+            var lost = new Hold().Rest(0.3).Ramp(0.15, 0.5).Lost(0.6);
+            lost.Y = 0.2;
+            lost.Ramp(0.35, 0.25).Rest(0.5);
+            Assert.That(clean.Pace, Is.EqualTo(0.35).Within(0.02 * 0.35), "the clean lift");
+            Assert.That(lost.Pace, Is.EqualTo(clean.Pace).Within(0.03 * clean.Pace), "the lift with a hidden pause");
+        }
+
+        [Test]
+        public void ARiseHiddenWholeByAGapReadsTheUsersStandardPaceEvenAfterAFastLift()
+        {
+            // A fast lift (2 m/s), back to the base; then tracking is lost for 1 s while the hand rises 0.2 m, and it is seen
+            // again still at the top. That rise cannot be measured: its pace is the user's standard one (x = 1), not the
+            // fast lift's, nor the 0.2 m over the whole gap.
+            var h = new Hold().Rest(0.3).Ramp(0.2, 2).Rest(0.3).Ramp(0, 0.5).Rest(0.3);
+            Assert.That(h.Pace, Is.EqualTo(0), "back at the base: no pace");
+            h.Lost(1.0);
+            h.Y = 0.2;
+            h.Rest(0.5);
+            Assert.That(h.Pace, Is.EqualTo(StandardPace).Within(0.01 * StandardPace));
+        }
+
+        [Test]
+        public void BackInTheRestBandAHeavyObjectWeighsAsEq4To6Again()
+        {
+            // After a fast lift (its pace moved the object further), the hand comes down into a 5 cm rest band and stays 4 cm
+            // above the base: the rise is over, so the object is G times the lift above where it was grabbed.
+            var h = new Hold(new FasterMovesFurther(restBand: 0.05)).Rest(0.3).Ramp(0.3, 2);
+            Assert.That(h.Pace, Is.GreaterThan(2 * StandardPace), "a fast lift");
+            h.Rest(0.5).Ramp(0.04, 0.5).Rest(0.5);
+            Assert.That(h.Pace, Is.EqualTo(0));
+            Assert.That(h.Solver.ObjectY, Is.EqualTo(h.Solver.Gain * h.Solver.HandY).Within(1e-9), "G times the lift");
+        }
+
+        [Test]
+        public void ARiseSeenOverLessThanA60HzPeriodReadsAsTakingOne()
+        {
+            // Quest tracks hands at 60 Hz at most: a 1 cm rise whose steady poses are one 120 Hz frame apart reads as a rise
+            // over 1/60 s (not twice as fast), and the hand then stays (poses 0.1 mm either side).
+            const double dt = 1.0 / 120, top = 0.01, start = 3e-4;
+            var h = new Hold();
+            h.Pose(1e-4, dt).Pose(2e-4, dt).Pose(start, dt).Pose(top, dt);
+            for (int i = 0; i < 40; i++) h.Pose(top + 1e-4, dt).Pose(top - 1e-4, dt).Pose(top, dt);
+            Assert.That(h.Solver.State.PaceSettled, Is.True);
+            Assert.That(h.Pace, Is.EqualTo((top - start) * 60).Within(1e-9));
+        }
+
+        [Test]
+        public void SteadyPosesExactlyGapTimeApartHadNoGap()
+        {
+            // "Steady poses further apart than GapTime had a gap between them": a hitch of exactly GapTime is not one, and the
+            // rise's time is the clock's. The clock is made exact: 64 Hz frames, one of them 2^-56 s longer, so that the hitch
+            // adds exactly GapTime to the hold's clock. The steady hand leaves the base (1.17 cm) across the hitch: its pace
+            // is 1.17 cm over GapTime, not the user's standard pace a gap would give.
+            const double dt = 1.0 / 64;
+            var h = new Hold();
+            h.Pose(1e-4, dt).Pose(2e-4, dt).Pose(3e-4, dt).Pose(0.012, dt + Math.Pow(2, -56));
+            double before = h.Solver.State.Time;
+            h.Pose(0.0125, FasterMovesFurther.GapTime);
+            Assert.That(h.Solver.State.Time - before, Is.EqualTo(FasterMovesFurther.GapTime), "the clock is exact");
+            Assert.That(h.Pace, Is.EqualTo((0.012 - 3e-4) / FasterMovesFurther.GapTime).Within(1e-9));
+        }
+    }
+}
