@@ -227,5 +227,21 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(h.Solver.State.Time - before, Is.EqualTo(FasterMovesFurther.GapTime), "the clock is exact");
             Assert.That(h.Pace, Is.EqualTo((0.012 - 3e-4) / FasterMovesFurther.GapTime).Within(1e-9));
         }
+
+        [Test]
+        public void AGainThatFallsBelowOneDuringAHoldReadsTheRisesOwnPace()
+        {
+            // A light object (45 g: G = 1) lifted 0.3 m at 1 m/s, made 2 kg at the top (what a second hand letting go of a light
+            // object carried by two does to the y solver's share, or a study changing the mass mid-hold): the rise was the
+            // rise, so its pace and, once the change has glided away, the height are those of a 2 kg hold lifted the same way.
+            var heavy = new Hold(massKg: 2).Rest(0.2).Ramp(0.3, 1.0);
+            var light = new Hold(massKg: 0.045).Rest(0.2).Ramp(0.3, 1.0);
+            light.Solver.Configure(WeightModel.FromMass(2), light.Solver.Profile, StandardSpeed);
+            heavy.Rest(6);
+            light.Rest(6);
+            Assert.That(heavy.Pace, Is.GreaterThan(2 * StandardPace), "the lift was fast");
+            Assert.That(light.Pace, Is.EqualTo(heavy.Pace), "the rise's own pace, not the standard one a hidden rise reads");
+            Assert.That(light.Solver.ObjectY, Is.EqualTo(heavy.Solver.ObjectY).Within(1e-9), "the same height once the change glided");
+        }
     }
 }

@@ -16,7 +16,8 @@ namespace Kosmos.PseudoHaptic
     /// still lags more, P2). The pace is a mean over the whole rise, read on the steady hand (the median of three
     /// poses), so a glitch, a loss or a snap barely changes it; and it never changes once the rise has paused, so a heft
     /// after a lift, however fast, leaves the gain as it was: the weight stays a function of where the hand is.
-    /// The standard weight (G = 1) and lighter objects are untouched.
+    /// The standard weight (G = 1) and lighter objects are untouched (their pace is followed all the same, so that a gain that
+    /// falls below 1 during the hold reads the rise's own pace).
     /// </summary>
     public sealed class FasterMovesFurther : WeightEffect
     {
@@ -85,8 +86,10 @@ namespace Kosmos.PseudoHaptic
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (!(constants.Gain < 1)) return;
+            // The pace is followed at every gain and applied only below 1: when the gain falls below 1 during a hold (a hand
+            // lets go of a light object two carried, a change of mass), the rise made so far reads its own pace.
             bool changed = frame.SteadyTaken && UpdatePace(ref state, frame.SteadyHand - state.Base, state.Time, constants.StandardSpeed);
+            if (!(constants.Gain < 1)) return;
             // Recomputed only when the pace or the object changed (PaceGainOf is NaN after a reset).
             if (changed || state.PaceGainOf != constants.LogGain)
             {
