@@ -111,7 +111,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Reads the next record that is not blank, whatever its field count.</summary>
         bool ReadRecord()
         {
-            while (true)
+            for (;;)
             {
                 starts.Clear();
                 lengths.Clear();
@@ -120,8 +120,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 if (Peek() < 0) return false;
                 Line = nextLine;
                 bool blank = true;
-                int c;
-                while (true)
+                int c = -1;
+                for (;;)
                 {
                     // One field. Spaces before it are not part of it, nor do they stop it being quoted.
                     c = Next();
@@ -130,7 +130,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     if (c == '"')
                     {
                         blank = false;
-                        while (true)
+                        for (;;)
                         {
                             CopyQuoted();
                             c = Next();
@@ -188,7 +188,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Copies the rest of an unquoted field in bulk; returns the character that ended it (consumed), or −1.</summary>
         int ScanUnquoted()
         {
-            while (true)
+            for (;;)
             {
                 if (bufferPos >= bufferLength && !Fill()) return -1;
                 var rest = new ReadOnlySpan<char>(buffer, bufferPos, bufferLength - bufferPos);
@@ -205,7 +205,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Copies the plain characters of a quoted field in bulk, up to a quote or a line break (not consumed).</summary>
         void CopyQuoted()
         {
-            while (true)
+            for (;;)
             {
                 if (bufferPos >= bufferLength && !Fill()) return;
                 var rest = new ReadOnlySpan<char>(buffer, bufferPos, bufferLength - bufferPos);
@@ -266,7 +266,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         bool Fill()
         {
             if (atEnd) return false;
-            while (true)
+            for (;;)
             {
                 bufferLength = reader.Read(buffer, 0, buffer.Length);
                 bufferPos = 0;

@@ -40,7 +40,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>The questionnaire with this id (exact, case-sensitive), or null.</summary>
         public Questionnaire Find(string id)
         {
-            Questionnaire q;
+            Questionnaire q = null;
             return id != null && byId.TryGetValue(id, out q) ? q : null;
         }
 

@@ -94,7 +94,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>One participant's sheet for one questionnaire, or null if they gave it no answer.</summary>
         public AnswerSheet Find(string participant, string questionnaireId)
         {
-            AnswerSheet[] sheets;
+            AnswerSheet[] sheets = null;
             int q = Catalog.IndexOf(questionnaireId);
             if (q < 0 || participant == null || !sheetsByParticipant.TryGetValue(participant, out sheets)) return null;
             return sheets[q];

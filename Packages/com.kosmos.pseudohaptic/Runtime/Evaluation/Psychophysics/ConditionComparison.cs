@@ -75,7 +75,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         var vb = new List<double>();
                         foreach (string p in participants)
                         {
-                            double x, y;
+                            double x = 0, y = 0;
                             if (value[conditions[i]].TryGetValue(p, out x) && value[conditions[j]].TryGetValue(p, out y))
                             {
                                 who.Add(p);

@@ -248,7 +248,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 for (int l = row.Line; l < row.EndLine && l < lines.Length; l++) verbatim.Append('\n').Append(lines[l].TrimEnd('\r'));
                 rows.Add(verbatim.ToString());
                 if (row[0].Trim() != Participant || row[1].Trim() != Condition) continue;
-                int index;
+                int index = 0;
                 if (staircase != null)
                 {
                     // The staircase is run again on the recorded answers, which must follow it trial by trial.
