@@ -124,8 +124,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 for (;;)
                 {
                     // One field. Spaces before it are not part of it, nor do they stop it being quoted.
-                    c = Next();
-                    while (c == ' ' || c == '\t') c = Next();
+                    c = NextOutsideQuotes();
+                    while (c == ' ' || c == '\t') c = NextOutsideQuotes();
                     int start = recordLength;
                     if (c == '"')
                     {
@@ -144,8 +144,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
                             Append((char)c);
                         }
                         int end = recordLength;
-                        c = Next();
-                        while (c == ' ' || c == '\t') c = Next();
+                        c = NextOutsideQuotes();
+                        while (c == ' ' || c == '\t') c = NextOutsideQuotes();
                         starts.Add(start);
                         lengths.Add(end - start);
                         if (c != ',' && c >= 0 && c != '\n' && c != '\r')
@@ -168,7 +168,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     if (c == ',') continue;
                     if (c == '\r')
                     {
-                        if (Peek() == '\n') Next();
+                        if (Peek() == '\n') NextOutsideQuotes();
                         nextLine++;
                     }
                     else if (c == '\n') nextLine++;
@@ -196,7 +196,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 int take = stop < 0 ? rest.Length : stop;
                 Take(rest.Slice(0, take));
                 if (stop < 0) continue;
-                int c = Next();
+                int c = NextOutsideQuotes();
                 if (c == '"') throw QuoteInside();
                 return c;
             }
@@ -260,6 +260,19 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (++consumed > MaxRecordLength)
                 throw Error(Line, "the row is longer than " + MaxRecordLength.ToString(CultureInfo.InvariantCulture)
                                   + " characters (the limit for one row; is a line break missing?)");
+            return c;
+        }
+
+        /// <summary>
+        /// <see cref="Next"/> outside quotes, where a line break ends the record: it is not one of the record's
+        /// characters (so a record of <see cref="MaxRecordLength"/> characters is read whether it ends in LF, CRLF,
+        /// CR or nothing). Line breaks inside quotes are read by <see cref="Next"/> and counted.
+        /// </summary>
+        int NextOutsideQuotes()
+        {
+            int c = Peek();
+            if (c != '\n' && c != '\r') return Next();
+            bufferPos++;
             return c;
         }
 

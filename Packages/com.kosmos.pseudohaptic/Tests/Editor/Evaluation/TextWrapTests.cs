@@ -24,7 +24,15 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(TextWrap.Wrap("abcd", 4), Is.EqualTo("abcd"));
             Assert.That(TextWrap.Wrap("", 4), Is.EqualTo(""));
             Assert.That(TextWrap.Wrap(null, 4), Is.EqualTo(""));
-            Assert.Throws<ArgumentOutOfRangeException>(() => TextWrap.Wrap("a", 0));
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => TextWrap.Wrap("a", 0));
+            Assert.That(e.ParamName, Is.EqualTo("maxChars"));
+            Assert.That(e.Message, Is.Not.EqualTo(new ArgumentException("", e.ParamName).Message), "says what a line must hold");
+        }
+
+        [Test]
+        public void ALineOfOneCharacterHoldsOneCharacter()
+        {
+            Assert.That(TextWrap.Wrap("ab c", 1), Is.EqualTo("a\nb\nc"));
         }
     }
 }
