@@ -102,19 +102,31 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
             var parts = new List<Questionnaire>(ordered.Count);
             foreach (var path in ordered) parts.Add(LoadFile(path));
-            return Catalog(parts, directory);
+            return Catalog(parts, ordered, directory);
         }
 
         /// <summary>A catalog from (name, JSON text) pairs in report order, e.g. embedded copies of the package's files.</summary>
         public static QuestionnaireCatalog ParseAll(IEnumerable<KeyValuePair<string, string>> namedJson)
         {
+            if (namedJson == null) throw new ArgumentNullException(nameof(namedJson));
             var parts = new List<Questionnaire>();
-            foreach (var pair in namedJson) parts.Add(Parse(pair.Value, pair.Key));
-            return Catalog(parts, "questionnaires");
+            var sources = new List<string>();
+            foreach (var pair in namedJson)
+            {
+                parts.Add(Parse(pair.Value, pair.Key));
+                sources.Add(pair.Key);
+            }
+            return Catalog(parts, sources, "questionnaires");
         }
 
-        static QuestionnaireCatalog Catalog(List<Questionnaire> parts, string sourceName)
+        /// <summary>The catalog of <paramref name="parts"/>, read from <paramref name="sources"/> (one each); an id given twice is
+        /// refused naming the definition that repeats it and the one that gave it first (a study with two copies of a file).</summary>
+        static QuestionnaireCatalog Catalog(List<Questionnaire> parts, List<string> sources, string sourceName)
         {
+            for (int i = 1; i < parts.Count; i++)
+                for (int j = 0; j < i; j++)
+                    if (string.Equals(parts[i].Id, parts[j].Id, StringComparison.Ordinal))
+                        throw new EvaluationFormatException(sources[i], 0, "questionnaire id '" + parts[i].Id + "' is already defined in " + sources[j]);
             try { return new QuestionnaireCatalog(parts); }
             catch (ArgumentException e) { throw new EvaluationFormatException(sourceName, 0, e.Message); }
         }

@@ -165,6 +165,23 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void AFolderWithTwoDefinitionsOfOneIdIsRefusedNamingBothFiles()
+        {
+            // A study folder with a copy of a definition (comfort.json saved again as comfort-v2.json): the copy read second is
+            // named, with the file that gave the id first.
+            string dir = NewFolder();
+            try
+            {
+                File.WriteAllText(Path.Combine(dir, "comfort.json"), Named("comfort"));
+                File.WriteAllText(Path.Combine(dir, "comfort-v2.json"), Named("comfort"));
+                var e = Assert.Throws<EvaluationFormatException>(() => QuestionnaireJson.LoadDirectory(dir));
+                Assert.That(e.SourceName, Is.EqualTo(Path.Combine(dir, "comfort.json")), "read by file name: comfort-v2.json first");
+                Assert.That(e.Reason, Does.Contain("'comfort'").And.Contain("already defined in " + Path.Combine(dir, "comfort-v2.json")));
+            }
+            finally { Directory.Delete(dir, true); }
+        }
+
+        [Test]
         public void AFolderWithoutDefinitionsIsRefusedNamingIt()
         {
             string dir = NewFolder();

@@ -92,7 +92,11 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(catalog.Questionnaires[0].Id, Is.EqualTo("b"));
             Assert.That(catalog.IndexOf("a"), Is.EqualTo(1));
             Assert.That(catalog.Find("A"), Is.Null, "ids are case-sensitive");
-            Assert.Throws<EvaluationFormatException>(() => QuestionnaireJson.ParseAll(new[] { new KeyValuePair<string, string>("a.json", a), new KeyValuePair<string, string>("a2.json", a) }));
+            // Two copies of one definition: the error names the copy and where the id was first given.
+            var e = Assert.Throws<EvaluationFormatException>(() => QuestionnaireJson.ParseAll(new[] { new KeyValuePair<string, string>("b.json", b),
+                new KeyValuePair<string, string>("a.json", a), new KeyValuePair<string, string>("a2.json", a) }));
+            Assert.That(e.SourceName, Is.EqualTo("a2.json"));
+            Assert.That(e.Message, Does.Contain("'a'").And.Contain("already defined in a.json"));
         }
     }
 }
