@@ -38,16 +38,18 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
-        public void AlphaDoesNotChangeWhenEveryAnswerIsShifted()
+        public void AlphaDoesNotChangeWhenEveryAnswerIsScaledAndShiftedFarFromZero()
         {
-            // α depends on variances only: adding 1e9 to every answer must leave it at 32.25/34 (CronbachAlphaTests' example).
-            var shifted = new[]
+            // α depends on variances only, and they all scale alike: 1e15 + 3·x for CronbachAlphaTests' example
+            // (exact integers in a double, 1e15 < 2⁵³) must leave it at 32.25/34. A variance taken as Σ(x + m)(x − m),
+            // i.e. Σx² − n·m², loses the few units that matter to rounding at 6e15·d.
+            var shifted = new double[4][];
+            double[][] example = { new[] { 1.0, 2.0, 2.0 }, new[] { 2.0, 3.0, 3.0 }, new[] { 3.0, 3.0, 4.0 }, new[] { 4.0, 5.0, 4.0 } };
+            for (int r = 0; r < 4; r++)
             {
-                new[] { 1e9 + 1, 1e9 + 2, 1e9 + 2 },
-                new[] { 1e9 + 2, 1e9 + 3, 1e9 + 3 },
-                new[] { 1e9 + 3, 1e9 + 3, 1e9 + 4 },
-                new[] { 1e9 + 4, 1e9 + 5, 1e9 + 4 },
-            };
+                shifted[r] = new double[3];
+                for (int i = 0; i < 3; i++) shifted[r][i] = 1e15 + 3 * example[r][i];
+            }
             Assert.That(CronbachAlpha.Compute(shifted).Alpha, Is.EqualTo(32.25 / 34).Within(1e-9));
         }
 
@@ -111,14 +113,14 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         // ---- Summary statistics ----
 
         [Test]
-        public void SummaryDoesNotChangeShapeWhenEveryValueIsShifted()
+        public void SummarySpreadScalesAndIgnoresAShiftFarFromZero()
         {
-            // 1e9 + (1..5): SD √2.5 and half-width 1.9632432 as for 1..5 (StatisticsTests.SummaryOfOneToFive).
-            var s = SummaryStatistics.Compute(new[] { 1e9 + 4, 1e9 + 2, 1e9 + 5, 1e9 + 1, 1e9 + 3 });
-            Assert.That(s.Mean, Is.EqualTo(1e9 + 3));
-            Assert.That(s.StandardDeviation, Is.EqualTo(Math.Sqrt(2.5)).Within(1e-9));
-            Assert.That(s.StandardError, Is.EqualTo(Math.Sqrt(0.5)).Within(1e-9));
-            Assert.That(s.ConfidenceHigh - s.Mean, Is.EqualTo(1.9632432).Within(1e-6));
+            // 1e15 + 7·(1..5), exact integers in a double: SD 7·√2.5 and SE 7·√0.5 as for 1..5
+            // (StatisticsTests.SummaryOfOneToFive), which Σx² − n·mean² would lose to rounding.
+            var s = SummaryStatistics.Compute(new[] { 1e15 + 28, 1e15 + 14, 1e15 + 35, 1e15 + 7, 1e15 + 21 });
+            Assert.That(s.Mean, Is.EqualTo(1e15 + 21));
+            Assert.That(s.StandardDeviation, Is.EqualTo(7 * Math.Sqrt(2.5)).Within(1e-9));
+            Assert.That(s.StandardError, Is.EqualTo(7 * Math.Sqrt(0.5)).Within(1e-9));
         }
 
         [TestCase(0.0)]

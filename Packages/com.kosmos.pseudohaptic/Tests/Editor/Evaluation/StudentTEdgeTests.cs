@@ -46,6 +46,49 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(StudentT.Quantile(1e-12, 1000), Is.EqualTo(-7.1242289253144091385).Within(1e-11));
         }
 
+        // As ν grows the incomplete beta function cancels (1 − ν/(ν + t²), ln Γ(ν/2 + ½) − ln Γ(ν/2)): before the fix
+        // P(T ≤ 1) was 3.7e-8 off at ν = 1e8 and read ½ at ν = 1e16 (found through Stryker mutant 4185). Past ν = 1000
+        // the CDF now inverts the quantile's Cornish–Fisher expansion.
+        [TestCase(1.0, 1001.0, 0.84122391176174445697)]
+        [TestCase(1.0, 1e4, 0.84133264783478543801)]
+        [TestCase(1.0, 10001.0, 0.84133264904445760222)]
+        [TestCase(-2.0, 5000.0, 0.022777129994146986172)]
+        [TestCase(3.0, 1e5, 0.9986497695579676404)]
+        [TestCase(1.0, 1e8, 0.84134474485868932901)]
+        [TestCase(3.0, 1e8, 0.99865010163598125281)]
+        [TestCase(1.0, 1e16, 0.84134474606854293649)]
+        public void CdfPastOneThousandDegreesOfFreedomKeepsItsDigits(double t, double df, double expected)
+        {
+            Assert.That(StudentT.Cdf(t, df), Is.EqualTo(expected).Within(1e-12));
+            Assert.That(StudentT.Cdf(-t, df), Is.EqualTo(1 - expected).Within(1e-12), "symmetric");
+        }
+
+        // Near the median at large ν, I_x(ν/2, ½) has x close to 1, where its continued fraction converges only slowly:
+        // it must be taken as 1 − I₁₋ₓ(½, ν/2) there.
+        [TestCase(0.001, 1000.0, 0.50039884249077363486)]
+        [TestCase(0.001, 500.0, 0.50039874279266357296)]
+        public void CdfJustAboveTheMedianAtManyDegreesOfFreedom(double t, double df, double expected)
+        {
+            Assert.That(StudentT.Cdf(t, df), Is.EqualTo(expected).Within(1e-10));
+        }
+
+        [TestCase(-10.0, 1e4, 9.81640371433191447e-24)]
+        [TestCase(-10.0, 10001.0, 9.8161567307099124948e-24)]
+        [TestCase(-20.0, 1e5, 4.1117469553271810757e-89)]
+        public void CdfFarInTheTailIsRightToElevenDigitsOfTheTailItself(double t, double df, double expected)
+        {
+            Assert.That(StudentT.Cdf(t, df), Is.EqualTo(expected).Within(1e-9).Percent);
+        }
+
+        [TestCase(-10.0, 2e4)]
+        [TestCase(0.3, 2000.0)]
+        [TestCase(2.5, 1e6)]
+        [TestCase(-1.0, 1e16)]
+        public void CdfAndQuantileAreInversesPastOneThousandDegreesOfFreedom(double t, double df)
+        {
+            Assert.That(StudentT.Quantile(StudentT.Cdf(t, df), df), Is.EqualTo(t).Within(1e-9));
+        }
+
         [TestCase(0.5)]
         [TestCase(1.0)]
         [TestCase(7.0)]
