@@ -7,7 +7,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// incomplete beta function, P(T > t) = ½·I_{ν/(ν+t²)}(ν/2, ½) (Abramowitz and Stegun 26.7.1), by its
     /// continued fraction (Numerical Recipes §6.4); the quantile by bisection on that tail to full double
     /// precision. Above 1000 degrees of freedom, and for ν = ∞, the Cornish–Fisher expansion around the
-    /// normal quantile (A&amp;S 26.7.5), accurate there to far below 1e-9. No dependencies.
+    /// normal quantile (A&amp;S 26.7.5), accurate there to far below 1e-9; the CDF there inverts that
+    /// expansion (the beta form cancels as ν grows). No dependencies.
     /// </summary>
     public static class StudentT
     {
@@ -19,6 +20,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
             CheckDf(degreesOfFreedom);
             if (double.IsNaN(t)) return double.NaN;
             if (double.IsPositiveInfinity(degreesOfFreedom)) return NormalCdfFromTail(t);
+            // As ν grows the incomplete beta function cancels (1 − ν/(ν + t²), ln Γ(ν/2 + ½) − ln Γ(ν/2)): P(T ≤ 1) read
+            // ½ at ν = 1e16 (StudentTEdgeTests). Past ExactUpTo invert the expansion the quantile uses, so that the two agree.
+            if (degreesOfFreedom > ExactUpTo) return NormalCdfFromTail(InverseCornishFisher(t, degreesOfFreedom));
             double tail = UpperTail(Math.Abs(t), degreesOfFreedom);
             return t >= 0 ? 1 - tail : tail;
         }
@@ -80,12 +84,34 @@ namespace Kosmos.PseudoHaptic.Evaluation
         {
             double z = NormalUpperQuantile(tail);
             if (double.IsPositiveInfinity(df)) return z;
+            return CornishFisherExpansion(z, df);
+        }
+
+        /// <summary>t of the normal quantile z (A&amp;S 26.7.5 to ν⁻⁴); increasing in z, and t ≥ z ≥ 0, for ν &gt; <see cref="ExactUpTo"/>.</summary>
+        static double CornishFisherExpansion(double z, double df)
+        {
             double z2 = z * z, z3 = z2 * z, z5 = z3 * z2, z7 = z5 * z2, z9 = z7 * z2;
             double g1 = (z3 + z) / 4;
             double g2 = (5 * z5 + 16 * z3 + 3 * z) / 96;
             double g3 = (3 * z7 + 19 * z5 + 17 * z3 - 15 * z) / 384;
             double g4 = (79 * z9 + 776 * z7 + 1482 * z5 - 1920 * z3 - 945 * z) / 92160;
             return z + g1 / df + g2 / (df * df) + g3 / (df * df * df) + g4 / (df * df * df * df);
+        }
+
+        /// <summary>The z whose <see cref="CornishFisherExpansion"/> is t: bisection on [0, |t|], odd in t.</summary>
+        static double InverseCornishFisher(double t, double df)
+        {
+            double target = Math.Abs(t);
+            if (double.IsPositiveInfinity(target)) return t;
+            double lo = 0, hi = Math.Min(target, 40); // Φ(−40) is below the least double
+            for (;;)
+            {
+                double mid = 0.5 * (lo + hi);
+                if (mid <= lo || mid >= hi) break;
+                if (CornishFisherExpansion(mid, df) < target) lo = mid; else hi = mid;
+            }
+            double z = 0.5 * (lo + hi);
+            return t < 0 ? -z : z;
         }
 
         /// <summary>The z with P(Z &gt; z) = tail, 0 &lt; tail &lt; ½: bisection on the normal tail ½·erfc(z/√2).</summary>
