@@ -83,6 +83,59 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(d.Press(1.51), Is.True);
         }
 
+        [Test]
+        public void ExactlyTheReleaseTimeOutOfContactIsEnough()
+        {
+            // "touched no button for ReleaseTime": the fingertip last touched at 1.0, and 0.25 s later it is a new poke.
+            var d = new PokeDebounce(cooldown: 0.5, releaseTime: 0.25);
+            Assert.That(d.Touch(0.5), Is.True);
+            d.Stay(1.0);
+            Assert.That(d.Touch(1.25), Is.True);
+        }
+
+        [Test]
+        public void ALastPokeExactlyTheCooldownOldIsOldEnough()
+        {
+            // "the last poke is at least Cooldown old": both by contact and by the Interaction SDK's press.
+            var d = new PokeDebounce(cooldown: 0.5, releaseTime: 0.25);
+            Assert.That(d.Touch(1.0), Is.True);
+            Assert.That(d.Touch(1.5), Is.True);
+            Assert.That(d.Press(2.0), Is.True);
+            Assert.That(d.Press(2.5), Is.True);
+        }
+
+        [Test]
+        public void AContactThatBeginsCountsAsTouchingEvenWithoutAStay()
+        {
+            // No cooldown: a second button entered 0.1 s after the first (a slide, with no stay reported between) is not a poke.
+            var d = new PokeDebounce(cooldown: 0, releaseTime: 0.25);
+            Assert.That(d.Touch(1.0), Is.True);
+            Assert.That(d.Touch(1.1), Is.False);
+            Assert.That(d.Touch(1.2), Is.False, "0.1 s after the last contact began");
+            Assert.That(d.Touch(1.5), Is.True, "0.3 s out of contact");
+        }
+
+        [Test]
+        public void ZeroTimesAreAllowedAndMeanNoWait()
+        {
+            var d = new PokeDebounce(0, 0);
+            Assert.That((d.Cooldown, d.ReleaseTime), Is.EqualTo((0.0, 0.0)));
+            Assert.That(d.Touch(1.0), Is.True);
+            Assert.That(d.Touch(1.02), Is.True);
+            Assert.That(d.Press(1.02), Is.True);
+        }
+
+        [Test]
+        public void ABadSettingIsRefusedNamingItAndWhatItMustBe()
+        {
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new PokeDebounce(-0.1, 0.1));
+            Assert.That(e.ParamName, Is.EqualTo("cooldown"));
+            Assert.That(e.Message, Does.Contain("finite number ≥ 0"));
+            e = Assert.Throws<ArgumentOutOfRangeException>(() => new PokeDebounce(0.5, -0.1));
+            Assert.That(e.ParamName, Is.EqualTo("releaseTime"));
+            Assert.That(e.Message, Does.Contain("finite number ≥ 0"));
+        }
+
         [TestCase(-0.1, 0.1)]
         [TestCase(0.5, double.NaN)]
         [TestCase(double.PositiveInfinity, 0.1)]

@@ -35,7 +35,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(Refusal(() => new Questionnaire("a\"b", "t", 1, 5, Items(1))), Does.Contain("a comma or a quote"));
             Assert.That(Refusal(() => new Questionnaire("q", "t", 5, 5, Items(1))), Does.Contain("questionnaire 'q': scale min 5 is not below max 5"));
             Assert.That(Refusal(() => new Questionnaire("q", "t", 6, 5, Items(1))), Does.Contain("scale min 6 is not below max 5"));
-            Assert.That(() => new Questionnaire("q", "t", 1, 5, null), Throws.InstanceOf<ArgumentNullException>());
+            Assert.That(Refusal(() => new Questionnaire(",a", "t", 1, 5, Items(1))), Does.Contain("a comma or a quote"), "a comma first");
+            Assert.That(Refusal(() => new Questionnaire("\"a\"", "t", 1, 5, Items(1))), Does.Contain("a comma or a quote"), "a quote first");
+            Assert.That(() => new Questionnaire("q", "t", 1, 5, null), Throws.InstanceOf<ArgumentNullException>().With.Property("ParamName").EqualTo("items"));
             Assert.That(Refusal(() => new Questionnaire("q", "t", 1, 5, Items())), Does.Contain("questionnaire 'q' has no items"));
             Assert.That(Refusal(() => new Questionnaire("q", "t", 1, 5, new QuestionnaireItem[] { null })), Does.Contain("questionnaire 'q' has a null item"));
             Assert.That(Refusal(() => new Questionnaire("q", "t", 1, 5, Items(0))), Does.Contain("questionnaire 'q': item number 0 is below 1"));
@@ -100,6 +102,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(q.Reject(2, 5.5), Is.EqualTo("response 5.5 to 'immersion' item 2 is outside the scale 1 to 5"));
             Assert.That(q.Reject(2, 3.5), Is.EqualTo("response 3.5 to 'immersion' item 2 is not a whole number on the scale 1 to 5"));
             Assert.That(q.Reject(2, 1e20), Is.EqualTo("response 1E+20 to 'immersion' item 2 is outside the scale 1 to 5"));
+            // Every digit it takes to tell the value from the whole number next to it (a 15-digit form would read "3").
+            Assert.That(q.Reject(2, 3.0000000000000004), Is.EqualTo("response 3.0000000000000004 to 'immersion' item 2 is not a whole number on the scale 1 to 5"));
         }
 
         [Test]

@@ -328,6 +328,122 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void AtTheEndNoItemIsShownAndStepsOutsideTheSessionAreRefused()
+        {
+            var s = Session("P1", new[] { QuestionnaireCatalog.SelfAssessmentId });
+            Assert.That(() => s.AnswerAt(1), Throws.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(() => s.AnswerAt(-1), Throws.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(() => s.ItemAt(1, out _), Throws.TypeOf<ArgumentOutOfRangeException>());
+            Assert.That(() => s.ItemAt(-1, out _), Throws.TypeOf<ArgumentOutOfRangeException>());
+            s.Answer(6);
+            Assert.That(s.IsFinished, Is.True);
+            Assert.That(s.CurrentItem, Is.Null);
+            Assert.That(s.CurrentPosition, Is.EqualTo(0));
+            Assert.That(s.CurrentPart, Is.EqualTo(0));
+            Assert.That(s.CurrentAnswer, Is.Null);
+            Assert.That(s.AnswerAt(0), Is.EqualTo(6));
+            var e = Assert.Throws<InvalidOperationException>(() => s.Answer(7));
+            Assert.That(e.Message, Does.Contain("the session is finished"));
+        }
+
+        [Test]
+        public void MisuseIsRefusedSayingWhatIsWrong()
+        {
+            var e = Assert.Throws<ArgumentException>(() => Session(" "));
+            Assert.That((e.ParamName, e.Message.Contains("the participant id is empty")), Is.EqualTo(("participant", true)), e.Message);
+            e = Assert.Throws<ArgumentException>(() => Session("P1 "));
+            Assert.That(e.Message, Does.Contain("the participant id 'P1 ' has surrounding spaces or a line break"));
+            foreach (string empty in new[] { "", null })
+            {
+                e = Assert.Throws<ArgumentException>(() => new QuestionnaireSession(Paper(), "P1", empty));
+                Assert.That((e.ParamName, e.Message.Contains("the responses file path is empty")), Is.EqualTo(("responsesPath", true)), e.Message);
+            }
+            e = Assert.Throws<ArgumentException>(() => Session("P1", new[] { "presence" }));
+            Assert.That(e.Message, Does.Contain("unknown questionnaire 'presence' (expected one of 'weight-detection', 'immersion', 'self-assessment')"));
+            e = Assert.Throws<ArgumentException>(() => Session("P1", new[] { "immersion", "self-assessment", "immersion" }));
+            Assert.That(e.Message, Does.Contain("questionnaire 'immersion' is listed twice"));
+            e = Assert.Throws<ArgumentException>(() => Session("P1", new string[0]));
+            Assert.That(e.Message, Does.Contain("no questionnaires to ask"));
+        }
+
+        [Test]
+        public void AnAnswerIsTakenOnlyOnceItsWriteIsAcknowledgedAndOneAtATime()
+        {
+            var s = Session();
+            var e = Assert.Throws<InvalidOperationException>(() => s.Acknowledge());
+            Assert.That(e.Message, Does.Contain("no answer is waiting for its write"));
+            Assert.That(s.AnsweredCount, Is.EqualTo(0));
+            s.Submit(4);
+            Assert.That(s.IsSaving, Is.True);
+            e = Assert.Throws<InvalidOperationException>(() => s.Submit(2));
+            Assert.That(e.Message, Does.Contain("the last answer is still being saved"));
+            Assert.That(s.FileText(), Is.EqualTo(ResponsesCsv.Header + "\nP1,weight-detection,1,4\n"), "the first answer, once");
+            s.Acknowledge();
+            Assert.That(() => s.Acknowledge(), Throws.InvalidOperationException, "one write, one acknowledgement");
+            Assert.That((s.AnsweredCount, s.StepIndex), Is.EqualTo((1, 1)));
+        }
+
+        [Test]
+        public void AChangeToTheFirstAnswerIsCountedOnceAndAFailedWriteOfItKeepsTheAnswerGiven()
+        {
+            var s = Session();
+            s.Answer(4);
+            s.Answer(2);
+            Assert.That(s.Back() && s.Back(), Is.True);
+            s.Answer(5);
+            Assert.That(s.AnsweredCount, Is.EqualTo(2), "a changed answer is not a new one");
+            Assert.That(s.StepIndex, Is.EqualTo(2));
+
+            Assert.That(s.Back() && s.Back(), Is.True);
+            string before = File.ReadAllText(path);
+            File.Delete(path);
+            Directory.CreateDirectory(path); // the rename must fail
+            Assert.Catch<Exception>(() => s.Answer(1));
+            Assert.That(s.FileText(), Is.EqualTo(before), "the acknowledged answer 5 stays where it was");
+            Assert.That((s.CurrentAnswer, s.AnsweredCount, s.StepIndex), Is.EqualTo(((int?)5, 2, 0)));
+
+            Directory.Delete(path);
+            File.WriteAllText(path, before); // as the last write left it
+            Assert.That(Session().AnswerAt(0), Is.EqualTo(5), "after a crash here the file holds the acknowledged answer");
+            s.Answer(1);
+            Assert.That(DataLines(), Is.EqualTo(new[] { "P1,weight-detection,1,1", "P1,weight-detection,2,2" }));
+        }
+
+        [Test]
+        public void BlankLinesBeforeTheHeaderAndAByteOrderMarkWrittenTwiceAreReadAsScoreReadsThem()
+        {
+            // An editor that adds a byte-order mark to a file that had one leaves U+FEFF as the first character read.
+            File.WriteAllText(path, "\uFEFF\n\r\nparticipant,questionnaire,item,response\nP1,weight-detection,1,3\n", new System.Text.UTF8Encoding(true));
+            Assert.That(FileAsScoreReadsIt().Count, Is.EqualTo(1));
+            var s = Session();
+            Assert.That(s.ResumedCount, Is.EqualTo(1));
+            s.Answer(4);
+            Assert.That(File.ReadAllText(path), Is.EqualTo(ResponsesCsv.Header + "\nP1,weight-detection,1,3\nP1,weight-detection,2,4\n"));
+        }
+
+        [Test]
+        public void AHeaderInAnotherOrderIsRefusedNamingItsLineAndTheOrderNeeded()
+        {
+            File.WriteAllText(path, "\n\nquestionnaire,participant,item,response\nimmersion,P1,1,3\n");
+            var e = Assert.Throws<EvaluationFormatException>(() => Session());
+            Assert.That(e.Line, Is.EqualTo(3), "the header's line, blank lines counted");
+            Assert.That(e.Reason, Does.Contain("answers are appended as participant,questionnaire,item,response, so the header must name exactly these columns in this order"));
+        }
+
+        [Test]
+        public void AnotherParticipantsRowWithALineBreakInAQuotedFieldIsKeptWhole()
+        {
+            string text = ResponsesCsv.Header + "\n\"P5\n(left hand)\",immersion,1,3\nP1,weight-detection,1,2\n";
+            File.WriteAllText(path, text);
+            var s = Session();
+            Assert.That(s.ResumedCount, Is.EqualTo(1));
+            s.Answer(4);
+            Assert.That(File.ReadAllText(path), Is.EqualTo(text + "P1,weight-detection,2,4\n"));
+            var set = FileAsScoreReadsIt();
+            Assert.That(set.Find("P5\n(left hand)", QuestionnaireCatalog.ImmersionId).AnswerAt(0), Is.EqualTo(3));
+        }
+
+        [Test]
         public void ThePackagesQuestionnairesGiveEachItemItsWordsAndScaleLabels()
         {
             var catalog = EvaluationFiles.PackageCatalog();
