@@ -12,7 +12,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     {
         readonly HashSet<string> participants = new HashSet<string>(StringComparer.Ordinal);
         readonly HashSet<string> conditions = new HashSet<string>(StringComparer.Ordinal);
-        readonly HashSet<string> pairs = new HashSet<string>(StringComparer.Ordinal);
+        // Keyed by both names (ordinal), so that no two pairs can meet whatever characters the names hold.
+        readonly HashSet<(string Participant, string Condition)> pairs = new HashSet<(string Participant, string Condition)>();
         long characters;
 
         public ParticipantLimit(int maxParticipants, long maxCharacters)
@@ -30,18 +31,19 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <summary>Distinct participants seen so far.</summary>
         public int Participants => participants.Count;
 
-        /// <summary>Distinct participant × condition pairs seen so far (each has its own sheets); without conditions, the participants.</summary>
-        public int Pairs => Math.Max(pairs.Count, participants.Count);
+        /// <summary>Distinct participant × condition pairs seen so far (each has its own sheets, the empty condition's included:
+        /// a row of a file with conditions that leaves its condition blank); without conditions, the participants.</summary>
+        public int Pairs => pairs.Count;
 
         /// <summary>Counts a participant and a condition (their names' characters count once each); returns why the row is refused, or null.</summary>
         public string Admit(string participant, string condition = "")
         {
             bool newParticipant = !participants.Contains(participant), newCondition = condition.Length > 0 && !conditions.Contains(condition);
-            string pair = condition.Length > 0 ? participant + "\u0001" + condition : null;
-            bool newPair = pair != null && !pairs.Contains(pair);
+            var pair = (participant, condition);
+            bool newPair = !pairs.Contains(pair);
             if (!newParticipant && !newCondition && !newPair) return null;
-            if ((newParticipant || newPair) && Pairs >= MaxParticipants)
-                return "more than " + MaxParticipants + (pair != null ? " participant × condition pairs" : " participants")
+            if (newPair && Pairs >= MaxParticipants)
+                return "more than " + MaxParticipants + (condition.Length > 0 || conditions.Count > 0 ? " participant × condition pairs" : " participants")
                     + " (the most one file may hold: a reader keeps every participant's answers, not the rows)";
             long add = (newParticipant ? participant.Length : 0) + (newCondition ? condition.Length : 0);
             if (characters + add > MaxCharacters)

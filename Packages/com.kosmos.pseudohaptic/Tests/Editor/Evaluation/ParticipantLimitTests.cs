@@ -74,6 +74,33 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void ABlankConditionInAFileWithConditionsIsAPairOfItsOwn()
+        {
+            // A file with a condition column that one row leaves blank keeps a set of sheets for P1 in condition "" besides
+            // P1 in "visual" (ResponsesCsv.ParseByCondition): two pairs, so a limit of one refuses the second.
+            var limit = new ParticipantLimit(1, long.MaxValue);
+            Assert.That(limit.Admit("P1", "visual"), Is.Null);
+            Assert.That(limit.Admit("P1", ""), Does.Contain("more than 1 participant × condition pairs"));
+            limit = new ParticipantLimit(2, long.MaxValue);
+            Assert.That(limit.Admit("P1", ""), Is.Null);
+            Assert.That(limit.Admit("P1", "visual"), Is.Null);
+            Assert.That(limit.Pairs, Is.EqualTo(2));
+            Assert.That(limit.Admit("P2", ""), Does.Contain("more than 2 participant × condition pairs"));
+        }
+
+        [Test]
+        public void PairsAreToldApartWhateverCharactersTheNamesHold()
+        {
+            // Any character may be in an id, the control characters included: "a\u0001b" in "c", "a" in "x" and "a" in
+            // "b\u0001c" are three pairs (three sets of sheets), so a limit of two refuses the third.
+            var limit = new ParticipantLimit(2, long.MaxValue);
+            Assert.That(limit.Admit("a\u0001b", "c"), Is.Null);
+            Assert.That(limit.Admit("a", "x"), Is.Null);
+            Assert.That(limit.Pairs, Is.EqualTo(2));
+            Assert.That(limit.Admit("a", "b\u0001c"), Does.Contain("more than 2 participant × condition pairs"));
+        }
+
+        [Test]
         public void NamesCountOnceEachUpToExactlyTheLimitAndTheRowPassingItIsRefusedNamingIt()
         {
             // P1 (2) + visual (6) + haptic (6) + P2 (2) = 16 characters however many rows repeat them.
