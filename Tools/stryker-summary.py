@@ -5,18 +5,23 @@
     python3 Tools/stryker-summary.py REPORT.json --piece P --commit C --date D
     python3 Tools/stryker-summary.py out/stryker/PIECE --files      # also one row per file
     python3 Tools/stryker-summary.py out/stryker/PIECE --survivors  # list survivors and no-coverage mutants
+    python3 Tools/stryker-summary.py out/stryker/PIECE --unchanged-at HEAD  # is the measured code still the code at HEAD?
 
 The argument is a report file or a folder holding one (out/stryker/PIECE from Tools/stryker-piece.sh, whose
 run.txt gives the commit, start and end). Score = (killed + timeout) / (killed + timeout + survived + no
 coverage), as Stryker computes it; compile errors and ignored mutants are left out, as Stryker does ("ignored"
 counts those of the piece's files: `// Stryker disable` comments and Stryker's own filters, not the mutate filter). The row also
 gives the score with timeouts counted as survivors (a lower bound; quality.md, "Timeouts").
+--unchanged-at COMMIT compares the source the report holds of every file of the piece with that file at COMMIT (git show,
+run from the repository): where none differs, the mutants are the same at COMMIT and the score is a lower bound there
+(tests added since can only kill more); exit 1 when a file differs, naming it.
 Python 3 standard library only. Exit 2 on a missing or unreadable report.
 """
 import argparse
 import glob
 import json
 import os
+import subprocess
 import sys
 
 COUNTED = ("Killed", "Timeout", "Survived", "NoCoverage")
@@ -71,6 +76,26 @@ def short(path, root):
     return os.path.relpath(p, root) if root else p
 
 
+def repo_path(path):
+    """The file's path in the repository: from Packages/ on."""
+    p = path.replace("\\", "/")
+    at = p.find("Packages/com.kosmos.pseudohaptic/")
+    return p[at:] if at >= 0 else p
+
+
+def changed_at(files, commit, root):
+    """The piece's files (those with a counted mutant) whose source at commit is not the source the report measured."""
+    changed = []
+    for name, f in sorted(files.items(), key=lambda kv: short(kv[0], root)):
+        if not any(m.get("status") in COUNTED for m in f.get("mutants", [])):
+            continue
+        shown = subprocess.run(["git", "show", "%s:%s" % (commit, repo_path(name))], capture_output=True)
+        now = shown.stdout.decode("utf-8-sig") if shown.returncode == 0 else None
+        if now is None or now.replace("\r\n", "\n") != f.get("source", "").replace("\r\n", "\n"):
+            changed.append(short(name, root))
+    return changed
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("report", help="mutation-report.json or a folder holding one (out/stryker/PIECE)")
@@ -79,6 +104,7 @@ def main(argv):
     ap.add_argument("--date", help="when (default: run.txt's start–end)")
     ap.add_argument("--files", action="store_true", help="also print one row per file")
     ap.add_argument("--survivors", action="store_true", help="list survived and no-coverage mutants")
+    ap.add_argument("--unchanged-at", metavar="COMMIT", help="check that every file of the piece is at COMMIT as measured")
     a = ap.parse_args(argv)
     try:
         report_path = find_report(a.report)
@@ -129,6 +155,13 @@ def main(argv):
                 code = src[line - 1].strip() if 0 < line <= len(src) else ""
                 print("%s:%d [%s] %s: %s -> %s" % (short(name, root), line, m["status"], m.get("mutatorName"),
                                                    code[:110], (m.get("replacement") or "").replace("\n", " ")[:110]))
+    if a.unchanged_at:
+        changed = changed_at(files, a.unchanged_at, root)
+        print()
+        if changed:
+            print("changed at %s since the run: %s" % (a.unchanged_at, ", ".join("`%s`" % n for n in changed)))
+            return 1
+        print("every file of %s is at %s as measured at %s" % (piece, a.unchanged_at, commit))
     return 0
 
 
