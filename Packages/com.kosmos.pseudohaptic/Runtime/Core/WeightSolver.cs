@@ -454,8 +454,6 @@ namespace Kosmos.PseudoHaptic
         double GlideOffset(in MotionFrame f, double dt)
         {
             double change = f.Offset - _state.LastOffset, glide = _state.Glide;
-            // Nothing gliding, and no change (most frames) or one the hand explains: 0, what the lines below would return.
-            if (glide == 0 && change == 0) return 0;
             // The most the weight's offset moves per metre of lift: 1 − G (a lead of G − 1 for a light object), or up to 1
             // where the height deceleration shapes the lift it carries.
             double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
@@ -469,10 +467,14 @@ namespace Kosmos.PseudoHaptic
                 if (moved >= 0) { if (low < 0) low = 0; if (high > 2 * moved) high = 2 * moved; }
                 else { if (high > 0) high = 0; if (low < 2 * moved) low = 2 * moved; }
             }
-            double excess = change > high ? change - high : (change < low ? change - low : 0);
-            if (glide == 0 && excess == 0) return 0;
-            double g = glide - excess;
+            // The change beyond [low, high] (x − clamp(x) is x − high above, x − low below, +0 between; the offsets are finite),
+            // without a branch: on a jittered hand whether the change is explained is a coin toss the CPU would mispredict.
+            double excess = change - Math.Min(Math.Max(change, low), high);
             double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);
+            // Nothing gliding and no excess this frame's step does not take away (almost every frame): 0, what the lines below
+            // return. One test that is almost always true, so the frame runs on without waiting for the sums above.
+            if (glide == 0 && excess <= step && excess >= -step) return 0;
+            double g = glide - excess;
             g = g > step ? g - step : (g < -step ? g + step : 0);
             _state.Glide = double.IsFinite(g) ? g : 0;
             return _state.Glide;
