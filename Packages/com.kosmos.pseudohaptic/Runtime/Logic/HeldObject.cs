@@ -23,7 +23,9 @@ namespace Kosmos.PseudoHaptic
     /// <see cref="TwoHands"/> gets <c>TwoHands(1)</c> here: both hands are followed, each carrying the whole
     /// mass (the paper's weight, unchanged). The solver steps once per frame, on the call that completes the
     /// frame's poses: when every hand on the object has given one since the last step (two hands calling in any
-    /// order), or when a hand gives a second one before the other gave any (the other is not stepping). x and z are the
+    /// order). A hand that gives a second pose before the other gave any tells that the other's driver stopped stepping
+    /// it (without <see cref="End"/>): the other is silent, taken as lost (its last pose is stale, not a hand held still)
+    /// until it gives a pose again, and the frame the first pose began is stepped then, with its own time. x and z are the
     /// solver's (<see cref="Horizontal"/>) when the profile has <see cref="LateralInertia"/>; otherwise the grab
     /// driver moves them as before. A break-away ends the solver's hold: <see cref="BrokeAway"/> tells the
     /// drivers to release, and the last release raises <see cref="Ended"/>. No allocation per frame.
@@ -37,6 +39,8 @@ namespace Kosmos.PseudoHaptic
         readonly int[] _slotHand = { Empty, Empty }; // the hand id in solver slot 1 and 2
         readonly HandPose[] _pose = new HandPose[MaxHands];
         readonly bool[] _fresh = new bool[MaxHands]; // recorded a pose since the solver's last step
+        readonly bool[] _silent = new bool[MaxHands]; // its driver stopped stepping it: lost until it gives a pose again
+        double _pendingDt, _pendingPoseTime; // the time and pose time the first pose of a frame still incomplete came with
         int _count;
         bool _active; // a hold began and its Ended has not been raised
         WeightProfile _given, _used;
@@ -189,7 +193,7 @@ namespace Kosmos.PseudoHaptic
             }
             Solver3D.SetGrip(2, false);
             _literal?.BeginHold(_pose[0].IsUsable ? _pose[0].Y : double.NaN, Solver3D.ObjectY);
-            _fresh[0] = _fresh[1] = false;
+            _fresh[0] = _fresh[1] = _silent[0] = _silent[1] = false;
             _active = true;
             _clock = 0;
             HandPoint = Followed(_pose[0]);
@@ -213,11 +217,34 @@ namespace Kosmos.PseudoHaptic
         {
             int slot = SlotOf(hand);
             if (slot < 0 || !IsHeld) return double.NaN;
-            bool again = _fresh[slot];
+            if (_fresh[slot])
+            {
+                // A second pose of this hand before the other gave one: the other's driver stopped stepping it. Its last pose is
+                // stale: it is silent (lost) until it gives one again, and the frame this hand's last pose began is stepped now.
+                for (int i = 0; i < MaxHands; i++)
+                    if (_slotHand[i] != Empty && !_fresh[i]) _silent[i] = true;
+                StepSolver(_pendingDt, _pendingPoseTime);
+                if (!IsHeld) return double.NaN; // that step broke the object away
+            }
             Take(slot, hand, handWorld, tracked, highConfidence, poseTime);
             _fresh[slot] = true;
-            if (!again && !AllFresh()) return double.NaN; // the other hand's pose of this frame is still to come
+            _silent[slot] = false;
+            if (!AllFresh())
+            {
+                // The other hand's pose of this frame is still to come.
+                _pendingDt = dt;
+                _pendingPoseTime = poseTime;
+                return double.NaN;
+            }
+            return StepSolver(dt, poseTime);
+        }
+
+        /// <summary>Steps the solver with the hands' poses as recorded (a silent hand's as lost) and returns the object's local y.</summary>
+        double StepSolver(double dt, double poseTime)
+        {
             _fresh[0] = _fresh[1] = false;
+            for (int i = 0; i < MaxHands; i++)
+                if (_silent[i] && _pose[i].IsTracked) _pose[i] = new HandPose(_pose[i].X, _pose[i].Y, _pose[i].Z, false, false, _pose[i].PoseTime);
 
             WeightSolver3D s = Solver3D;
             s.Step(in _pose[0], in _pose[1], dt);
@@ -284,7 +311,7 @@ namespace Kosmos.PseudoHaptic
             int slot = SlotOf(hand);
             if (slot < 0) return false;
             _slotHand[slot] = Empty;
-            _fresh[slot] = false;
+            _fresh[slot] = _silent[slot] = false;
             _pose[slot] = HandPose.Lost;
             _count--;
             if (_count > 0)
@@ -315,7 +342,7 @@ namespace Kosmos.PseudoHaptic
         bool AllFresh()
         {
             for (int i = 0; i < MaxHands; i++)
-                if (_slotHand[i] != Empty && !_fresh[i]) return false;
+                if (_slotHand[i] != Empty && !_fresh[i] && !_silent[i]) return false;
             return true;
         }
 

@@ -154,6 +154,45 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(obj.Y - Table.Y, Is.GreaterThan(0.1), "the lift went on with the other hand");
         }
 
+        /// <summary>
+        /// Two hands hold; the second hand's driver stops stepping it without ending its hold (a third-party driver disabled
+        /// mid-hold) while the first lifts. The second hand's last pose is stale, not a hand held still: it is taken as lost,
+        /// so the object is lifted as when both hands lift together (the followed point rises with the first hand, each hand
+        /// still carrying its share), not half as far, and the first hand's step completes every frame.
+        /// </summary>
+        [Test]
+        public void AHandWhoseDriverStopsSteppingItIsLostNotHeldWhereItWasLastSeen([Range(1, 20)] int seed)
+        {
+            const double rise = 0.3;
+            const int stopAt = 27; // 0.3 s: both hands still at the table
+            HandFrame[] left = Hand(QuestHand.Lift(Table + LeftGrip, rise, 0.6, 0.8), 3.0, seed);
+            HandFrame[] right = Hand(QuestHand.Lift(Table + RightGrip, rise, 0.6, 0.8), 3.0, seed + 700);
+            HandFrame[] rightStill = Hand(t => Table + RightGrip, 3.0, seed + 700);
+
+            HeldObject Run(bool rightStops)
+            {
+                HeldObject hold = Object(1, NamedProfiles.PaperExperiment);
+                Assert.That(hold.Begin(1, Table + LeftGrip, double.NaN, Table, Table.Y), Is.True, hold.Error);
+                Assert.That(hold.Begin(2, Table + RightGrip, double.NaN, Table, Table.Y), Is.True, hold.Error);
+                for (int i = 0; i < left.Length; i++)
+                {
+                    HandFrame r = rightStops ? rightStill[i] : right[i];
+                    if (!rightStops || i < stopAt) hold.Step(2, r.Position, r.Tracked, r.HighConfidence, double.NaN, r.Dt);
+                    double y = hold.Step(1, left[i].Position, left[i].Tracked, left[i].HighConfidence, double.NaN, left[i].Dt);
+                    if (rightStops && i > stopAt) Assert.That(double.IsFinite(y), Is.True, "frame " + i + ": the first hand's step completes the frame");
+                }
+                return hold;
+            }
+
+            HeldObject both = Run(rightStops: false), one = Run(rightStops: true);
+            Assert.That(one.Solver3D.FollowedHands, Is.EqualTo(1), "the hand whose driver stopped is not followed");
+            Assert.That(one.Solver3D.HoldingHands, Is.EqualTo(2), "it still holds: it was not released");
+            Assert.That(one.HandPoint.Y - Table.Y, Is.EqualTo(rise).Within(0.02),
+                "the followed point rises with the first hand (half the rise: the stale hand is still averaged in)");
+            Assert.That(one.ObjectY, Is.EqualTo(both.ObjectY).Within(0.02), "lifted as when both hands lift");
+            Assert.That(one.Solver.State.Time, Is.EqualTo(both.Solver.State.Time).Within(1e-9), "every frame's time was stepped");
+        }
+
         /// <summary>A hand lets go and another grasp takes its slot elsewhere: the object does not move to the new hand.</summary>
         [Test]
         public void AHandThatLetsGoAndGraspsElsewhereIsNotTakenForAHandReturning()
