@@ -129,6 +129,24 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 Assert.That(ReadAll(csv), Is.EqualTo(new[] { new[] { "a", "b" }, new[] { "1", "2" } }));
         }
 
+        // A file saved empty by an editor that writes a byte-order mark has no header, whether the mark arrives
+        // with the rest of the file or alone, and it is read once to its end.
+        [TestCase(0)]
+        [TestCase(1)]
+        public void AFileOfNothingButAByteOrderMarkHasNoHeader(int piece)
+        {
+            foreach (string text in new[] { "\uFEFF", "\uFEFF \r\n\t\n" })
+            {
+                var reader = new PiecesReader(text, piece == 0 ? 1000 : piece);
+                using (var csv = new CsvReader(reader, "R.csv"))
+                {
+                    Assert.That(csv.ReadHeader(), Is.False, text.Length.ToString());
+                    Assert.That(csv.Read(), Is.False);
+                }
+                Assert.That(reader.ReadsAfterEnd, Is.EqualTo(0));
+            }
+        }
+
         [Test]
         public void ARowCutOffByAPowerCutEndsOnItsOwnLine()
         {
