@@ -129,6 +129,24 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 Assert.That(ReadAll(csv), Is.EqualTo(new[] { new[] { "a", "b" }, new[] { "1", "2" } }));
         }
 
+        // A file saved empty by an editor that writes a byte-order mark has no header, whether the mark arrives
+        // with the rest of the file or alone, and it is read once to its end.
+        [TestCase(0)]
+        [TestCase(1)]
+        public void AFileOfNothingButAByteOrderMarkHasNoHeader(int piece)
+        {
+            foreach (string text in new[] { "\uFEFF", "\uFEFF \r\n\t\n" })
+            {
+                var reader = new PiecesReader(text, piece == 0 ? 1000 : piece);
+                using (var csv = new CsvReader(reader, "R.csv"))
+                {
+                    Assert.That(csv.ReadHeader(), Is.False, text.Length.ToString());
+                    Assert.That(csv.Read(), Is.False);
+                }
+                Assert.That(reader.ReadsAfterEnd, Is.EqualTo(0));
+            }
+        }
+
         [Test]
         public void ARowCutOffByAPowerCutEndsOnItsOwnLine()
         {
@@ -225,6 +243,88 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 Assert.That(e.Line, Is.EqualTo(3), e.Message);
                 Assert.That(e.Reason, Does.Contain("1000 characters"), e.Message);
             }
+        }
+
+        // Each line break inside quotes counts once, whichever it is (CRLF, a lone CR as old Mac files have, LF), so
+        // the rows after a multi-line note are named on their own lines; a quoted last field ends its row at LF,
+        // CRLF or CR like an unquoted one. Delivered whole and a character or two at a time (a CRLF split across
+        // two reads is still one line break).
+        [TestCase(0)]
+        [TestCase(1)]
+        [TestCase(2)]
+        public void EachQuotedLineBreakCountsOnceWhateverItIsAndTheRowsAfterItKeepTheirLines(int piece)
+        {
+            string text = "participant,note\n"        // line 1
+                + "P1,\"two\r\nlines\"\n"           // lines 2-3: CRLF inside, LF after
+                + "P2,\"old\rmac\"\r\n"             // lines 4-5: CR inside, CRLF after
+                + "P3,\"unix\nline\"\r"              // lines 6-7: LF inside, CR after
+                + "P4,\"\r\n\r\n\"\n"               // lines 8-10: nothing but two CRLF
+                + "P5,plain\n"                        // line 11
+                + "P6\n";                             // line 12: one field short
+            var expected = new[]
+            {
+                new object[] { "P1", "two\r\nlines", 2, 3 },
+                new object[] { "P2", "old\rmac", 4, 5 },
+                new object[] { "P3", "unix\nline", 6, 7 },
+                new object[] { "P4", "\r\n\r\n", 8, 10 },
+                new object[] { "P5", "plain", 11, 11 },
+            };
+            TextReader reader = piece == 0 ? (TextReader)new StringReader(text) : new PiecesReader(text, piece);
+            using (var csv = new CsvReader(reader, "R.csv"))
+            {
+                Assert.That(csv.ReadHeader(), Is.True);
+                foreach (var row in expected)
+                {
+                    Assert.That(csv.Read(), Is.True, (string)row[0]);
+                    Assert.That(new object[] { csv[0], csv[1], csv.Line, csv.EndLine }, Is.EqualTo(row), (string)row[0]);
+                }
+                var e = Assert.Throws<EvaluationFormatException>(() => csv.Read());
+                Assert.That(e.Message, Does.StartWith("R.csv:12: "), "the row after 4 quoted line breaks is on line 12");
+            }
+        }
+
+        [Test]
+        public void SpacesAndTabsAfterAClosingQuoteAreNotPartOfTheFieldNorAnError()
+        {
+            var rows = ReadAll("participant,note,response\n\"P1\"  ,\"fine\"\t, \"8\" \t\n\"P2\" ,\"ok\" ,\"7\"  ");
+            Assert.That(rows, Is.EqualTo(new[] { new[] { "participant", "note", "response" }, new[] { "P1", "fine", "8" }, new[] { "P2", "ok", "7" } }));
+        }
+
+        // Text after the closing quote (a hand-edited `"say" hi`, or the zeros a power cut leaves right after a
+        // quoted last field) is refused on the row's line, naming the field and the remedy; it is not read as
+        // the start of another row.
+        [TestCase("P1,\"say\" hi\n")]
+        [TestCase("P1,\"say\"\0\0\0")]
+        public void TextAfterAClosingQuoteIsRefusedNamingTheFieldAndTheRemedy(string row)
+        {
+            var e = Refused("participant,note\nP0,fine\n" + row);
+            Assert.That(e.Message, Does.StartWith("R.csv:3: "), e.Message);
+            Assert.That(e.Reason, Does.Contain("text after the closing quote of field 2"), e.Message);
+            Assert.That(e.Reason, Does.Contain("(quote the whole field)"), e.Message);
+        }
+
+        // A long note costs memory in proportion to its length (the row's buffer doubles as it fills, up to the
+        // row limit): a note of 20,000 characters (40 KB), arriving a character at a time or written as 10,000
+        // doubled quotes, is read with less than 1 MB allocated in all (the 16,384-character read buffer
+        // included). Growing the buffer a little at a time would copy hundreds of megabytes; growing it straight
+        // to the 1 MiB limit would allocate over 2 MB for every such file.
+        [TestCase(false)]
+        [TestCase(true)]
+        public void ALongNoteCostsMemoryInProportionToItsLength(bool doubledQuotes)
+        {
+            string note = doubledQuotes ? new string('"', 10000) : new string('x', 20000);
+            string written = doubledQuotes ? "\"" + note.Replace("\"", "\"\"") + "\"" : note;
+            string text = "note,response\n" + written + ",5\n";
+            List<string[]> Read()
+            {
+                using (var csv = new CsvReader(new PiecesReader(text, 1), "R.csv")) return ReadAll(csv);
+            }
+            Read(); // compiled and warmed up: only the reading itself is measured
+            long before = GC.GetAllocatedBytesForCurrentThread();
+            var rows = Read();
+            long allocated = GC.GetAllocatedBytesForCurrentThread() - before;
+            Assert.That(rows[1], Is.EqualTo(new[] { note, "5" }), "every character kept");
+            Assert.That(allocated, Is.LessThan(1000000), "bytes allocated to read a 40 KB note");
         }
 
         [Test]

@@ -59,6 +59,18 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(e.Message, Does.Contain("…"), "the cut is marked");
         }
 
+        // The cut mark says something was cut: a header of 80 characters is shown whole and unmarked, one of 81 is
+        // shown as its first 80 and the mark.
+        [TestCase(80, false)]
+        [TestCase(81, true)]
+        public void OnlyAHeaderLongerThanEightyCharactersIsShownCutAndMarkedCut(int length, bool cut)
+        {
+            string header = "note" + new string('0', length - 4);
+            var e = Assert.Throws<EvaluationFormatException>(() => CsvTable.Parse(header + "\n", "R.csv", Answer));
+            string shown = cut ? header.Substring(0, 80) + "…" : header;
+            Assert.That(e.Message, Does.EndWith("(found " + shown + ")"));
+        }
+
         [Test]
         public void OptionalColumnsAreFoundWhereverTheyStandAndAnAbsentOneReadsNull()
         {

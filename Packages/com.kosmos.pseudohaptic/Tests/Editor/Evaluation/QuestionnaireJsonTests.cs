@@ -84,6 +84,16 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void ParseAllOfNoDefinitionIsAFormatErrorNamingTheQuestionnairesAndNullIsTheCallers()
+        {
+            // A study whose embedded definitions are all missing gets the one-line FILE: reason message, not a crash.
+            var e = Assert.Throws<EvaluationFormatException>(() => QuestionnaireJson.ParseAll(new KeyValuePair<string, string>[0]));
+            Assert.That(e.Message, Does.StartWith("questionnaires: "));
+            Assert.That(e.Reason, Does.Contain("no questionnaires"));
+            Assert.That(Assert.Throws<System.ArgumentNullException>(() => QuestionnaireJson.ParseAll(null)).ParamName, Is.EqualTo("namedJson"));
+        }
+
+        [Test]
         public void ParseAllKeepsTheGivenOrderAndRejectsRepeatedIds()
         {
             string a = "{ \"id\": \"a\", \"scale\": { \"min\": 1, \"max\": 5 }, \"items\": [ { \"number\": 1, \"text\": \"A\" } ] }";

@@ -109,6 +109,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             // An empty file would be refused too, but a missing catalog is a programming error and is reported first.
             Assert.That(Assert.Throws<ArgumentNullException>(() => ResponsesCsv.ParseByCondition(
                 new StringReader(""), "R.csv", null, out _)).ParamName, Is.EqualTo("catalog"));
+            Assert.That(Assert.Throws<ArgumentNullException>(() => ResponsesCsv.Parse(
+                new StringReader(rows), "R.csv", null, -1, long.MaxValue, ParticipantLimit.None)).ParamName, Is.EqualTo("catalog"), "before a bad row limit");
             Assert.That(Assert.Throws<ArgumentNullException>(() => ResponsesCsv.ParseByCondition(
                 new StringReader(rows), "R.csv", catalog, out _, int.MaxValue, long.MaxValue, null)).ParamName, Is.EqualTo("limit"));
         }
