@@ -91,6 +91,19 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void WriteWithOpensItsWritersFileToSyncItUnlessToldTheWriterSyncedIt()
+        {
+            // A writer that leaves a folder where its file should be shows whether the file is opened to be synced:
+            // opening it fails (access refused), while the rename without that open fails on a missing source file.
+            Action<string> folderInstead = temp => Directory.CreateDirectory(temp);
+            Assert.Throws<UnauthorizedAccessException>(() => AtomicFile.WriteWith(Path.Combine(dir, "a.csv"), folderInstead), "WriteWith syncs the file");
+            Assert.Throws<UnauthorizedAccessException>(() => AtomicFile.Write(Path.Combine(dir, "b.csv"), false, folderInstead));
+            Assert.Throws<FileNotFoundException>(() => AtomicFile.Write(Path.Combine(dir, "c.csv"), true, folderInstead), "synced by its writer: not opened again");
+            AtomicFile.Durable = false;
+            Assert.Throws<FileNotFoundException>(() => AtomicFile.WriteWith(Path.Combine(dir, "d.csv"), folderInstead), "not durable: not synced");
+        }
+
+        [Test]
         public void CreateDirectoryOfNothingDoesNothing()
         {
             Assert.DoesNotThrow(() => AtomicFile.CreateDirectory(""));
