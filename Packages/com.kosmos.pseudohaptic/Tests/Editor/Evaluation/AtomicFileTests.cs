@@ -160,6 +160,22 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void TheCleanupLeavesALinkToAFolderNamedLikeATemporaryFile()
+        {
+            RequireLinux("symbolic links made with ln");
+            Directory.CreateDirectory(Path.Combine(dir, "target"));
+            string link = Path.Combine(dir, ".ph0123abcd.tmp");
+            using (var ln = System.Diagnostics.Process.Start(new System.Diagnostics.ProcessStartInfo("ln", "-s target " + link) { UseShellExecute = false }))
+            {
+                ln.WaitForExit();
+                if (ln.ExitCode != 0) Assert.Ignore("ln -s failed");
+            }
+            File.WriteAllText(Path.Combine(dir, ".ph4567abcd.tmp"), "half");
+            Assert.That(AtomicFile.RemoveStaleTemporaries(dir), Is.EqualTo(1), "only the file; a folder (through a link) is not a temporary file");
+            Assert.That(Directory.Exists(link), Is.True);
+        }
+
+        [Test]
         public void ARenameIntoAMissingFolderGivesUpWithItsError()
         {
             string temp = AtomicFile.TemporaryPath(dir);
