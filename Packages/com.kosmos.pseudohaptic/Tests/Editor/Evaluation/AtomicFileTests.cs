@@ -197,22 +197,27 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             // The destination appears (or is replaced) between the writer's check and its rename: the rename tries again.
             AtomicFile.Durable = false; // many rounds, quickly; the syncs play no part in the race
-            for (int round = 0; round < 40; round++)
+            for (int round = 0; round < 200; round++)
             {
                 string path = Path.Combine(dir, "r" + round + ".csv");
                 var errors = new List<Exception>();
                 var threads = new List<Thread>();
-                for (int k = 0; k < 6; k++)
+                using (var go = new ManualResetEventSlim(false))
                 {
-                    int writer = k;
-                    threads.Add(new Thread(() =>
+                    for (int k = 0; k < 6; k++)
                     {
-                        try { AtomicFile.WriteAllText(path, "writer " + writer); }
-                        catch (Exception e) { lock (errors) errors.Add(e); }
-                    }));
+                        int writer = k;
+                        threads.Add(new Thread(() =>
+                        {
+                            go.Wait(); // all at once: the race this is about
+                            try { AtomicFile.WriteAllText(path, "writer " + writer); }
+                            catch (Exception e) { lock (errors) errors.Add(e); }
+                        }));
+                    }
+                    foreach (var t in threads) t.Start();
+                    go.Set();
+                    foreach (var t in threads) t.Join();
                 }
-                foreach (var t in threads) t.Start();
-                foreach (var t in threads) t.Join();
                 Assert.That(errors, Is.Empty, "round " + round);
                 Assert.That(File.ReadAllText(path), Does.StartWith("writer "));
             }
