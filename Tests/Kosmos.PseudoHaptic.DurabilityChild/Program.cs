@@ -11,6 +11,10 @@ using Kosmos.PseudoHaptic.Evaluation;
 //       Prints "ready TRIALS ITEMS" (answers already in the files), then for every acknowledged answer
 //       "ack trial ROW" or "ack item ROW" (the exact CSV row), then "done". With --marker, before printing an
 //       acknowledgement it opens DIR/.ack-N (which does not exist), a mark in an strace log.
+//   atomic DIR
+//       AtomicFile's other ways in, each followed by a mark (an open of DIR/.ack-N, which does not exist): creates
+//       DIR/made/deeper (both missing), writes DIR/made/deeper/with.csv through WriteWith (its writer does not sync),
+//       then DIR/made/deeper/text.csv through WriteAllText.
 //   bench DIR ANSWERS
 //       times ANSWERS answers written one by one as a session writes them (the whole growing file each time),
 //       synced (AtomicFile.Durable) and unsynced, and prints one line per mode.
@@ -26,8 +30,9 @@ static class Program
         if (args.Length >= 4 && args[0] == "participant")
             return Participant(args[1], args[2], int.Parse(args[3], CultureInfo.InvariantCulture),
                 args.Length >= 5 && args[4] != "--marker" ? int.Parse(args[4], CultureInfo.InvariantCulture) : 4, args.Contains("--marker"));
+        if (args.Length == 2 && args[0] == "atomic") return Atomic(args[1]);
         if (args.Length == 3 && args[0] == "bench") return Bench(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
-        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | bench DIR ANSWERS");
+        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | atomic DIR | bench DIR ANSWERS");
         return 2;
     }
 
@@ -122,6 +127,25 @@ static class Program
         }
         stdout.WriteLine("done");
         stdout.Flush();
+        return 0;
+    }
+
+    static int Atomic(string dir)
+    {
+        int marks = 0;
+        void Mark()
+        {
+            try { using (File.OpenRead(Path.Combine(dir, ".ack-" + (++marks).ToString(CultureInfo.InvariantCulture)))) { } }
+            catch (FileNotFoundException) { }
+        }
+        string deeper = Path.Combine(dir, "made", "deeper");
+        AtomicFile.CreateDirectory(deeper);
+        Mark();
+        AtomicFile.WriteWith(Path.Combine(deeper, "with.csv"), temp => File.WriteAllText(temp, "with\n"));
+        Mark();
+        AtomicFile.WriteAllText(Path.Combine(deeper, "text.csv"), "text\n");
+        Mark();
+        Console.WriteLine("done");
         return 0;
     }
 

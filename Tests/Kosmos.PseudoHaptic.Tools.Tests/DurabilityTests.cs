@@ -88,6 +88,106 @@ public class DurabilityTests
         return (acks.Length, StraceCheck.Violations(File.ReadAllLines(trace), dir, targets));
     }
 
+    [Test]
+    public void UnderStraceCreatedFoldersAndWriteWithAreSyncedAndEachTemporaryFileExactlyOnce()
+    {
+        string strace = RequireStrace();
+        var synced = AtomicRun(strace, Path.Combine(_dir, "synced"), unsynced: false);
+        Assert.That(synced, Is.Empty);
+
+        // The check can fail: the same calls with the syncs switched off break every part of it.
+        var unsynced = AtomicRun(strace, Path.Combine(_dir, "unsynced"), unsynced: true);
+        Assert.That(unsynced.Count(v => v.Contains("folder above it not fsynced")), Is.EqualTo(2), string.Join("\n", unsynced));
+        Assert.That(unsynced.Count(v => v.Contains("fsynced 0 times")), Is.EqualTo(2), string.Join("\n", unsynced));
+        Assert.That(unsynced.Count(v => v.Contains("folder not fsynced")), Is.EqualTo(2), string.Join("\n", unsynced));
+    }
+
+    /// <summary>
+    /// Runs the child's "atomic" mode under strace; returns what is wrong: a folder it created whose parent was not
+    /// fsynced after the mkdir and before the first mark; for each of the two files, a temporary file not fsynced exactly
+    /// once between its creation and its rename (data synced, and not twice), or the folder not fsynced after the rename
+    /// and before its mark (StraceCheck).
+    /// </summary>
+    List<string> AtomicRun(string strace, string dir, bool unsynced)
+    {
+        Directory.CreateDirectory(dir);
+        string trace = Path.Combine(_dir, (unsynced ? "unsynced" : "synced") + "-atomic.strace");
+        var info = new ProcessStartInfo(strace)
+        {
+            RedirectStandardOutput = true,
+            RedirectStandardError = true,
+            UseShellExecute = false,
+            ArgumentList =
+            {
+                "-f", "-o", trace, "-e", "trace=fsync,fdatasync,rename,renameat,renameat2,openat,link,linkat,mkdir,mkdirat",
+                "dotnet", ChildDll, "atomic", dir,
+            },
+        };
+        if (unsynced) info.Environment["PSEUDOHAPTIC_UNSYNCED"] = "1";
+        using var p = Process.Start(info)!;
+        string stdout = p.StandardOutput.ReadToEnd();
+        string stderr = p.StandardError.ReadToEnd();
+        Assert.That(p.WaitForExit(120_000), Is.True, "the traced child hung");
+        if (p.ExitCode != 0 && stderr.Contains("ptrace", StringComparison.OrdinalIgnoreCase))
+            Assert.Ignore("strace cannot trace here (ptrace refused): " + stderr.Trim());
+        Assert.That(p.ExitCode, Is.Zero, stderr);
+        Assert.That(stdout, Does.Contain("done"));
+        string[] lines = File.ReadAllLines(trace);
+        string deeper = Path.Combine(dir, "made", "deeper");
+        // The two files' marks are the second and the third: the first (after CreateDirectory) is matched to no file.
+        var violations = StraceCheck.Violations(lines.Where(l => !l.Contains("/.ack-1\"", StringComparison.Ordinal)), dir,
+            new[] { Path.Combine(deeper, "with.csv"), Path.Combine(deeper, "text.csv") });
+
+        var calls = StraceCheck.Parse(lines);
+        var fdPath = new Dictionary<long, string>();
+        var events = new List<(string kind, string path)>(); // mkdir, sync, create, move (source), mark
+        foreach (var c in calls)
+        {
+            var paths = Regex.Matches(c.Args, "\"((?:[^\"\\\\]|\\\\.)*)\"").Select(q => q.Groups[1].Value).ToArray();
+            if (paths.Length == 0 && c.Name != "fsync" && c.Name != "fdatasync") continue;
+            switch (c.Name)
+            {
+                case "mkdir":
+                case "mkdirat":
+                    if (c.Result == 0) events.Add(("mkdir", paths[0].TrimEnd('/')));
+                    break;
+                case "openat":
+                    if (c.Result >= 0)
+                    {
+                        fdPath[c.Result] = paths[0];
+                        if (c.Args.Contains("O_CREAT", StringComparison.Ordinal)) events.Add(("create", paths[0]));
+                    }
+                    else if (Path.GetFileName(paths[0]).StartsWith(".ack-", StringComparison.Ordinal)) events.Add(("mark", paths[0]));
+                    break;
+                case "fsync":
+                case "fdatasync":
+                    if (c.Result == 0 && long.TryParse(c.Args.Split(',')[0].Trim(), out long fd) && fdPath.TryGetValue(fd, out string? synced))
+                        events.Add(("sync", synced.TrimEnd('/')));
+                    break;
+                default:
+                    if (c.Result == 0 && paths.Length >= 2) events.Add(("move", paths[0]));
+                    break;
+            }
+        }
+        int firstMark = events.FindIndex(e => e.kind == "mark");
+        foreach (string made in new[] { Path.Combine(dir, "made"), deeper })
+        {
+            int mkdir = events.FindIndex(e => e.kind == "mkdir" && e.path == made);
+            if (mkdir < 0 || firstMark < mkdir) { violations.Add(made + ": no mkdir before the first mark"); continue; }
+            string parent = Path.GetDirectoryName(made)!;
+            if (!events.Skip(mkdir + 1).Take(firstMark - mkdir - 1).Any(e => e.kind == "sync" && e.path == parent))
+                violations.Add(made + ": the folder above it not fsynced after its mkdir and before the mark");
+        }
+        foreach (var move in events.Where(e => e.kind == "move" && Path.GetFileName(e.path).StartsWith(".ph", StringComparison.Ordinal)))
+        {
+            int at = events.IndexOf(move);
+            int created = events.FindLastIndex(at, e => e.kind == "create" && e.path == move.path);
+            int syncs = events.Skip(created + 1).Take(at - created - 1).Count(e => e.kind == "sync" && e.path == move.path);
+            if (syncs != 1) violations.Add(Path.GetFileName(move.path) + ": the temporary file fsynced " + syncs + " times before its rename, not once");
+        }
+        return violations;
+    }
+
     static string RequireStrace()
     {
         if (!OperatingSystem.IsLinux()) Assert.Ignore("the syscall-order test runs on Linux (strace)");

@@ -154,8 +154,114 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void ABadRetryDelayIsRefusedNamingIt()
         {
-            var e = Assert.Throws<ArgumentOutOfRangeException>(() => new SaveQueue(false, double.NaN));
-            Assert.That(e.ParamName, Is.EqualTo("retrySeconds"));
+            foreach (double bad in new[] { double.NaN, -0.001, double.PositiveInfinity, double.NegativeInfinity })
+            {
+                var e = Assert.Throws<ArgumentOutOfRangeException>(() => new SaveQueue(false, bad), bad.ToString());
+                Assert.That(e.ParamName, Is.EqualTo("retrySeconds"));
+                Assert.That(e.Message, Does.Contain("retrySeconds must be finite"));
+            }
+            Assert.That(new SaveQueue(false, 0).RetrySeconds, Is.Zero, "no delay is a valid delay");
+        }
+
+        [Test]
+        public void ANullWriteIsRefusedNamingIt()
+        {
+            var queue = new SaveQueue(false);
+            var e = Assert.Throws<ArgumentNullException>(() => queue.Enqueue(null, null, null));
+            Assert.That(e.ParamName, Is.EqualTo("write"));
+            Assert.That(queue.Pending, Is.Zero);
+        }
+
+        [Test]
+        public void PendingCountsAWriteDoneButNotYetAcknowledged()
+        {
+            var queue = new SaveQueue(background: false);
+            var seen = new List<int>();
+            queue.Enqueue(() => { }, () => seen.Add(queue.Pending), null);
+            queue.Enqueue(() => { }, () => seen.Add(queue.Pending), null);
+            Assert.That(queue.Pending, Is.EqualTo(2));
+            Assert.That(queue.Pump(), Is.EqualTo(2));
+            // Both are written before the first acknowledgement: during it, the second is done and not yet delivered.
+            Assert.That(seen, Is.EqualTo(new[] { 1, 0 }));
+        }
+
+        [Test]
+        public void TheWriterIsABackgroundThreadNamedAsDocumentedAndDisposeStopsIt()
+        {
+            var queue = new SaveQueue(background: true);
+            Thread writer = null;
+            queue.Enqueue(() => writer = Thread.CurrentThread, null, null);
+            Assert.That(queue.Drain(10000), Is.True);
+            Assert.That(writer.IsBackground, Is.True, "a background thread does not keep the application alive");
+            Assert.That(writer.Name, Is.EqualTo("Kosmos.PseudoHaptic.SaveQueue"));
+            queue.Dispose();
+            Assert.That(writer.Join(10000), Is.True, "Dispose wakes the waiting writer and it ends");
+        }
+
+        [Test]
+        public void AnErrorWithoutAMessageIsNamedByItsType()
+        {
+            var queue = new SaveQueue(background: false);
+            string failed = null;
+            queue.Enqueue(() => throw new IOException(""), null, e => failed = e);
+            queue.Pump();
+            Assert.That(failed, Is.EqualTo("IOException"));
+            Assert.That(queue.LastError, Is.EqualTo("IOException"));
+        }
+
+        [Test]
+        public void DrainReturnsAsSoonAsAllIsWrittenOrAWriteFailedNotAtItsTimeout()
+        {
+            var queue = new SaveQueue(background: true);
+            var watch = System.Diagnostics.Stopwatch.StartNew();
+            queue.Enqueue(() => { }, null, null);
+            Assert.That(queue.Drain(20000), Is.True);
+            Assert.That(watch.ElapsedMilliseconds, Is.LessThan(10000), "Drain waited after the queue was empty");
+
+            queue.Enqueue(() => throw new IOException("full"), null, null);
+            queue.Enqueue(() => { }, null, null); // held behind the failure
+            watch.Restart();
+            Assert.That(queue.Drain(20000), Is.False);
+            Assert.That(watch.ElapsedMilliseconds, Is.LessThan(10000), "Drain waited for a write held behind a failure");
+            Assert.That(queue.LastError, Is.EqualTo("full"));
+            queue.Dispose();
+        }
+
+        [Test]
+        public void DrainWithNoTimeWhileAWriteIsUnderWayReturnsAtOnce()
+        {
+            var queue = new SaveQueue(background: true);
+            using (var started = new ManualResetEventSlim(false))
+            using (var gate = new ManualResetEventSlim(false))
+            {
+                queue.Enqueue(() => { started.Set(); gate.Wait(20000); }, null, null);
+                Assert.That(started.Wait(10000), Is.True);
+                bool? drained = null;
+                var run = System.Threading.Tasks.Task.Run(() => drained = queue.Drain(0));
+                try
+                {
+                    Assert.That(run.Wait(5000), Is.True, "Drain(0) waited for the write");
+                    Assert.That(drained, Is.False, "not written yet");
+                }
+                finally
+                {
+                    gate.Set();
+                }
+                Assert.That(queue.Drain(10000), Is.True);
+            }
+            queue.Dispose();
+        }
+
+        [Test]
+        public void DrainAlsoWaitsForAWriteQueuedByAnAcknowledgement()
+        {
+            var queue = new SaveQueue(background: true);
+            bool indexWritten = false;
+            queue.Enqueue(() => { }, () => queue.Enqueue(() => { Thread.Sleep(20); Volatile.Write(ref indexWritten, true); }, null, null), null);
+            Assert.That(queue.Drain(10000), Is.True, "the index after its file is written too");
+            Assert.That(Volatile.Read(ref indexWritten), Is.True);
+            Assert.That(queue.Pending, Is.Zero);
+            queue.Dispose();
         }
     }
 }
