@@ -60,21 +60,19 @@ public class DurabilityTests
         Assert.That(unsyncedViolations.Count(v => v.Contains("folder not fsynced")), Is.EqualTo(16), string.Join("\n", unsyncedViolations));
     }
 
-    (int acks, List<string> violations) TracedRun(string strace, string dir, bool unsynced)
+    /// <summary>Runs the durability child with <paramref name="childArgs"/> under strace, writing the calls named in
+    /// <paramref name="syscalls"/> to <paramref name="trace"/> (with the syncs switched off when <paramref name="unsynced"/>);
+    /// returns its standard output. Ignored where strace cannot trace; fails when the child hangs or fails.</summary>
+    static string RunChildUnderStrace(string strace, string trace, bool unsynced, string syscalls, params string[] childArgs)
     {
-        Directory.CreateDirectory(dir);
-        string trace = Path.Combine(_dir, (unsynced ? "unsynced" : "synced") + ".strace");
         var info = new ProcessStartInfo(strace)
         {
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             UseShellExecute = false,
-            ArgumentList =
-            {
-                "-f", "-o", trace, "-e", "trace=fsync,fdatasync,rename,renameat,renameat2,openat,link,linkat",
-                "dotnet", ChildDll, "participant", dir, "P1", "7", "2", "--marker",
-            },
+            ArgumentList = { "-f", "-o", trace, "-e", "trace=" + syscalls, "dotnet", ChildDll },
         };
+        foreach (string a in childArgs) info.ArgumentList.Add(a);
         if (unsynced) info.Environment["PSEUDOHAPTIC_UNSYNCED"] = "1";
         using var p = Process.Start(info)!;
         string stdout = p.StandardOutput.ReadToEnd();
@@ -83,6 +81,15 @@ public class DurabilityTests
         if (p.ExitCode != 0 && stderr.Contains("ptrace", StringComparison.OrdinalIgnoreCase))
             Assert.Ignore("strace cannot trace here (ptrace refused): " + stderr.Trim());
         Assert.That(p.ExitCode, Is.Zero, stderr);
+        return stdout;
+    }
+
+    (int acks, List<string> violations) TracedRun(string strace, string dir, bool unsynced)
+    {
+        Directory.CreateDirectory(dir);
+        string trace = Path.Combine(_dir, (unsynced ? "unsynced" : "synced") + ".strace");
+        string stdout = RunChildUnderStrace(strace, trace, unsynced, "fsync,fdatasync,rename,renameat,renameat2,openat,link,linkat",
+            "participant", dir, "P1", "7", "2", "--marker");
         string[] acks = stdout.Split('\n').Where(l => l.StartsWith("ack ", StringComparison.Ordinal)).ToArray();
         var targets = acks.Select(a => Path.Combine(dir, a.StartsWith("ack trial ", StringComparison.Ordinal) ? "trials.csv" : "responses.csv")).ToList();
         return (acks.Length, StraceCheck.Violations(File.ReadAllLines(trace), dir, targets));
@@ -112,25 +119,8 @@ public class DurabilityTests
     {
         Directory.CreateDirectory(dir);
         string trace = Path.Combine(_dir, (unsynced ? "unsynced" : "synced") + "-atomic.strace");
-        var info = new ProcessStartInfo(strace)
-        {
-            RedirectStandardOutput = true,
-            RedirectStandardError = true,
-            UseShellExecute = false,
-            ArgumentList =
-            {
-                "-f", "-o", trace, "-e", "trace=fsync,fdatasync,rename,renameat,renameat2,openat,link,linkat,mkdir,mkdirat",
-                "dotnet", ChildDll, "atomic", dir,
-            },
-        };
-        if (unsynced) info.Environment["PSEUDOHAPTIC_UNSYNCED"] = "1";
-        using var p = Process.Start(info)!;
-        string stdout = p.StandardOutput.ReadToEnd();
-        string stderr = p.StandardError.ReadToEnd();
-        Assert.That(p.WaitForExit(120_000), Is.True, "the traced child hung");
-        if (p.ExitCode != 0 && stderr.Contains("ptrace", StringComparison.OrdinalIgnoreCase))
-            Assert.Ignore("strace cannot trace here (ptrace refused): " + stderr.Trim());
-        Assert.That(p.ExitCode, Is.Zero, stderr);
+        string stdout = RunChildUnderStrace(strace, trace, unsynced, "fsync,fdatasync,rename,renameat,renameat2,openat,link,linkat,mkdir,mkdirat",
+            "atomic", dir);
         Assert.That(stdout, Does.Contain("done"));
         string[] lines = File.ReadAllLines(trace);
         string deeper = Path.Combine(dir, "made", "deeper");
