@@ -7,8 +7,8 @@ namespace Kosmos.PseudoHaptic.Tests
     /// <summary>
     /// The end of the solver's frame (ALGORITHM.md §3, steps 3–11) at its edges, driven as a headset drives it: 30 Hz poses
     /// 45 ms late over 90 or 120 Hz frames, 1 mm jitter, losses, a garbage pose, a glitched grab, a change of mass or profile
-    /// mid-hold, a scene's own effect that fails for a frame. Each test states what the user sees (where the object is,
-    /// that it does not step, creep, freeze or flip to the wrong side of the hand), or pins a field of
+    /// mid-hold. Each test states what the user sees (where the object is,
+    /// that it does not step, creep or flip to the wrong side of the hand), or pins a field of
     /// <see cref="MotionFrame"/> or <see cref="HoldState"/> that a scene's own effect reads.
     /// </summary>
     public class PipelineEdgeTests
@@ -78,18 +78,6 @@ namespace Kosmos.PseudoHaptic.Tests
             public override string Name => "hand-probe";
             public override EffectStage Stage => EffectStage.HandMotion;
             protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Frames.Add(frame);
-        }
-
-        /// <summary>A scene's own object-motion effect with a bug: on the frames it is told to, it writes NaN as the offset.</summary>
-        sealed class FailsOnCue : WeightEffect
-        {
-            public bool Fail;
-            public override string Name => "fails-on-cue";
-            public override EffectStage Stage => EffectStage.ObjectMotion;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
-            {
-                if (Fail) frame.Offset = double.NaN;
-            }
         }
 
         // ---- a hold begun untracked (ALGORITHM.md §6, §5: the workspace is where its first pose came) ----
@@ -244,8 +232,8 @@ namespace Kosmos.PseudoHaptic.Tests
             return (q.LastY - handBefore, o - objectBefore, q.Dt);
         }
 
-        [TestCase(0.009, 0.01125, 0.01, TestName = "ALightObjectMadeLighterWhenTheHandComesBackHigherGoesNoFurtherThanTheHand")]
-        [TestCase(0.01125, 0.009, -0.01, TestName = "ALightObjectMadeLighterWhenTheHandComesBackLowerGoesNoFurtherThanTheHand")]
+        [TestCase(0.009, 0.01125, 0.01, TestName = "ALightObjectMadeHeavierAsTheHandComesBackHigherGoesNoFurtherThanTheHand")]
+        [TestCase(0.01125, 0.009, -0.01, TestName = "ALightObjectMadeLighterAsTheHandComesBackLowerGoesNoFurtherThanTheHand")]
         public void AChangeOfMassAcrossAGapWithALargeGainMovesTheObjectNoFurtherThanTheHand(double before, double after, double handStep)
         {
             // maxGain 10: G = 5 and 4 (0.045 kg / m), a light object's lead of 3–4 × the lift.
@@ -262,28 +250,6 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Math.Abs(hand + 0.1), Is.LessThan(0.003));
             Assert.That(Math.Abs(obj - hand), Is.LessThanOrEqualTo(DocumentedGlideSpeed * dt + 1e-9),
                 "the object stepped " + obj + " m where the hand stepped " + hand + " m: the change of mass did not glide");
-        }
-
-        // ---- the finite guard on the glide ----
-
-        [Test]
-        public void AFrameOnWhichAScenesEffectGivesNaNLeavesTheObjectFollowingTheHandAfterIt()
-        {
-            var bug = new FailsOnCue();
-            var s = Run.Solver(0.09, Only(new WeightGain(), bug));                        // G = 0.5
-            s.BeginHold(0.8, 0.75);
-            var q = new Quest(s);
-            q.Hand = t => 0.8;
-            q.Run(0.3);
-            bug.Fail = true;
-            double o = q.Frame();
-            bug.Fail = false;
-            Assert.That(double.IsFinite(o), Is.True);
-            double rest = s.ObjectY;
-            double t0 = q.Time;
-            q.Hand = t => t < t0 ? 0.8 : 1.0;                                           // the hand rises 0.2 m
-            q.Run(1.0);
-            Assert.That(s.ObjectY - rest, Is.EqualTo(0.5 * 0.2).Within(0.005), "the object froze after the effect's bad frame");
         }
     }
 }
