@@ -1,0 +1,255 @@
+using System;
+using System.Collections.Generic;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// The end of the solver's frame (ALGORITHM.md §3, steps 3–11) at its edges, driven as a headset drives it: 30 Hz poses
+    /// 45 ms late over 90 or 120 Hz frames, 1 mm jitter, losses, a garbage pose, a glitched grab, a change of mass or profile
+    /// mid-hold. Each test states what the user sees (where the object is,
+    /// that it does not step, creep or flip to the wrong side of the hand), or pins a field of
+    /// <see cref="MotionFrame"/> or <see cref="HoldState"/> that a scene's own effect reads.
+    /// </summary>
+    public class PipelineEdgeTests
+    {
+        /// <summary>The glide speed ALGORITHM.md states (§3 step 9, §5): 0.3 m/s.</summary>
+        const double DocumentedGlideSpeed = 0.3;
+
+        static WeightProfile Only(params WeightEffect[] effects) => new WeightProfile("test", effects);
+
+        /// <summary>Quest-like poses: the hand at pose time t is <see cref="Hand"/>(t) plus jitter; a frame at render time T
+        /// shows the newest pose taken at or before T − latency.</summary>
+        sealed class Quest
+        {
+            public readonly WeightSolver Solver;
+            public double FrameRate = 90, PoseRate = 30, Latency = 0.045, Jitter = 0.001;
+            public Func<double, double> Hand = t => 1.0;
+            public bool Tracked = true;
+            public double Time;
+            public double LastY = double.NaN, PrevPoseY = double.NaN;
+            public bool NewPose;
+            double _lastPoseTime = double.NaN;
+            public readonly List<double> Objects = new List<double>();
+
+            public Quest(WeightSolver solver) { Solver = solver; }
+
+            static double Noise(int k)
+            {
+                double x = Math.Sin(k * 12.9898 + 78.233) * 43758.5453;
+                return 2 * (x - Math.Floor(x)) - 1;
+            }
+
+            public double Dt => 1 / FrameRate;
+
+            /// <summary>The pose the headset shows at render time <paramref name="time"/>: (height, pose time).</summary>
+            public (double Y, double T) PoseAt(double time)
+            {
+                int k = (int)Math.Floor((time - Latency) * PoseRate);
+                double pt = k / PoseRate;
+                return (Hand(pt) + Jitter * Noise(k), pt);
+            }
+
+            public double Frame()
+            {
+                Time += Dt;
+                var (y, pt) = PoseAt(Time);
+                NewPose = Tracked && !(pt == _lastPoseTime);
+                HandSample sample;
+                if (Tracked)
+                {
+                    if (NewPose) { PrevPoseY = LastY; _lastPoseTime = pt; }
+                    LastY = y;
+                    sample = new HandSample(y, true, true, pt);
+                }
+                else sample = HandSample.Lost;
+                double o = Solver.Step(sample, Dt);
+                Objects.Add(o);
+                return o;
+            }
+
+            public void Run(double seconds) { for (int n = (int)Math.Round(seconds * FrameRate); n > 0; n--) Frame(); }
+        }
+
+        /// <summary>Records the frame as the hand-motion stage sees it (after the estimator and the hand filter).</summary>
+        sealed class HandProbe : WeightEffect
+        {
+            public readonly List<MotionFrame> Frames = new List<MotionFrame>();
+            public override string Name => "hand-probe";
+            public override EffectStage Stage => EffectStage.HandMotion;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Frames.Add(frame);
+        }
+
+        // ---- a hold begun untracked (ALGORITHM.md §6, §5: the workspace is where its first pose came) ----
+
+        [Test]
+        public void AHoldBegunUntrackedJudgesGarbagePosesAgainstTheWorkspaceOfItsFirstPose()
+        {
+            var s = Run.Solver(0.5);
+            s.BeginHold(double.NaN, 0.9);
+            var q = new Quest(s) { Tracked = false };
+            q.Run(0.2);
+            q.Tracked = true;
+            q.Run(0.5);                    // the first pose anchors the hold at 1.0 m; the hand rests there
+            q.Tracked = false;
+            q.Run(5);                      // lost for 5 s: 10 m/s could reach 50 m
+            double before = s.ObjectY;
+            q.Tracked = true;
+            q.Hand = t => 31.0;            // a pose 30 m from where the hold began, reported tracked: no hand's
+            q.Jitter = 0;
+            for (int i = 0; i < 10; i++)
+                Assert.That(q.Frame(), Is.EqualTo(before), "frame " + i + ": a pose 30 m away moved the object");
+        }
+
+        // ---- the hand filter's frame (MotionFrame.HandFiltered, HandBefore/After/Delta: public to a scene's effects) ----
+
+        [Test]
+        public void WithAHandFilterEffectsSeeTheFilteredHandItsStepAndThatItIsFiltered()
+        {
+            var probe = new HandProbe();
+            var s = Run.Solver(0.09, Only(new WeightGain(), probe).WithHandFilter(new ExponentialSmoothing(0.05)));
+            s.BeginHold(1.0, 0.95);
+            var q = new Quest(s) { Hand = t => t < 0.3 ? 1.0 : Math.Min(1.3, 1.0 + (t - 0.3)) };
+            q.Run(0.4);
+            q.Tracked = false;
+            q.Run(0.2);
+            q.Tracked = true;
+            q.Run(0.6);
+            Assert.That(probe.Frames.Count, Is.GreaterThan(100));
+            double before = 1.0;
+            foreach (var f in probe.Frames)
+            {
+                Assert.That(f.HandFiltered, Is.True, "a filtered hand is marked filtered");
+                Assert.That(f.HandBefore, Is.EqualTo(before), "the step starts where the last frame's hand ended");
+                Assert.That(f.HandDelta, Is.EqualTo(f.HandAfter - f.HandBefore), "HandDelta is the filtered hand's step");
+                Assert.That(Math.Abs(f.HandDelta), Is.LessThan(0.05), "a 1 m/s hand, smoothed, steps less than 5 cm a frame");
+                before = f.HandAfter;
+            }
+        }
+
+        // ---- the offset ceiling, the negative side (a light object leads by at most the ceiling) ----
+
+        [Test]
+        public void ALightObjectLeadingFarWhenTheCorrectionComesInStaysAboveTheHandWithinTheCeiling()
+        {
+            var correction = new OffsetCorrection();
+            var without = Only(new WeightGain());
+            var with = Only(new WeightGain(), correction);
+            var model = WeightModel.FromMass(0.015);              // 15 g: G = 3, a lead of 2 × the lift
+            var s = new WeightSolver(model, without);
+            s.BeginHold(0.8, 0.8);
+            var q = new Quest(s) { Hand = t => t < 0.3 ? 0.8 : Math.Min(1.1, 0.8 + (t - 0.3) * 0.5) };
+            q.Run(1.4);
+            Assert.That(s.ObjectY - q.LastY, Is.GreaterThan(0.5), "without the correction the 15 g object leads by 0.6 m");
+            s.Configure(model, with, s.StandardSpeed);            // the scene turns the offset correction on mid-hold
+            for (int i = 0; i < 200; i++)
+            {
+                double o = q.Frame();
+                Assert.That(o - q.LastY, Is.GreaterThanOrEqualTo(0), "frame " + i + ": the light object shows below the hand");
+                Assert.That(o - q.LastY, Is.LessThanOrEqualTo(correction.Ceiling), "frame " + i + ": beyond the ceiling");
+            }
+        }
+
+        // ---- a glitched grab (ALGORITHM.md §2: the base, and the hold's start, are read on the median) ----
+
+        [Test]
+        public void AGrabOnAGlitchedPoseStartsTheHoldWhereTheHandReallyWas()
+        {
+            var s = Run.Solver(0.5);
+            s.BeginHold(1.03, 0.98, 0.0);                         // the grab's own pose 3 cm high: a glitch
+            var q = new Quest(s) { Hand = t => 1.0, Jitter = 0, Time = 0.045 + 1.0 / 30 - 0.005 };
+            while (s.State.AnchorPending) q.Frame();              // two more poses: the median of three is 1.0
+            Assert.That(s.State.Base, Is.EqualTo(1.0).Within(1e-12), "the lift is measured from the median");
+            Assert.That(s.State.StartY, Is.EqualTo(1.0).Within(1e-12), "the hold starts where the hand really was");
+        }
+
+        // ---- the glide's slope where the height deceleration shapes the carried lift ----
+
+        [Test]
+        public void UnderHeightDecelerationAFastLiftGlidesNothingTheObjectMovesOnlyWithNewPoses()
+        {
+            var s = Run.Solver(0.09, Only(new WeightGain(), new HeightDeceleration()));   // G = 0.5
+            s.BeginHold(0.8, 0.75);
+            var q = new Quest(s) { FrameRate = 120, Hand = t => t < 0.3 ? 0.8 : Math.Min(1.4, 0.8 + (t - 0.3) * 2.5) };
+            double last = s.ObjectY;
+            for (int i = 0; i < 200; i++)
+            {
+                double o = q.Frame();
+                if (!q.NewPose)
+                    Assert.That(o, Is.EqualTo(last), "frame " + i + ": the object moved on a frame the hand did not");
+                last = o;
+            }
+            Assert.That(q.LastY - s.ObjectY, Is.GreaterThan(0.2), "the 0.6 m lift leaves the object hanging below");
+        }
+
+        [Test]
+        public void UnderHeightDecelerationAMassThatGrowsMidLiftNeverDropsTheObjectFasterThanItGlides()
+        {
+            var profile = Only(new WeightGain(), new HeightDeceleration());
+            var s = Run.Solver(0.09, profile);                                            // G = 0.5
+            s.BeginHold(0.8, 0.75);
+            var q = new Quest(s) { FrameRate = 90, Hand = t => t < 0.3 ? 0.8 : Math.Min(1.4, 0.8 + (t - 0.3) * 2.0) };
+            double last = s.ObjectY;
+            q.LastY = 0.8;
+            bool changed = false;
+            for (int i = 0; i < 120; i++)
+            {
+                if (!changed && q.Time > 0.5 && q.PoseAt(q.Time + q.Dt).T != q.PoseAt(q.Time).T)
+                {
+                    s.Configure(WeightModel.FromMass(0.3), profile, s.StandardSpeed);   // G = 0.15 on a frame the hand rises
+                    changed = true;
+                }
+                double handBefore = q.LastY, o = q.Frame();
+                if (q.LastY >= handBefore)
+                    Assert.That(o - last, Is.GreaterThanOrEqualTo(-DocumentedGlideSpeed * q.Dt - 1e-9),
+                        "frame " + i + ": the object dropped faster than a change of mass glides while the hand rose");
+                last = o;
+            }
+            Assert.That(changed, Is.True);
+            Assert.That(s.Gain, Is.EqualTo(0.15).Within(1e-9));
+        }
+
+        // ---- across a gap: the object goes no further than the hand went; a change of mass glides ----
+
+        /// <summary>A hold lifted to <paramref name="lift"/>, lost for 0.3 s while the hand moves by <paramref name="handStep"/>,
+        /// and made of <paramref name="massAfter"/> on the frame it comes back. Returns (hand step, object step) of that frame.</summary>
+        static (double Hand, double Object, double Dt) ChangeOfMassAcrossAGap(double massBefore, double massAfter, double lift, double handStep, double maxGain)
+        {
+            var profile = new WeightProfile("test", new WeightEffect[] { new WeightGain() }, new SolverLimits(maxGain: maxGain));
+            var s = Run.Solver(massBefore, profile);
+            s.BeginHold(1.0, 1.0);
+            double top = 1.0 + lift;
+            var q = new Quest(s) { Hand = t => t < 0.3 ? 1.0 : Math.Min(top, 1.0 + (t - 0.3) * 0.5) };
+            q.Run(0.3 + lift / 0.5 + 0.5);
+            q.Tracked = false;
+            q.Hand = t => top + handStep;
+            q.Run(0.3);
+            double handBefore = q.LastY, objectBefore = s.ObjectY;
+            s.Configure(WeightModel.FromMass(massAfter), profile, s.StandardSpeed);
+            q.Tracked = true;
+            double o = q.Frame();
+            Assert.That(q.NewPose, Is.True);
+            return (q.LastY - handBefore, o - objectBefore, q.Dt);
+        }
+
+        [TestCase(0.009, 0.01125, 0.01, TestName = "ALightObjectMadeHeavierAsTheHandComesBackHigherGoesNoFurtherThanTheHand")]
+        [TestCase(0.01125, 0.009, -0.01, TestName = "ALightObjectMadeLighterAsTheHandComesBackLowerGoesNoFurtherThanTheHand")]
+        public void AChangeOfMassAcrossAGapWithALargeGainMovesTheObjectNoFurtherThanTheHand(double before, double after, double handStep)
+        {
+            // maxGain 10: G = 5 and 4 (0.045 kg / m), a light object's lead of 3–4 × the lift.
+            var (hand, obj, dt) = ChangeOfMassAcrossAGap(before, after, 0.1, handStep, 10);
+            Assert.That(Math.Abs(hand - handStep), Is.LessThan(0.003));
+            Assert.That(Math.Abs(obj), Is.LessThanOrEqualTo(Math.Abs(hand) + DocumentedGlideSpeed * dt + 1e-9),
+                "the object stepped " + obj + " m where the hand stepped " + hand + " m");
+        }
+
+        [Test]
+        public void AHeavyObjectMadeTheStandardWeightAsTheHandComesBackLowerStepsWithTheHandAndGlides()
+        {
+            var (hand, obj, dt) = ChangeOfMassAcrossAGap(0.09, PhysicalConstants.StandardMassKg, 0.3, -0.1, 3);
+            Assert.That(Math.Abs(hand + 0.1), Is.LessThan(0.003));
+            Assert.That(Math.Abs(obj - hand), Is.LessThanOrEqualTo(DocumentedGlideSpeed * dt + 1e-9),
+                "the object stepped " + obj + " m where the hand stepped " + hand + " m: the change of mass did not glide");
+        }
+    }
+}
