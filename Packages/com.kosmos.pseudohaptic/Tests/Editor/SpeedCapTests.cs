@@ -53,9 +53,10 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
-        public void MotionTrackingHidIsNoStrain()
+        public void MotionTrackingHidIsNoStrain([Values(0.3, 5)] double massKg)
         {
-            var s = Run.Solver(5, new WeightProfile("cap", new WeightEffect[] { new WeightGain(), new SpeedCap() }), 0.5);
+            // 0.3 kg: gain 0.15, so the object the weight puts 7.5 cm higher after the loss is more than a burst away.
+            var s = Run.Solver(massKg, new WeightProfile("cap", new WeightEffect[] { new WeightGain(), new SpeedCap() }), 0.5);
             double t = 0;
             s.BeginHold(1.0, 1.0, t);
             for (int i = 0; i < 4; i++) { t += 1 / 30.0; s.Step(new HandSample(1.0, true, true, t), 1 / 30.0); }
@@ -63,6 +64,29 @@ namespace Kosmos.PseudoHaptic.Tests
             t += 1 / 30.0;
             s.Step(new HandSample(1.5, true, true, t), 1 / 30.0); // back 0.5 m higher after a second
             Assert.That(s.Strain, Is.EqualTo(0), "the hand was not seen pulling");
+        }
+
+        [Test]
+        public void AnObjectMadeHeavyMidHoldIsFollowedAfreshAsAtAGrab()
+        {
+            // The scene swaps a golf ball (never capped) for 5 kg while the hand rests, and the hand jumps 0.3 m on the next
+            // frame. The follower starts where the object is with nothing in hand, as on a hold's first frame; one frame later
+            // it may have gone one frame at the cap, not a whole burst. (No weight gain: the object goes where the hand goes.)
+            var profile = new WeightProfile("cap", new WeightEffect[] { new SpeedCap() });
+            var s = Run.Solver(PhysicalConstants.StandardMassKg, profile, 0.5);
+            double t = 0, dt = 1 / 30.0;
+            s.BeginHold(1.0, 1.0, t);
+            for (int i = 0; i < 30; i++) { t += dt; s.Step(new HandSample(1.0, true, true, t), dt); }
+            Assert.That(s.Strain, Is.EqualTo(0), "the golf ball is never strained");
+            s.Configure(WeightModel.FromMass(5), profile, s.StandardSpeed);
+            t += dt;
+            s.Step(new HandSample(1.0, true, true, t), dt);
+            Assert.That(s.Strain, Is.EqualTo(0), "the swap's frame: the follower starts where the object is");
+            double from = s.ObjectY;
+            t += dt;
+            s.Step(new HandSample(1.3, true, true, t), dt);
+            double oneFrame = s.Constants.CapSpeed * Math.Min(dt, s.Profile.Limits.MaxFrameTime); // a frame counts for at most 25 ms
+            Assert.That(s.Strain, Is.EqualTo(s.ObjectY - from - oneFrame).Within(1e-12), "one frame's allowance, not a burst");
         }
     }
 }
