@@ -10,11 +10,17 @@ using Kosmos.PseudoHaptic.Evaluation;
 //       DiscriminationTaskModel and QuestionnairePanelModel sharing one background SaveQueue, as the headset does.
 //       Prints "ready TRIALS ITEMS" (answers already in the files), then for every acknowledged answer
 //       "ack trial ROW" or "ack item ROW" (the exact CSV row), then "done". With --marker, before printing an
-//       acknowledgement it opens DIR/.ack-N (which does not exist), a mark in an strace log.
+//       acknowledgement it opens DIR/.ack-N (which does not exist), a mark in an strace log. An answer whose write
+//       failed prints "error trial MESSAGE" or "error item MESSAGE" (once per failure) and is tried again.
 //   atomic DIR
 //       AtomicFile's other ways in, each followed by a mark (an open of DIR/.ack-N, which does not exist): creates
 //       DIR/made/deeper (both missing), writes DIR/made/deeper/with.csv through WriteWith (its writer does not sync),
 //       then DIR/made/deeper/text.csv through WriteAllText.
+//   sync-fault DIR [--close-stdin]
+//       writes DIR/answer.csv twice through AtomicFile.WriteAllText ("first", then "second"), printing after each
+//       "ok DIRECTORYSYNC" or "error MESSAGE" and "file CONTENT" ("none" if there is no file), then "temporaries N".
+//       Run under strace's fault injection (fsync 1: the temporary file's, fsync 2: the folder's). With
+//       --close-stdin, standard input is closed before the second write, whose file and folder then open as descriptor 0.
 //   bench DIR ANSWERS
 //       times ANSWERS answers written one by one as a session writes them (the whole growing file each time),
 //       synced (AtomicFile.Durable) and unsynced, and prints one line per mode.
@@ -31,8 +37,9 @@ static class Program
             return Participant(args[1], args[2], int.Parse(args[3], CultureInfo.InvariantCulture),
                 args.Length >= 5 && args[4] != "--marker" ? int.Parse(args[4], CultureInfo.InvariantCulture) : 4, args.Contains("--marker"));
         if (args.Length == 2 && args[0] == "atomic") return Atomic(args[1]);
+        if (args.Length >= 2 && args[0] == "sync-fault") return SyncFault(args[1], args.Contains("--close-stdin"));
         if (args.Length == 3 && args[0] == "bench") return Bench(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
-        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | atomic DIR | bench DIR ANSWERS");
+        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | atomic DIR | sync-fault DIR [--close-stdin] | bench DIR ANSWERS");
         return 2;
     }
 
@@ -106,8 +113,10 @@ static class Program
             var side = Choice(seed, participant, "trial " + trial.Index, 2) == 0 ? PairSide.Left : PairSide.Right;
             answered = trial;
             if (!task.Answer(side, false) && !task.IsSaving) throw new InvalidOperationException("not taken: " + task.Error);
+            string said = null;
             while (task.IsSaving)
             {
+                said = SayError("trial", task.Error, said);
                 Thread.Sleep(1); // a frame
                 task.Update();
             }
@@ -119,8 +128,10 @@ static class Program
             int value = q.ScaleMin + Choice(seed, participant, q.Id + " " + item.Number, q.ScaleMax - q.ScaleMin + 1);
             pending = ResponsesCsv.FormatRow(new Response(participant, q.Id, item.Number, value));
             if (!panel.Answer(value) && !panel.IsSaving) throw new InvalidOperationException("not taken: " + panel.Error);
+            string said = null;
             while (panel.IsSaving)
             {
+                said = SayError("item", panel.Error, said);
                 Thread.Sleep(1);
                 panel.Update();
             }
@@ -129,6 +140,42 @@ static class Program
         stdout.Flush();
         return 0;
     }
+
+    /// <summary>Prints "error WHAT MESSAGE" when the shown error is a new one; returns the error now shown.</summary>
+    static string SayError(string what, string error, string said)
+    {
+        if (error != null && error != said)
+        {
+            Console.Out.WriteLine("error " + what + " " + error);
+            Console.Out.Flush();
+        }
+        return error;
+    }
+
+    static int SyncFault(string dir, bool closeStdin)
+    {
+        string path = Path.Combine(dir, "answer.csv");
+        foreach (string text in new[] { "first", "second" })
+        {
+            // After the first write, when the runtime has loaded what a write needs (its loader would take descriptor 0).
+            if (closeStdin && text == "second") CloseDescriptor(0);
+            try
+            {
+                AtomicFile.WriteAllText(path, text);
+                Console.WriteLine("ok " + AtomicFile.DirectorySync);
+            }
+            catch (IOException e)
+            {
+                Console.WriteLine("error " + e.Message);
+            }
+            Console.WriteLine("file " + (File.Exists(path) ? File.ReadAllText(path) : "none"));
+        }
+        Console.WriteLine("temporaries " + Directory.GetFiles(dir, ".ph*").Length.ToString(CultureInfo.InvariantCulture));
+        return 0;
+    }
+
+    [System.Runtime.InteropServices.DllImport("libc", EntryPoint = "close")]
+    static extern int CloseDescriptor(int fd);
 
     static int Atomic(string dir)
     {

@@ -64,14 +64,21 @@ public class DurabilityTests
     /// <paramref name="syscalls"/> to <paramref name="trace"/> (with the syncs switched off when <paramref name="unsynced"/>);
     /// returns its standard output. Ignored where strace cannot trace; fails when the child hangs or fails.</summary>
     static string RunChildUnderStrace(string strace, string trace, bool unsynced, string syscalls, params string[] childArgs)
+        => RunChildUnderStrace(strace, trace, unsynced, syscalls, null, childArgs);
+
+    /// <summary>As above; <paramref name="inject"/>, if given, is strace's fault injection (<c>-e inject=…</c>).</summary>
+    static string RunChildUnderStrace(string strace, string trace, bool unsynced, string syscalls, string? inject, string[] childArgs)
     {
         var info = new ProcessStartInfo(strace)
         {
             RedirectStandardOutput = true,
             RedirectStandardError = true,
             UseShellExecute = false,
-            ArgumentList = { "-f", "-o", trace, "-e", "trace=" + syscalls, "dotnet", ChildDll },
+            ArgumentList = { "-f", "-o", trace, "-e", "trace=" + syscalls },
         };
+        if (inject != null) { info.ArgumentList.Add("-e"); info.ArgumentList.Add("inject=" + inject); }
+        info.ArgumentList.Add("dotnet");
+        info.ArgumentList.Add(ChildDll);
         foreach (string a in childArgs) info.ArgumentList.Add(a);
         if (unsynced) info.Environment["PSEUDOHAPTIC_UNSYNCED"] = "1";
         using var p = Process.Start(info)!;
@@ -176,6 +183,97 @@ public class DurabilityTests
             if (syncs != 1) violations.Add(Path.GetFileName(move.path) + ": the temporary file fsynced " + syncs + " times before its rename, not once");
         }
         return violations;
+    }
+
+    // ---------------------------------------------------------------------------------------------- injected sync failures
+    // strace's fault injection makes one fsync of the child fail with a chosen errno. In the child's sync-fault mode the
+    // first fsync is the temporary file's, the second the folder's after the rename (each checked in the trace).
+
+    string[] SyncFault(string strace, string? inject, bool closeStdin = false, int fsyncs = 4)
+    {
+        string dir = Path.Combine(_dir, "fault");
+        Directory.CreateDirectory(dir);
+        string trace = Path.Combine(_dir, "fault.strace");
+        var args = closeStdin ? new[] { "sync-fault", dir, "--close-stdin" } : new[] { "sync-fault", dir };
+        string stdout = RunChildUnderStrace(strace, trace, false, "openat,fsync", inject, args);
+        var syncs = StraceCheck.Parse(File.ReadAllLines(trace)).Where(c => c.Name == "fsync").ToList();
+        Assert.That(syncs, Has.Count.EqualTo(fsyncs), "two writes: a file's fsync and a folder's each (none for a write whose file's failed)");
+        return stdout.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+    }
+
+    [TestCase("EIO", 5)]
+    [TestCase("45", 45)] // ENOTSUP on macOS, which refuses a folder's sync there; EL2NSYNC on Linux, a failure
+    public void AFolderSyncThatFailsIsAnErrorNamingTheFolderAndTheErrnoAndTheNextWriteIsSynced(string error, int errno)
+    {
+        string[] lines = SyncFault(RequireStrace(), "fsync:error=" + error + ":when=2");
+        string dir = Path.Combine(_dir, "fault");
+        Assert.That(lines, Is.EqualTo(new[]
+        {
+            "error " + dir + ": the folder could not be synced to the device (errno " + errno + ")",
+            "file first", // renamed, but not on the device: the write is reported failed, so the answer is not acknowledged
+            "ok Synced", "file second", "temporaries 0",
+        }));
+    }
+
+    [TestCase("EINVAL")]
+    [TestCase("EOPNOTSUPP")]
+    public void AFolderSyncTheFileSystemRefusesIsNoErrorAndIsSaidSo(string error)
+    {
+        string[] lines = SyncFault(RequireStrace(), "fsync:error=" + error + ":when=2");
+        Assert.That(lines, Is.EqualTo(new[] { "ok Refused", "file first", "ok Synced", "file second", "temporaries 0" }));
+    }
+
+    [TestCase("EINVAL")]
+    [TestCase("EOPNOTSUPP")]
+    public void AFileSyncTheFileSystemRefusesIsNoError(string error)
+    {
+        string[] lines = SyncFault(RequireStrace(), "fsync:error=" + error + ":when=1");
+        Assert.That(lines, Is.EqualTo(new[] { "ok Synced", "file first", "ok Synced", "file second", "temporaries 0" }));
+    }
+
+    [Test]
+    public void AFileSyncThatFailsIsAnErrorAndLeavesNeitherTheFileNorATemporaryOne()
+    {
+        string[] lines = SyncFault(RequireStrace(), "fsync:error=EIO:when=1", fsyncs: 3);
+        Assert.That(lines, Has.Length.EqualTo(5), string.Join("\n", lines));
+        Assert.That(lines[0], Does.Match(@"^error .*/fault/\.ph[0-9a-f]{8}\.tmp: the file could not be synced to the device \(errno 5\)$"), "the file's own sync failed");
+        Assert.That(lines.Skip(1), Is.EqualTo(new[] { "file none", "ok Synced", "file second", "temporaries 0" }), "never renamed; the next write is whole");
+    }
+
+    [Test]
+    public void WithStandardInputClosedTheFolderOpensAsDescriptorZeroAndIsSynced()
+    {
+        string[] lines = SyncFault(RequireStrace(), null, closeStdin: true);
+        Assert.That(lines, Is.EqualTo(new[] { "ok Synced", "file first", "ok Synced", "file second", "temporaries 0" }));
+        string dir = Path.Combine(_dir, "fault");
+        var opens = StraceCheck.Parse(File.ReadAllLines(Path.Combine(_dir, "fault.strace"))).Where(c => c.Name == "openat" && c.Args.Contains("\"" + dir + "\"", StringComparison.Ordinal));
+        Assert.That(opens.Select(c => c.Result).Last(), Is.Zero, "the second write's folder really was descriptor 0, a valid one");
+    }
+
+    [Test]
+    public void ASessionWhoseFolderSyncFailsDoesNotAcknowledgeTheAnswerSaysSoAndWritesItOnceOnRetry()
+    {
+        string strace = RequireStrace();
+        string dir = Path.Combine(_dir, "session");
+        Directory.CreateDirectory(dir);
+        string trace = Path.Combine(_dir, "session.strace");
+        // The background writer's second fsync: the first answer's folder, after its rename.
+        string stdout = RunChildUnderStrace(strace, trace, false, "fsync,rename,openat", "fsync:error=EIO:when=2",
+            new[] { "participant", dir, "P1", "7", "2", "--marker" });
+        string[] lines = stdout.Split('\n', StringSplitOptions.RemoveEmptyEntries);
+        int error = Array.FindIndex(lines, l => l.StartsWith("error trial ", StringComparison.Ordinal));
+        int firstAck = Array.FindIndex(lines, l => l.StartsWith("ack ", StringComparison.Ordinal));
+        Assert.That(error, Is.GreaterThan(0), "the failure is said: " + stdout);
+        Assert.That(lines[error], Does.Contain(DiscriminationTaskModel.NotSavedPrefix).And.Contain("errno 5"));
+        Assert.That(firstAck, Is.GreaterThan(error), "the first answer is acknowledged only after its write succeeded");
+        Assert.That(lines.Count(l => l.StartsWith("ack ", StringComparison.Ordinal)), Is.EqualTo(16), "every answer acknowledged once");
+        Assert.That(lines.Last(), Is.EqualTo("done"));
+        string[] trials = File.ReadAllLines(Path.Combine(dir, "trials.csv"));
+        Assert.That(trials.Skip(1).Select(r => r.Split(',')[2]), Is.EqualTo(Enumerable.Range(1, 8).Select(i => i.ToString(CultureInfo.InvariantCulture))),
+            "the header and trials 1 to 8, each once");
+        var violations = StraceCheck.Violations(File.ReadAllLines(trace), dir,
+            lines.Where(l => l.StartsWith("ack ", StringComparison.Ordinal)).Select(a => Path.Combine(dir, a.StartsWith("ack trial ", StringComparison.Ordinal) ? "trials.csv" : "responses.csv")).ToList());
+        Assert.That(violations, Is.Empty, "every acknowledged answer synced, the retried one included");
     }
 
     static string RequireStrace()

@@ -8,8 +8,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
 {
     /// <summary>
     /// Durable write-then-rename: the text goes to a temporary file in the destination's own folder (so the
-    /// rename stays on one file system), its data is synced to the storage device (<c>fsync</c>, through
-    /// <see cref="FileStream.Flush(bool)"/>), the temporary file then replaces the destination in one step, and on
+    /// rename stays on one file system), its data is synced to the storage device (<c>fsync</c>, <see cref="SyncStream"/>),
+    /// the temporary file then replaces the destination in one step, and on
     /// Linux, Android and macOS the folder itself is synced after the rename (<see cref="SyncDirectory"/>), so the
     /// new name is on the device too. A crash or an error leaves either the old file or the new one, never half of
     /// one; after this returns, a power cut leaves the new one. The temporary file is removed on error, and every
@@ -49,7 +49,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 {
                     byte[] bytes = Utf8NoBom.GetBytes(text ?? "");
                     stream.Write(bytes, 0, bytes.Length);
-                    if (Durable) stream.Flush(true); // fsync: the data is on the device before the rename
+                    if (Durable) SyncStream(stream); // fsync: the data is on the device before the rename
                 }
             });
         }
@@ -157,8 +157,51 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public static void SyncFile(string path)
         {
             using (var stream = new FileStream(path, FileMode.Open, FileAccess.Write, FileShare.ReadWrite, 1))
-                stream.Flush(true);
+                SyncStream(stream);
         }
+
+        /// <summary>
+        /// Writes <paramref name="stream"/>'s buffer and syncs the file's data and size to the device. On Linux and Android
+        /// this calls libc's <c>fsync</c> itself and checks its result: <see cref="FileStream.Flush(bool)"/> does not
+        /// report a failing <c>fsync</c> (.NET 10 on Linux: an EIO injected into it passes unnoticed, DurabilityTests), so
+        /// a device that failed to store the answer would go unsaid. A failure throws <see cref="IOException"/> naming the
+        /// file and the errno, except EINVAL and EOPNOTSUPP: a file system that cannot sync this file, where there is
+        /// nothing more to do (as .NET itself treats them). On Windows and macOS (where .NET uses the stronger
+        /// <c>F_FULLFSYNC</c>), or without libc, <see cref="FileStream.Flush(bool)"/>.
+        /// </summary>
+        public static void SyncStream(FileStream stream)
+        {
+            if (stream == null) throw new ArgumentNullException(nameof(stream));
+            stream.Flush();
+            if (!IsUnix || IsDarwin)
+            {
+                stream.Flush(true);
+                return;
+            }
+            var handle = stream.SafeFileHandle;
+            bool added = false;
+            int result, errno = 0;
+            try
+            {
+                handle.DangerousAddRef(ref added);
+                result = Libc.Fsync((int)handle.DangerousGetHandle());
+                if (result != 0) errno = Marshal.GetLastWin32Error();
+            }
+            catch (Exception e) when (e is DllNotFoundException || e is EntryPointNotFoundException)
+            {
+                stream.Flush(true);
+                return;
+            }
+            finally
+            {
+                if (added) handle.DangerousRelease();
+            }
+            if (result != 0 && !IsRefusal(errno))
+                throw new IOException(stream.Name + ": the file could not be synced to the device (errno " + errno + ")");
+        }
+
+        /// <summary>The errno of a file system that does not sync this kind of file (EINVAL, EOPNOTSUPP; ENOTSUP on macOS).</summary>
+        static bool IsRefusal(int errno) => errno == EINVAL || errno == EOPNOTSUPP_Linux || (errno == ENOTSUP_Darwin && IsDarwin);
 
         /// <summary>
         /// Creates <paramref name="directory"/> and any missing parent, syncing the folder above each one created,
@@ -221,7 +264,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 if (Libc.Fsync(fd) != 0)
                 {
                     errno = Marshal.GetLastWin32Error();
-                    if (errno == EINVAL || errno == EOPNOTSUPP_Linux || (errno == ENOTSUP_Darwin && IsDarwin))
+                    if (IsRefusal(errno))
                     {
                         DirectorySync = DirectorySyncKind.Refused;
                         return;

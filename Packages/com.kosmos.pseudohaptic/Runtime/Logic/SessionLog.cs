@@ -212,7 +212,7 @@ namespace Kosmos.PseudoHaptic
                 {
                     using (var writer = new StreamWriter(stream, new UTF8Encoding(false), 65536, leaveOpen: true))
                         recording.WriteCsv(writer);
-                    if (AtomicFile.Durable) stream.Flush(true);
+                    if (AtomicFile.Durable) AtomicFile.SyncStream(stream);
                 }
             });
         }
