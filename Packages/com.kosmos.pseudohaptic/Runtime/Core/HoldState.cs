@@ -43,7 +43,7 @@ namespace Kosmos.PseudoHaptic
         public double Base;
 
         /// <summary>The last accepted poses (newest first) and how many have come since the hold began or tracking
-        /// came back: <see cref="SteadyY"/> is their median.</summary>
+        /// came back, counted up to three (all the median needs): <see cref="SteadyY"/> is their median.</summary>
         public double Pose1, Pose2;
         public int PoseCount;
 

@@ -127,6 +127,26 @@ namespace Kosmos.PseudoHaptic.Tests
             }
         }
 
+        // ---- the pose count a scene's effect reads (HoldState.PoseCount: up to three, from 0 again after a loss) ----
+
+        [Test]
+        public void ThePoseCountRisesToThreeAndStaysThereAndALossStartsItAgain()
+        {
+            var s = Run.Solver(0.5);
+            var q = new Quest(s) { Hand = t => 1.0 + 0.1 * t, Time = 0.045 + 1.0 / 30 - 1.0 / 90 }; // the first frame shows the pose after the grab's
+            s.BeginHold(1.0, 1.0, 0.0);
+            Assert.That(s.State.PoseCount, Is.EqualTo(1), "the grab's pose");
+            var seen = new List<int>();
+            while (seen.Count < 12) { q.Frame(); if (q.NewPose) seen.Add(s.State.PoseCount); }
+            Assert.That(seen.GetRange(0, 2), Is.EqualTo(new[] { 2, 3 }));
+            Assert.That(seen.GetRange(2, 10), Is.All.EqualTo(3), "counted up to three, not beyond");
+            q.Tracked = false;
+            q.Run(0.5);
+            q.Tracked = true;
+            while (!q.NewPose) q.Frame();
+            Assert.That(s.State.PoseCount, Is.LessThan(3), "tracking came back: the count starts again");
+        }
+
         // ---- the offset ceiling, the negative side (a light object leads by at most the ceiling) ----
 
         [Test]
