@@ -21,6 +21,10 @@ using Kosmos.PseudoHaptic.Evaluation;
 //       "ok DIRECTORYSYNC" or "error MESSAGE" and "file CONTENT" ("none" if there is no file), then "temporaries N".
 //       Run under strace's fault injection (fsync 1: the temporary file's, fsync 2: the folder's). With
 //       --close-stdin, standard input is closed before the second write, whose file and folder then open as descriptor 0.
+//   recorder DIR HOLDS
+//       records HOLDS holds of 30 frames through the package's SessionLog (session P1, one background SaveQueue, as the
+//       SessionRecorder does); for each hold its HoldWritten event opens DIR/.ack-N (a mark in an strace log) and
+//       prints "ack hold FILE". Then "done".
 //   bench DIR ANSWERS
 //       times ANSWERS answers written one by one as a session writes them (the whole growing file each time),
 //       synced (AtomicFile.Durable) and unsynced, and prints one line per mode.
@@ -38,8 +42,9 @@ static class Program
                 args.Length >= 5 && args[4] != "--marker" ? int.Parse(args[4], CultureInfo.InvariantCulture) : 4, args.Contains("--marker"));
         if (args.Length == 2 && args[0] == "atomic") return Atomic(args[1]);
         if (args.Length >= 2 && args[0] == "sync-fault") return SyncFault(args[1], args.Contains("--close-stdin"));
+        if (args.Length == 3 && args[0] == "recorder") return Recorder(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
         if (args.Length == 3 && args[0] == "bench") return Bench(args[1], int.Parse(args[2], CultureInfo.InvariantCulture));
-        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | atomic DIR | sync-fault DIR [--close-stdin] | bench DIR ANSWERS");
+        Console.Error.WriteLine("usage: participant DIR PARTICIPANT SEED [REPETITIONS] [--marker] | atomic DIR | sync-fault DIR [--close-stdin] | recorder DIR HOLDS | bench DIR ANSWERS");
         return 2;
     }
 
@@ -176,6 +181,43 @@ static class Program
 
     [System.Runtime.InteropServices.DllImport("libc", EntryPoint = "close")]
     static extern int CloseDescriptor(int fd);
+
+    static int Recorder(string dir, int holds)
+    {
+        int acked = 0;
+        var log = new SessionLog(saver: new SaveQueue(background: true, retrySeconds: 0.05)) { Folder = dir, SessionId = "P1" };
+        log.HoldWritten += file =>
+        {
+            try { using (File.OpenRead(Path.Combine(dir, ".ack-" + (++acked).ToString(CultureInfo.InvariantCulture)))) { } }
+            catch (FileNotFoundException) { }
+            Console.Out.WriteLine("ack hold " + file);
+            Console.Out.Flush();
+        };
+        var solver = new WeightSolver(WeightModel.FromMass(0.5));
+        const double dt = 1 / 90.0;
+        for (int h = 0; h < holds; h++)
+        {
+            object key = new object();
+            var grab = new HandSample(1.0);
+            solver.BeginHold(1.0, 1.0);
+            log.Began(key, "cube", solver, in grab, h);
+            for (int i = 1; i <= 30; i++)
+            {
+                var hand = new HandSample(1.0 + 0.01 * i);
+                solver.Step(in hand, dt);
+                log.Stepped(key, solver, in hand, dt);
+            }
+            log.Ended(key);
+            while (acked <= h)
+            {
+                Thread.Sleep(1); // a frame
+                log.Pump();
+            }
+        }
+        log.Drain();
+        Console.WriteLine("done");
+        return 0;
+    }
 
     static int Atomic(string dir)
     {

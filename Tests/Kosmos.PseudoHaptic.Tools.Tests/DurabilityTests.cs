@@ -103,6 +103,33 @@ public class DurabilityTests
     }
 
     [Test]
+    public void UnderStraceEveryRecordedHoldIsSyncedBeforeItsRenameAndItsFolderAfterBeforeItIsReportedWritten()
+    {
+        string strace = RequireStrace();
+        var (acks, violations) = RecorderRun(strace, Path.Combine(_dir, "synced"), unsynced: false);
+        Assert.That(acks, Is.EqualTo(3), "3 holds reported written");
+        Assert.That(violations, Is.Empty);
+
+        // The check can fail: the same recorder with the syncs switched off breaks it for every hold.
+        var (unsyncedAcks, unsyncedViolations) = RecorderRun(strace, Path.Combine(_dir, "unsynced"), unsynced: true);
+        Assert.That(unsyncedAcks, Is.EqualTo(3));
+        Assert.That(unsyncedViolations.Count(v => v.Contains("not fsynced before its rename")), Is.EqualTo(3), string.Join("\n", unsyncedViolations));
+        Assert.That(unsyncedViolations.Count(v => v.Contains("folder not fsynced")), Is.EqualTo(3), string.Join("\n", unsyncedViolations));
+    }
+
+    (int acks, List<string> violations) RecorderRun(string strace, string dir, bool unsynced)
+    {
+        Directory.CreateDirectory(dir);
+        string trace = Path.Combine(_dir, (unsynced ? "unsynced" : "synced") + "-recorder.strace");
+        string stdout = RunChildUnderStrace(strace, trace, unsynced, "fsync,fdatasync,rename,renameat,renameat2,openat,link,linkat",
+            "recorder", dir, "3");
+        Assert.That(stdout, Does.EndWith("done\n"));
+        var files = stdout.Split('\n').Where(l => l.StartsWith("ack hold ", StringComparison.Ordinal)).Select(l => l["ack hold ".Length..]).ToList();
+        Assert.That(files.All(f => Path.GetDirectoryName(f) == Path.Combine(dir, "P1")), Is.True, "the session's folder: " + string.Join(", ", files));
+        return (files.Count, StraceCheck.Violations(File.ReadAllLines(trace), dir, files));
+    }
+
+    [Test]
     public void UnderStraceCreatedFoldersAndWriteWithAreSyncedAndEachTemporaryFileExactlyOnce()
     {
         string strace = RequireStrace();
