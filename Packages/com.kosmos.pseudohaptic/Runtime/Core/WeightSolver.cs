@@ -345,7 +345,9 @@ namespace Kosmos.PseudoHaptic
             if (effects.Length > 0) effects[0].Apply(ref f, ref _state, in _constants);
             for (int i = 1; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            if (double.IsFinite(f.NewObjectY))
+            // Only a height a pose could have (finite, within ±MaxCoordinate: a float transform holds it): a scene's own effect
+            // that wrote an absurd offset, however finite, leaves the object where it was for that frame.
+            if (Math.Abs(f.NewObjectY) <= MaxCoordinate)
             {
                 _state.HeldY = f.NewObjectY;
                 _state.ObjectY = f.NewObjectY - _state.GrabOffset;
@@ -476,7 +478,7 @@ namespace Kosmos.PseudoHaptic
             if (glide == 0 && excess <= step && excess >= -step) return 0;
             double g = glide - excess;
             g = g > step ? g - step : (g < -step ? g + step : 0);
-            _state.Glide = double.IsFinite(g) ? g : 0;
+            _state.Glide = Math.Abs(g) <= MaxCoordinate ? g : 0; // no glide from an absurd offset a scene's effect wrote (nor ±∞, NaN)
             return _state.Glide;
         }
 

@@ -127,6 +127,56 @@ namespace Kosmos.PseudoHaptic.Tests
             }
         }
 
+        // ---- a scene's own effect writing an absurd offset (ALGORITHM.md §3 step 11: the finite guard) ----
+
+        /// <summary>A scene's object-motion effect that writes <see cref="Value"/> as the offset on frames [From, To).</summary>
+        sealed class AbsurdOffset : WeightEffect
+        {
+            public double Value;
+            public int From, To, Frame;
+            public override string Name => "absurd-offset";
+            public override EffectStage Stage => EffectStage.ObjectMotion;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
+            {
+                if (Frame >= From && Frame < To) frame.Offset = Value;
+                Frame++;
+            }
+        }
+
+        [Test]
+        public void AnEffectsAbsurdOffsetNeverReachesTheTransformAndTheFramesAfterItAreTheCleanRunsFrames(
+            [Values(1.7e308, -1.7e308, 1e6, double.PositiveInfinity, double.NaN)] double value,
+            [Values(1, 2)] int frames, [Values(false, true)] bool corrected)
+        {
+            // 90 g lifted 0.3 m in 1 s on Quest-like poses; the scene's effect comes after the offset correction.
+            WeightEffect[] effects = corrected
+                ? new WeightEffect[] { new WeightGain(), new OffsetCorrection() }
+                : new WeightEffect[] { new WeightGain() };
+            double[] Run(AbsurdOffset absurd)
+            {
+                var list = new List<WeightEffect>(effects) { absurd };
+                var s = new WeightSolver(WeightModel.FromMass(0.09), new WeightProfile("scene", list.ToArray()));
+                s.BeginHold(0.8, 0.8);
+                var q = new Quest(s) { Hand = t => 0.8 + 0.3 * Math.Min(1, Math.Max(0, t - 0.2)) };
+                q.Run(2);
+                return q.Objects.ToArray();
+            }
+            var clean = Run(new AbsurdOffset { From = -1, To = -1 });
+            var glitched = Run(new AbsurdOffset { Value = value, From = 60, To = 60 + frames });
+            double ceiling = new OffsetCorrection().Ceiling;
+            for (int i = 0; i < glitched.Length; i++)
+            {
+                Assert.That(float.IsFinite((float)glitched[i]), Is.True, "frame " + i + ": a float transform holds it");
+                if (i >= 60 && i < 60 + frames)
+                {
+                    // The frame itself: the object stays where it was, or (under the correction) is held within its ceiling of the hand.
+                    if (corrected) Assert.That(Math.Abs(glitched[i] - glitched[i - 1]), Is.LessThanOrEqualTo(ceiling + 0.01), "frame " + i);
+                    else Assert.That(glitched[i], Is.EqualTo(glitched[i - 1]), "frame " + i + ": where it was");
+                }
+                else Assert.That(glitched[i], Is.EqualTo(clean[i]), "frame " + i + ": the clean run's");
+            }
+        }
+
         // ---- the pose count a scene's effect reads (HoldState.PoseCount: up to three, from 0 again after a loss) ----
 
         [Test]
