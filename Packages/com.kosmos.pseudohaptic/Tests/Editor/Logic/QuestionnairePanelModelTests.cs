@@ -375,5 +375,25 @@ namespace Kosmos.PseudoHaptic.Tests
             m.Answer(5);
             Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2", "P1,part-a,2,3", "P2,part-a,1,5" }), "P2's answer is added, P1's kept");
         }
+
+        [Test]
+        public void AnotherSessionBegunWhileAnUnsavedAnswerCanBeSavedAgainSavesItFirstThenBegins()
+        {
+            // The next participant is started before a frame has run the due retry, and the folder is back: the begin waits for
+            // the write (SaveQueue.Drain), which now succeeds, and then begins; it refuses only when the write still fails.
+            double now = 0;
+            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now));
+            Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
+            m.Answer(2);
+            Directory.Delete(_folder, true);
+            File.WriteAllText(_folder, "a file where the responses folder was");
+            Assert.That(m.Answer(3), Is.False);
+            File.Delete(_folder);
+            now = 5; // the retry is due, but no frame has run it yet
+            Assert.That(m.IsSaving, Is.True, "the answer is still unsaved when P2 is started");
+            Assert.That(m.Begin(Catalog(), "P2", _responses, null), Is.True, m.Error);
+            Assert.That(Rows(), Is.EqualTo(new[] { "P1,part-a,1,2", "P1,part-a,2,3" }), "P1's answer saved before P2's session read the file");
+            Assert.That(View(m).Progress, Is.EqualTo("1 / 3"), "P2 begins at the first item");
+        }
     }
 }
