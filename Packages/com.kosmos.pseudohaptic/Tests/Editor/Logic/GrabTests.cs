@@ -51,13 +51,17 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
-        public void InvalidPinchAndGrabSettingsThrowNamingTheSetting()
+        public void InvalidPinchAndGrabSettingsThrowNamingTheSettingAndWhatItMustBe()
         {
+            // The inspector shows the message: it says the allowed range, not only the name (which .NET appends anyway).
             var pinch = new PinchDetector();
-            Assert.That(() => pinch.CloseAt = 1.5, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("CloseAt"));
-            Assert.That(() => pinch.OpenBelow = double.NaN, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("OpenBelow"));
-            Assert.That(() => pinch.OpenAfter = -1, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("OpenAfter"));
-            Assert.That(() => new HandGrab().ReleaseAfterLost = double.PositiveInfinity, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("ReleaseAfterLost"));
+            Assert.That(() => pinch.CloseAt = 1.5, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("CloseAt must be in (0, 1]"));
+            Assert.That(() => pinch.CloseAt = pinch.OpenBelow / 2, Throws.InstanceOf<ArgumentOutOfRangeException>()
+                .With.Message.Contains("CloseAt must not be below OpenBelow (" + pinch.OpenBelow + ")"));
+            Assert.That(() => pinch.OpenBelow = double.NaN, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("OpenBelow must be in (0, CloseAt]"));
+            Assert.That(() => pinch.OpenAfter = -1, Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("OpenAfter must be finite and >= 0"));
+            Assert.That(() => new HandGrab().ReleaseAfterLost = double.PositiveInfinity, Throws.InstanceOf<ArgumentOutOfRangeException>()
+                .With.Message.Contains("ReleaseAfterLost must be finite and >= 0"));
         }
 
         [Test]

@@ -116,6 +116,7 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => new GrabbingHands<Interactor>(0));
             Assert.That(e.ParamName, Is.EqualTo("capacity"));
+            Assert.That(e.Message, Does.Contain("capacity must be at least 1"));
         }
 
         [Test]

@@ -147,6 +147,7 @@ namespace Kosmos.PseudoHaptic.Tests
             {
                 Assert.That(hold.Configure(WeightModel.FromMass(2), NamedProfiles.Paper, 0.5, cue), Is.False, "cue strength " + cue);
                 Assert.That(hold.Error, Does.Contain("ueStrength"), "cue strength " + cue);
+                Assert.That(hold.Error, Does.Contain("CueStrength must lie in [" + WeightSolver.MinCueStrength + ", " + WeightSolver.MaxCueStrength + "]"), "the range is said");
                 Assert.That(hold.MassKg, Is.EqualTo(1), "cue strength " + cue + ": the last valid configuration is kept whole");
                 Assert.That(hold.Solver3D.CueStrength, Is.EqualTo(WeightSolver.DefaultCueStrength));
             }
