@@ -67,8 +67,10 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>
-        /// <paramref name="source"/> joins under a new id, numbered here (never one in use), which is returned; a source already
-        /// here keeps its id.
+        /// <paramref name="source"/> joins under a new id, numbered here, which is returned; a source already here keeps its id.
+        /// Numbered ids go up from 1, past every id given or taken so far, and wrap to 1 only after int.MaxValue (then skipping
+        /// ids in use): a hand that left is not numbered again, so a hand that grabs as another lets go is a join, never that
+        /// hand's motion.
         /// </summary>
         public int Add(T source)
         {

@@ -146,6 +146,38 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(hands.SourceAt(0), Is.SameAs(A));
         }
 
+        /// <summary>
+        /// A hand that lets go and a new one that grabs in the same frame must not share an id: the hold would take the new
+        /// hand's pose for the old hand's motion (a jump), not for a join. So numbered ids only go up, past every id given
+        /// or taken so far, until the numbering passes int.MaxValue (300 seeds of random joins, caller ids and leaves).
+        /// </summary>
+        [Test]
+        public void AnIdThatLeftIsNeverNumberedAgainBeforeTheNumberingWraps()
+        {
+            for (int seed = 1; seed <= 300; seed++)
+            {
+                var random = new Random(seed);
+                var hands = new GrabbingHands<Interactor>(capacity: 2);
+                int highest = 0; // the highest id ever here
+                for (int op = 0; op < 60; op++)
+                {
+                    int roll = random.Next(3);
+                    if (roll == 0)
+                    {
+                        int id = hands.Add(new Interactor("n"));
+                        Assert.That(id, Is.GreaterThan(highest), "seed " + seed + ", op " + op + ": a new id above every id so far");
+                        highest = id;
+                    }
+                    else if (roll == 1)
+                    {
+                        int id = random.Next(1, 40); // a caller's id (the Interaction SDK's pointer ids), maybe one that left
+                        if (hands.Add(id, new Interactor("c"))) highest = Math.Max(highest, id);
+                    }
+                    else if (hands.Count > 0) hands.Remove(hands.IdAt(random.Next(hands.Count)));
+                }
+            }
+        }
+
         /// <summary>Ids up to int.MaxValue (the Interaction SDK's pointer ids are anything) make the numbering wrap; it still never gives an id in use.</summary>
         [Test]
         public void NumberedIdsStayFreeAfterTheNumberingWraps()
@@ -157,7 +189,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var d = new Interactor("d");
             int id = hands.Add(d);
             Assert.That(new[] { 1, 2, int.MaxValue, id }, Is.Unique);
-            Assert.That(id, Is.Not.EqualTo(int.MinValue));
+            Assert.That(id, Is.EqualTo(3), "wrapped to 1, the first id not in use from there");
             Assert.That(hands.Count, Is.EqualTo(4));
             Assert.That(hands.SourceAt(hands.IndexOf(id)), Is.SameAs(d));
         }
