@@ -213,16 +213,23 @@ namespace Kosmos.PseudoHaptic.Tests
             m.Saver.Dispose();
         }
 
-        [Test]
-        public void AFailedAnswerIsKeptShownAsNotSavedAndWrittenOnceWhenTheFolderIsBack()
+        /// <summary>P1's first answer (2) is saved; then the responses folder is replaced by a file, and the second (3) is not.</summary>
+        QuestionnairePanelModel WithAnUnsavedAnswer(Func<double> clock)
         {
-            double now = 0;
-            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now));
+            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: clock));
             Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
             m.Answer(2);
             Directory.Delete(_folder, true);
             File.WriteAllText(_folder, "a file where the responses folder was");
             Assert.That(m.Answer(3), Is.False);
+            return m;
+        }
+
+        [Test]
+        public void AFailedAnswerIsKeptShownAsNotSavedAndWrittenOnceWhenTheFolderIsBack()
+        {
+            double now = 0;
+            var m = WithAnUnsavedAnswer(() => now);
             Assert.That(View(m).Message, Does.Contain("could not be saved"));
             Assert.That(View(m).Progress, Is.EqualTo("2 / 3"), "not acknowledged");
             Assert.That(m.Session.AnsweredCount, Is.EqualTo(1));
@@ -382,12 +389,7 @@ namespace Kosmos.PseudoHaptic.Tests
             // The next participant is started before a frame has run the due retry, and the folder is back: the begin waits for
             // the write (SaveQueue.Drain), which now succeeds, and then begins; it refuses only when the write still fails.
             double now = 0;
-            var m = new QuestionnairePanelModel(saver: new SaveQueue(background: false, retrySeconds: 1, clock: () => now));
-            Assert.That(m.Begin(Catalog(), "P1", _responses, null), Is.True, m.Error);
-            m.Answer(2);
-            Directory.Delete(_folder, true);
-            File.WriteAllText(_folder, "a file where the responses folder was");
-            Assert.That(m.Answer(3), Is.False);
+            var m = WithAnUnsavedAnswer(() => now);
             File.Delete(_folder);
             now = 5; // the retry is due, but no frame has run it yet
             Assert.That(m.IsSaving, Is.True, "the answer is still unsaved when P2 is started");
