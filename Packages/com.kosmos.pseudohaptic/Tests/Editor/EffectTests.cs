@@ -166,6 +166,20 @@ namespace Kosmos.PseudoHaptic.Tests
                 Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => solver.BottomBelowPivot = bad).ParamName, Is.EqualTo("BottomBelowPivot"));
         }
 
+        [Test]
+        public void ABottomSetMidHoldLiftsTheObjectOffTheFloorOnTheNextFrameThoughTheHandHasNotMoved()
+        {
+            // The scene swaps in a bigger collider while the object rests on the table in a still hand (the same pose, frame
+            // after frame: still frames, which reuse the last frame). The next frame already keeps the new bottom above the floor.
+            var solver = new WeightSolver(WeightModel.FromMass(0.5), NamedProfiles.Paper);
+            var still = new HandSample(0.05, true, true, 0.0);
+            solver.BeginHold(0.05, 0.05, 0.0);
+            for (int i = 0; i < 30; i++) solver.Step(still, 1 / 90.0);
+            Assert.That(solver.ObjectY, Is.EqualTo(0.05), "resting where it was grabbed");
+            solver.BottomBelowPivot = 0.1;
+            Assert.That(solver.Step(still, 1 / 90.0), Is.EqualTo(0.1).Within(1e-12), "its bottom on the floor, not 5 cm through it");
+        }
+
 
         [Test]
         public void WithoutTrackingLossHoldAShortLossIsCaughtUpSmoothly()
