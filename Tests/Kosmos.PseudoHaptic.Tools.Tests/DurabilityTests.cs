@@ -258,6 +258,15 @@ public class DurabilityTests
         Assert.That(lines, Is.EqualTo(new[] { "ok Synced", "file first", "ok Synced", "file second", "temporaries 0" }));
     }
 
+    [TestCase(1)]
+    [TestCase(2)]
+    public void AnFsyncInterruptedByASignalIsTriedAgain(int which)
+    {
+        // EINTR on the file's (1) or the folder's (2) fsync: not a failure, the call is made again.
+        string[] lines = SyncFault(RequireStrace(), "fsync:error=EINTR:when=" + which, fsyncs: 5);
+        Assert.That(lines, Is.EqualTo(new[] { "ok Synced", "file first", "ok Synced", "file second", "temporaries 0" }));
+    }
+
     [Test]
     public void AFileSyncThatFailsIsAnErrorAndLeavesNeitherTheFileNorATemporaryOne()
     {

@@ -180,12 +180,11 @@ namespace Kosmos.PseudoHaptic.Evaluation
             }
             var handle = stream.SafeFileHandle;
             bool added = false;
-            int result, errno = 0;
+            int result = 0, errno = 0;
             try
             {
                 handle.DangerousAddRef(ref added);
-                result = Libc.Fsync((int)handle.DangerousGetHandle());
-                if (result != 0) errno = Marshal.GetLastWin32Error();
+                result = Fsync((int)handle.DangerousGetHandle(), out errno);
             }
             catch (Exception e) when (e is DllNotFoundException || e is EntryPointNotFoundException)
             {
@@ -198,6 +197,15 @@ namespace Kosmos.PseudoHaptic.Evaluation
             }
             if (result != 0 && !IsRefusal(errno))
                 throw new IOException(stream.Name + ": the file could not be synced to the device (errno " + errno + ")");
+        }
+
+        /// <summary>libc's <c>fsync</c>, again while a signal interrupts it (EINTR, as .NET's own shim does); the errno of a failure.</summary>
+        static int Fsync(int fd, out int errno)
+        {
+            int result;
+            errno = 0;
+            while ((result = Libc.Fsync(fd)) != 0 && (errno = Marshal.GetLastWin32Error()) == EINTR) { }
+            return result;
         }
 
         /// <summary>The errno of a file system that does not sync this kind of file (EINVAL, EOPNOTSUPP; ENOTSUP on macOS).</summary>
@@ -261,9 +269,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (fd < 0) throw new IOException(directory + ": the folder could not be opened to sync it (errno " + errno + ")");
             try
             {
-                if (Libc.Fsync(fd) != 0)
+                if (Fsync(fd, out errno) != 0)
                 {
-                    errno = Marshal.GetLastWin32Error();
                     if (IsRefusal(errno))
                     {
                         DirectorySync = DirectorySyncKind.Refused;
@@ -284,7 +291,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         // read-only without O_DIRECTORY, whose value differs between x86-64 and ARM64.
         const int OpenReadOnly = 0;
         static int OpenCloseOnExec => IsDarwin ? 0 : 0x80000;
-        const int EINVAL = 22, EOPNOTSUPP_Linux = 95, ENOTSUP_Darwin = 45;
+        const int EINTR = 4, EINVAL = 22, EOPNOTSUPP_Linux = 95, ENOTSUP_Darwin = 45;
 
         static bool IsUnix
         {
