@@ -25,10 +25,10 @@ namespace Kosmos.PseudoHaptic
             PoseTime = poseTime;
         }
 
-        /// <summary>No hand: not tracked.</summary>
+        /// <summary>No hand: not tracked, no confidence, no position.</summary>
         public static HandPose Lost => new HandPose(double.NaN, double.NaN, double.NaN, false, false);
 
-        /// <summary>Tracked, with every coordinate finite and within ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
+        /// <summary>Tracked, with every coordinate finite and strictly within ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
         public bool IsUsable => IsTracked && HandSample.IsUsableHeight(X) && HandSample.IsUsableHeight(Y) && HandSample.IsUsableHeight(Z);
     }
 }

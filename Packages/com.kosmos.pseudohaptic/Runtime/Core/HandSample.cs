@@ -24,9 +24,10 @@ namespace Kosmos.PseudoHaptic
             PoseTime = poseTime;
         }
 
+        /// <summary>No hand: not tracked, no confidence, no height.</summary>
         public static HandSample Lost => new HandSample(double.NaN, false, false);
 
-        /// <summary>A height the solver can follow: finite and within ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
+        /// <summary>A height the solver can follow: finite and strictly within ±<see cref="WeightSolver.MaxCoordinate"/> (10⁵ m itself is not).</summary>
         public static bool IsUsableHeight(double y) => System.Math.Abs(y) < WeightSolver.MaxCoordinate; // NaN compares false: not usable
 
         /// <summary>The solver can follow this pose: tracked, with a usable height (confidence is an effect's call).</summary>

@@ -1,3 +1,4 @@
+using System;
 using System.Collections.Generic;
 using NUnit.Framework;
 
@@ -62,6 +63,63 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(NamedProfiles.Paper.With(new OffsetRelaxation()).WeightIsFunctionOfHand, Is.False, "relaxation reads time");
             Assert.That(new WeightProfile("input-only", new WeightEffect[] { new FrameProbe(), new FloorClamp() }).WeightIsFunctionOfHand,
                 Is.True, "input and position effects run every frame anyway");
+        }
+
+        /// <summary>Does nothing, and never says it is still: every frame runs the pipeline.</summary>
+        sealed class NeverStill : WeightEffect
+        {
+            public override string Name => "never-still";
+            public override EffectStage Stage => EffectStage.Input;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
+        }
+
+        /// <summary>Counts its calls; a function of the hand or not, as told.</summary>
+        sealed class CountsWeighing : WeightEffect
+        {
+            readonly bool _ofHand;
+            public int Applied;
+            public CountsWeighing(bool ofHand) { _ofHand = ofHand; }
+            public override string Name => "counts-weighing";
+            public override EffectStage Stage => EffectStage.Lift;
+            protected override bool IsFunctionOfHand => _ofHand;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Applied++;
+        }
+
+        [Test]
+        public void TheWeighingEffectsAreCalledOnNewPosesOnlyNotOnTheFramesThatRepeatTheHand()
+        {
+            // The saving itself: 30 Hz poses of a rising hand over 90 Hz frames, so two frames in three show the last pose again
+            // and reuse its weight. An input effect that never says it is still keeps those frames from being still frames,
+            // which would skip the pipeline altogether.
+            var counts = new CountsWeighing(ofHand: true);
+            var solver = new WeightSolver(WeightModel.FromMass(1), NamedProfiles.Paper.With(counts).With(new NeverStill()));
+            solver.BeginHold(1.0, 1.0, 0.0);
+            int newPoses = 0;
+            double last = double.NaN;
+            for (int i = 1; i <= 90; i++)
+            {
+                double t = Math.Floor(i / 3.0) / 30; // the pose of 30 Hz, shown on three frames
+                if (t != last && t > 0) newPoses++;
+                last = t;
+                solver.Step(new HandSample(1.0 + 0.3 * t, true, true, t), 1 / 90.0);
+            }
+            Assert.That(newPoses, Is.EqualTo(30));
+            Assert.That(counts.Applied, Is.EqualTo(newPoses + 1), "once per new pose, and on the first frame (the grab's pose, shown again)");
+        }
+
+        [Test]
+        public void AfterTheProfileGainsAnEffectThatIsNotAFunctionOfTheHandAStillHandIsWeighedEveryFrame()
+        {
+            // The hand rests: frames repeat its sample and are still. The scene then adds an effect that reads time (not a function
+            // of the hand): from then on no frame may be skipped, though hand and base are bit for bit as before.
+            var solver = new WeightSolver(WeightModel.FromMass(1), NamedProfiles.Paper);
+            var pose = new HandSample(1.0, true, true, 0.0);
+            solver.BeginHold(1.0, 1.0, 0.0);
+            for (int i = 0; i < 30; i++) solver.Step(pose, 1 / 90.0);
+            var counts = new CountsWeighing(ofHand: false);
+            solver.Configure(solver.Model, NamedProfiles.Paper.With(counts), solver.StandardSpeed);
+            for (int i = 0; i < 30; i++) solver.Step(pose, 1 / 90.0);
+            Assert.That(counts.Applied, Is.EqualTo(30));
         }
     }
 }

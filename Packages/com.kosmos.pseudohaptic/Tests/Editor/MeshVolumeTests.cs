@@ -69,6 +69,13 @@ namespace Kosmos.PseudoHaptic.Tests
             var flipped = (int[])t.Clone();
             for (int i = 0; i < flipped.Length; i += 3) (flipped[i + 1], flipped[i + 2]) = (flipped[i + 2], flipped[i + 1]);
             Assert.That(MeshVolume.Signed(xyz, flipped), Is.EqualTo(-1.0).Within(1e-12));
+            // A list that ends in an incomplete triangle (one or two stray indices) counts its whole triangles only.
+            foreach (int stray in new[] { 1, 2 })
+            {
+                var ragged = new int[t.Length + stray];
+                t.CopyTo(ragged, 0);
+                Assert.That(MeshVolume.Signed(xyz, ragged), Is.EqualTo(1.0).Within(1e-12), stray + " stray indices");
+            }
         }
 
         [Test]

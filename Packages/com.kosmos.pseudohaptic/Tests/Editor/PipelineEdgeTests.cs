@@ -177,6 +177,22 @@ namespace Kosmos.PseudoHaptic.Tests
             }
         }
 
+        // ---- the offsets the hold state gives (a scene's effect and the recorder read them) ----
+
+        [Test]
+        public void TheHoldStatesOffsetsAreTheHandLessTheObjectAndTheHandLessTheHeldPoint()
+        {
+            var s = Run.Solver(2);
+            s.BeginHold(1.0, 0.9, 0.0); // grabbed 10 cm above the pivot
+            var q = new Quest(s) { Hand = t => 1.0 + 0.3 * Math.Min(1, t), Jitter = 0, Time = 0.045 };
+            q.Run(1.5);
+            var state = s.State;
+            Assert.That(state.Offset, Is.EqualTo(state.HandY - state.ObjectY), "hand − object");
+            Assert.That(state.Offset, Is.GreaterThan(0.2), "a 2 kg object hangs below: the 10 cm grab and part of the 0.3 m lift");
+            Assert.That(state.RelativeOffset, Is.EqualTo(state.HandY - state.HeldY), "hand − held point");
+            Assert.That(state.RelativeOffset, Is.EqualTo(state.Offset - 0.1).Within(1e-12), "the grab's 10 cm taken out");
+        }
+
         // ---- the pose count a scene's effect reads (HoldState.PoseCount: up to three, from 0 again after a loss) ----
 
         [Test]

@@ -68,6 +68,9 @@ namespace Kosmos.PseudoHaptic.Tests
                         d.Name + "." + s.Name + ": unit '" + s.Unit + "'");
                 }
             }
+            // The profile's limits too (the same listing, table and file format show them).
+            foreach (var s in SolverLimits.Settings)
+                Assert.That(string.IsNullOrWhiteSpace(s.Summary), Is.False, "limits." + s.Name + ": what it is");
         }
 
         [Test]
