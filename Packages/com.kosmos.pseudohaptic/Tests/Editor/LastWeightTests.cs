@@ -65,14 +65,6 @@ namespace Kosmos.PseudoHaptic.Tests
                 Is.True, "input and position effects run every frame anyway");
         }
 
-        /// <summary>Does nothing, and never says it is still: every frame runs the pipeline.</summary>
-        sealed class NeverStill : WeightEffect
-        {
-            public override string Name => "never-still";
-            public override EffectStage Stage => EffectStage.Input;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
-        }
-
         /// <summary>Counts its calls; a function of the hand or not, as told.</summary>
         sealed class CountsWeighing : WeightEffect
         {

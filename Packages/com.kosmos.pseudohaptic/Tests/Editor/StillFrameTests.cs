@@ -16,14 +16,6 @@ namespace Kosmos.PseudoHaptic.Tests
     /// </summary>
     public class StillFrameTests
     {
-        /// <summary>Does nothing, and never says it is still: a profile with it runs the pipeline every frame.</summary>
-        sealed class NeverStill : WeightEffect
-        {
-            public override string Name => "never-still";
-            public override EffectStage Stage => EffectStage.Input;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) { }
-        }
-
         /// <summary>Counts the frames that run the pipeline, and is still whenever asked.</summary>
         sealed class CountsFrames : WeightEffect
         {
