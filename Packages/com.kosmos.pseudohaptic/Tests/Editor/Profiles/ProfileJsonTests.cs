@@ -73,6 +73,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"break-away\",\n\"distance\": \"far\" }\n]\n}", 6, "effect 'break-away': setting 'distance'", "a number (m)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"lowering-guard\",\n\"slack\": \"low\" }\n]\n}", 6, "effect 'lowering-guard': setting 'slack'", "a number (m)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-relaxation\",\n\"stillFraction\": \"slow\" }\n]\n}", 6, "effect 'offset-relaxation': setting 'stillFraction'", "a number (× v_std)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"tracking-loss-hold\",\n\"settleTime\": \"soon\" }\n]\n}", 6, "effect 'tracking-loss-hold': setting 'settleTime'", "a number (s)")]
         [TestCase("{\"format\":1,\"name\":\"x\",\"effects\":[],\"colour\":3}", 1, "unknown key 'colour'", "effects")]
         public void ABadFileNamesTheFileTheLineTheEffectAndTheSetting(string json, int line, string what, string hint)
         {

@@ -252,6 +252,10 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 double expected = x == 0 ? 1 : Math.Tanh(x) / x;
                 Assert.That(LateralInertia.ShownShare(x), Is.EqualTo(expected).Within(1e-12 * expected), "x = " + x);
             }
+            // Below the series' edge the series is as good as tanh itself (its next term, 17x⁶/315, is under 10⁻¹⁹): within
+            // a few ulps, not the 10⁻¹² the exponential's side is allowed.
+            foreach (double x in new[] { 1e-5, 1e-4, 5e-4, 8e-4, 9e-4, 9.99e-4 })
+                Assert.That(LateralInertia.ShownShare(x), Is.EqualTo(Math.Tanh(x) / x).Within(1e-15), "series, x = " + x);
             // The shown lag x·share grows with the lag, through the series' edge too.
             double previous = 0;
             for (int i = 1; i <= 20000; i++)
