@@ -159,7 +159,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void AnUnregisteredEffectIsNamedWithTheEffectsThatAreKnown()
         {
-            string known = "known effects: " + string.Join(", ", EffectRegistry.All.Select(d => d.Name));
+            string known = "known effects: " + string.Join(", ", EffectRegistry.All.Select(d => d.Name)) + "."; // the sentence ends there
             var entry = new ProfileEffect { effect = "gone" };
             Assert.That(Assert.Catch<ArgumentException>(() => entry.Values()).Message, Does.Contain("'gone' is unknown").And.Contain(known));
             var list = ProfileEffectList.FromProfile(NamedProfiles.Gain);
