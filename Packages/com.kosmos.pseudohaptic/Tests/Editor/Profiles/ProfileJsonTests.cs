@@ -74,6 +74,10 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"lowering-guard\",\n\"slack\": \"low\" }\n]\n}", 6, "effect 'lowering-guard': setting 'slack'", "a number (m)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-relaxation\",\n\"stillFraction\": \"slow\" }\n]\n}", 6, "effect 'offset-relaxation': setting 'stillFraction'", "a number (× v_std)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"tracking-loss-hold\",\n\"settleTime\": \"soon\" }\n]\n}", 6, "effect 'tracking-loss-hold': setting 'settleTime'", "a number (s)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-correction\",\n\"threshold\": \"x\" }\n]\n}", 6, "effect 'offset-correction': setting 'threshold'", "a number (m)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-correction\",\n\"band\": \"x\" }\n]\n}", 6, "effect 'offset-correction': setting 'band'", "a number (m)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-relaxation\",\n\"timeConstant\": \"x\" }\n]\n}", 6, "effect 'offset-relaxation': setting 'timeConstant'", "a number (s)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"speed-cap\",\n\"headroom\": \"x\" }\n]\n}", 6, "effect 'speed-cap': setting 'headroom'", "a number (× v_exp)")]
         [TestCase("{\"format\":1,\"name\":\"x\",\"effects\":[],\"colour\":3}", 1, "unknown key 'colour'", "effects")]
         public void ABadFileNamesTheFileTheLineTheEffectAndTheSetting(string json, int line, string what, string hint)
         {
