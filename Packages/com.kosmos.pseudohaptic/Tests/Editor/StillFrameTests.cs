@@ -16,16 +16,6 @@ namespace Kosmos.PseudoHaptic.Tests
     /// </summary>
     public class StillFrameTests
     {
-        /// <summary>Counts the frames that run the pipeline, and is still whenever asked.</summary>
-        sealed class CountsFrames : WeightEffect
-        {
-            public int Calls;
-            public override string Name => "counts-frames";
-            public override EffectStage Stage => EffectStage.Input;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Calls++;
-            protected override bool IsStill(in HoldState state, in SolverConstants constants) => true;
-        }
-
         static IEnumerable<TestCaseData> Cases()
         {
             var profiles = new[]
@@ -181,7 +171,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCaseSource(nameof(RestCases))]
         public void A30HzPoseOverFasterFramesRunsThePipelineOncePerPoseWhileTheHandRests(double mass, int rate)
         {
-            var counter = new CountsFrames();
+            var counter = new CountsPipelineFrames();
             var solver = new WeightSolver(WeightModel.FromMass(mass), NamedProfiles.Paper.With(counter));
             var frames = new HeadsetSimulator { FrameRate = rate, PoseRate = 30, JitterSd = 0.0015, Seed = rate }
                 .Render(HandPath.StartAt(1.0).Hold(0.5).MoveTo(1.3, 0.6).Hold(3.0));
@@ -221,7 +211,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void WhileTheObjectStillMovesOnItsOwnEveryFrameRunsThePipeline()
         {
             // A change of mass at rest: the offset glides to its new value over several frames that repeat the same pose.
-            var counter = new CountsFrames();
+            var counter = new CountsPipelineFrames();
             var solver = new WeightSolver(WeightModel.FromMass(2), NamedProfiles.Paper.With(counter));
             solver.BeginHold(1.0, 1.0, 0);
             var lifted = new HandSample(1.3, poseTime: 1);

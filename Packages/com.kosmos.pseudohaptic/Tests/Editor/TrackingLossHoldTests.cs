@@ -18,16 +18,6 @@ namespace Kosmos.PseudoHaptic.Tests
             protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Settling.Add(frame.Settling);
         }
 
-        /// <summary>Counts the frames that run the pipeline; still whenever asked.</summary>
-        sealed class CountsPipelineFrames : WeightEffect
-        {
-            public int Calls;
-            public override string Name => "counts-pipeline-frames";
-            public override EffectStage Stage => EffectStage.Input;
-            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Calls++;
-            protected override bool IsStill(in HoldState state, in SolverConstants constants) => true;
-        }
-
         [Test]
         public void TheHoldStateSaysHowLongTheLossHasLastedAndZeroOnceTracked()
         {
