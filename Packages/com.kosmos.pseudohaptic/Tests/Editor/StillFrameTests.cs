@@ -46,6 +46,14 @@ namespace Kosmos.PseudoHaptic.Tests
             });
         }
 
+        /// <summary>The first frame with a usable pose (the last frame if none is).</summary>
+        static int FirstUsable(TraceFrame[] frames)
+        {
+            int first = 0;
+            while (first < frames.Length - 1 && !frames[first].IsUsable) first++;
+            return first;
+        }
+
         [Test]
         public void OnHardCasesAStillFrameIsStillWhatThePipelineWouldLeave([Values(false, true)] bool adversarial)
         {
@@ -60,8 +68,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 var still = new WeightSolver(WeightModel.FromMass(s.MassKg), profile, s.StandardSpeed);
                 var full = new WeightSolver(WeightModel.FromMass(s.MassKg), profile.With(new NeverStill()), s.StandardSpeed);
                 var frames = s.Frames;
-                int first = 0;
-                while (first < frames.Length - 1 && !frames[first].IsUsable) first++; // the hold begins on a usable pose
+                int first = FirstUsable(frames); // the hold begins on a usable pose
                 still.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
                 full.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
                 for (int i = first + 1; i < frames.Length; i++)
@@ -88,8 +95,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 var profile = NamedProfiles.Get(s.Profile);
                 var reused = new WeightSolver(WeightModel.FromMass(s.MassKg), profile, s.StandardSpeed);
                 var frames = s.Frames;
-                int first = 0;
-                while (first < frames.Length - 1 && !frames[first].IsUsable) first++;
+                int first = FirstUsable(frames);
                 reused.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
                 HandSample last = frames[first].ToSample();
                 for (int i = first + 1; i < frames.Length; i++)
