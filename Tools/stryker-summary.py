@@ -6,6 +6,7 @@
     python3 Tools/stryker-summary.py out/stryker/PIECE --files      # also one row per file
     python3 Tools/stryker-summary.py out/stryker/PIECE --survivors  # list survivors and no-coverage mutants
     python3 Tools/stryker-summary.py out/stryker/PIECE --unchanged-at HEAD  # is the measured code still the code at HEAD?
+    python3 Tools/stryker-summary.py --standing HEAD out/stryker/*         # what the reports say of HEAD, piece by piece and whole
 
 The argument is a report file or a folder holding one (out/stryker/PIECE from Tools/stryker-piece.sh, whose
 run.txt gives the commit, start and end). Score = (killed + timeout) / (killed + timeout + survived + no
@@ -15,6 +16,10 @@ gives the score with timeouts counted as survivors (a lower bound; quality.md, "
 --unchanged-at COMMIT compares the source the report holds of every file of the piece with that file at COMMIT (git show,
 run from the repository): where none differs, the mutants are the same at COMMIT and the score is a lower bound there
 (tests added since can only kill more); exit 1 when a file differs, naming it.
+--standing COMMIT reads every report given and says what they measure of COMMIT: per piece, its newest run whose files
+are all at COMMIT as measured (else its newest run, marked stale); per assembly (Core, Logic, Evaluation), every mutant of
+every file at COMMIT with the status of the newest report that tested it on that very source, the files and mutants no
+such report tested, and the score of what was tested. A mutant's source must match the whole file, not only its span.
 Python 3 standard library only. Exit 2 on a missing or unreadable report.
 """
 import argparse
@@ -95,17 +100,127 @@ def changed_at(files, commit, root):
             changed.append(short(name, root))
     return changed
 
+ASSEMBLIES = ("Core", "Logic", "Evaluation")
+PACKAGE = "Packages/com.kosmos.pseudohaptic/Runtime/"
+
+
+def git_text(commit, path):
+    shown = subprocess.run(["git", "show", "%s:%s" % (commit, path)], capture_output=True)
+    return shown.stdout.decode("utf-8-sig").replace("\r\n", "\n") if shown.returncode == 0 else None
+
+
+def mutate_filtered(m):
+    return m.get("status") == "Ignored" and "mutate filter" in (m.get("statusReason") or "")
+
+
+def mutant_key(m):
+    s, e = m["location"]["start"], m["location"]["end"]
+    return (s["line"], s["column"], e["line"], e["column"], m.get("mutatorName"), m.get("replacement"))
+
+
+def standing(commit, folders):
+    """Per piece and per assembly: what the reports in folders measure of the code at commit."""
+    runs = []
+    for folder in folders:
+        try:
+            with open(find_report(folder), encoding="utf-8") as f:
+                report = json.load(f)
+        except FileNotFoundError as e:
+            print("stryker-summary: skipped (a run unfinished or stopped): %s" % e, file=sys.stderr)
+            continue
+        except (OSError, ValueError) as e:
+            print("stryker-summary: %s: %s" % (folder, e), file=sys.stderr)
+            return 2
+        meta = read_meta(folder if os.path.isdir(folder) else os.path.dirname(folder))
+        runs.append((meta.get("start", ""), meta, report))
+    runs.sort(key=lambda r: r[0], reverse=True)  # newest first
+    listed = subprocess.run(["git", "ls-tree", "-r", "--name-only", commit, PACKAGE], capture_output=True, text=True)
+    if listed.returncode != 0:
+        print("stryker-summary: git ls-tree %s failed: %s" % (commit, listed.stderr.strip()), file=sys.stderr)
+        return 2
+    sources = {p: git_text(commit, p) for p in listed.stdout.split() if p.endswith(".cs")}
+
+    print("| piece | Stryker's score | killed | survived | timeouts | no coverage | commit | date (UTC) | at %s |" % commit)
+    print("|---|---:|---:|---:|---:|---:|---|---|---|")
+    seen = set()
+    for start, meta, report in runs:
+        piece = meta.get("piece", "?")
+        if piece in seen:
+            continue
+        files = report.get("files", {})
+        changed = [n for n in files if any(m.get("status") in COUNTED for m in files[n].get("mutants", []))
+                   and sources.get(repo_path(n)) != files[n].get("source", "").replace("\r\n", "\n")]
+        if changed:
+            # an older run of the piece may still be of this code
+            older = [r for r in runs if r[1].get("piece") == piece and r[0] < start]
+            if any(all(sources.get(repo_path(n)) == f.get("source", "").replace("\r\n", "\n")
+                       for n, f in r[2].get("files", {}).items()
+                       if any(m.get("status") in COUNTED for m in f.get("mutants", []))) for r in older):
+                continue
+        seen.add(piece)
+        c = counts([m for f in files.values() for m in f.get("mutants", [])])
+        where = "as measured" if not changed else "stale: " + ", ".join(
+            "`%s`" % short(n, report.get("projectRoot", "")) for n in sorted(changed)) + " changed"
+        print("| %s | %s | %d | %d | %d | %d | `%s` | %s %s | %s |" % (
+            piece, pct(score(c)), c["Killed"], c["Survived"], c["Timeout"], c["NoCoverage"], meta.get("commit", "?"),
+            start[:10], start[11:16], where))
+
+    print()
+    # files: the assembly's at commit; with a report: a report holds them as they are at commit (a file without mutants
+    # counts here too); mutants: theirs, tested or not; tested: those a report of that source tested.
+    print("| assembly at %s | files | with a report | mutants | tested | killed | survived | timeouts | no coverage "
+          "| score of the tested |" % commit)
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    untested_files = {}
+    for assembly in ASSEMBLIES:
+        prefix = PACKAGE + assembly + "/"
+        paths = sorted(p for p in sources if p.startswith(prefix))
+        statuses, known, untested = {}, {}, []
+        for path in paths:
+            seen_as_is = False
+            for start, meta, report in runs:
+                for name, f in report.get("files", {}).items():
+                    if repo_path(name) != path or f.get("source", "").replace("\r\n", "\n") != sources[path]:
+                        continue
+                    seen_as_is = True
+                    for m in f.get("mutants", []):
+                        key = (path,) + mutant_key(m)
+                        known[key] = True
+                        if not mutate_filtered(m) and key not in statuses:
+                            statuses[key] = m.get("status")
+            if not seen_as_is:
+                untested.append(path)
+        c = counts([{"status": st} for st in statuses.values()])
+        not_tested = sum(1 for k in known if k not in statuses)
+        untested_files[assembly] = untested
+        print("| %s | %d | %d | %d | %d | %d | %d | %d | %d | %s |" % (
+            assembly, len(paths), len(paths) - len(untested), len(known), len(statuses), c["Killed"], c["Survived"], c["Timeout"],
+            c["NoCoverage"], pct(score(c))))
+    for assembly in ASSEMBLIES:
+        if untested_files[assembly]:
+            print()
+            print("%s files no report measured as they are at %s: %s" % (assembly, commit, ", ".join(
+                "`%s`" % p[len(PACKAGE) + len(assembly) + 1:] for p in untested_files[assembly])))
+    return 0
+
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("report", help="mutation-report.json or a folder holding one (out/stryker/PIECE)")
+    ap.add_argument("report", nargs="+", help="mutation-report.json or a folder holding one (out/stryker/PIECE); "
+                    "several only with --standing")
     ap.add_argument("--piece", help="piece name (default: run.txt's, else the folder's name)")
     ap.add_argument("--commit", help="commit measured (default: run.txt's)")
     ap.add_argument("--date", help="when (default: run.txt's start–end)")
     ap.add_argument("--files", action="store_true", help="also print one row per file")
     ap.add_argument("--survivors", action="store_true", help="list survived and no-coverage mutants")
     ap.add_argument("--unchanged-at", metavar="COMMIT", help="check that every file of the piece is at COMMIT as measured")
+    ap.add_argument("--standing", metavar="COMMIT", help="what the reports given measure of COMMIT, per piece and assembly")
     a = ap.parse_args(argv)
+    if a.standing:
+        return standing(a.standing, a.report)
+    if len(a.report) > 1:
+        ap.error("several reports only with --standing")
+    a.report = a.report[0]
     try:
         report_path = find_report(a.report)
         with open(report_path, encoding="utf-8") as f:
