@@ -135,15 +135,14 @@ namespace Kosmos.PseudoHaptic
             if (d == null) throw Error(source, nameValue.Line, "effect '" + nameValue.Text + "' is unknown; known effects: " + Known());
             foreach (var e in before)
                 if (e.Name == d.Name) throw Error(source, nameValue.Line, "effect '" + d.Name + "' is listed twice");
+            // A key given twice is refused by the reader ("key '…' given twice"), so each setting is set at most once here.
             var s = d.DefaultSettings();
-            var seen = new HashSet<string>();
             int lastLine = item.Line;
             foreach (var m in item.Members)
             {
                 if (m.Key == "effect") continue;
                 int i = s.IndexOf(m.Key);
                 if (i < 0) throw Error(source, m.Value.Line, "effect '" + d.Name + "': unknown setting '" + m.Key + "'; its settings: " + d.SettingNames());
-                if (!seen.Add(m.Key)) throw Error(source, m.Value.Line, "effect '" + d.Name + "': setting '" + m.Key + "' is given twice");
                 s[i] = SettingValue(d.Settings[i], m.Value, source, "effect '" + d.Name + "': setting '" + m.Key + "'");
                 lastLine = m.Value.Line;
             }
@@ -157,13 +156,11 @@ namespace Kosmos.PseudoHaptic
             var settings = SolverLimits.Settings;
             var values = new double[settings.Count];
             for (int i = 0; i < values.Length; i++) values[i] = settings[i].Default;
-            var seen = new HashSet<string>();
-            foreach (var m in v.Members)
+            foreach (var m in v.Members) // each key once (the reader refuses a key given twice)
             {
                 int i = -1;
                 for (int k = 0; k < settings.Count; k++) if (settings[k].Name == m.Key) i = k;
                 if (i < 0) throw Error(source, m.Value.Line, "limits: unknown setting '" + m.Key + "'");
-                if (!seen.Add(m.Key)) throw Error(source, m.Value.Line, "limits: setting '" + m.Key + "' is given twice");
                 values[i] = SettingValue(settings[i], m.Value, source, "limits: setting '" + m.Key + "'");
                 try { settings[i].Check(values[i]); }
                 catch (ArgumentException e) { throw Error(source, m.Value.Line, "limits: setting '" + m.Key + "': " + EffectDescriptor.FirstLine(e.Message)); }

@@ -36,7 +36,6 @@ namespace Kosmos.PseudoHaptic
         SettingDescriptor(string name, string unit, SettingKind kind, double @default, double min, double max, bool minExclusive, string summary, Func<object, double> read)
         {
             if (string.IsNullOrWhiteSpace(name)) throw new ArgumentException("a setting needs a name.", nameof(name));
-            if (read == null) throw new ArgumentNullException(nameof(read));
             Name = name;
             Unit = unit ?? "";
             Kind = kind;
@@ -48,16 +47,25 @@ namespace Kosmos.PseudoHaptic
             Default = Check(@default);
         }
 
-        /// <summary>A number in [min, max] (both may be infinite: then only finite values are allowed).</summary>
+        /// <summary>A finite number in [min, max] (either bound may be infinite: the range is then unbounded on that side).</summary>
         public static SettingDescriptor Number<T>(string name, string unit, double @default, double min, double max, string summary, Func<T, double> read)
-            => new SettingDescriptor(name, unit, SettingKind.Number, @default, min, max, false, summary, o => read((T)o));
+            => new SettingDescriptor(name, unit, SettingKind.Number, @default, min, max, false, summary, Reader(read));
 
         /// <summary>A finite number greater than 0 (and at most <paramref name="max"/>).</summary>
         public static SettingDescriptor Positive<T>(string name, string unit, double @default, string summary, Func<T, double> read, double max = double.PositiveInfinity)
-            => new SettingDescriptor(name, unit, SettingKind.Number, @default, 0, max, true, summary, o => read((T)o));
+            => new SettingDescriptor(name, unit, SettingKind.Number, @default, 0, max, true, summary, Reader(read));
 
         public static SettingDescriptor Boolean<T>(string name, bool @default, string summary, Func<T, bool> read)
-            => new SettingDescriptor(name, "", SettingKind.Boolean, @default ? 1 : 0, 0, 1, false, summary, o => read((T)o) ? 1 : 0);
+        {
+            if (read == null) throw new ArgumentNullException(nameof(read));
+            return new SettingDescriptor(name, "", SettingKind.Boolean, @default ? 1 : 0, 0, 1, false, summary, o => read((T)o) ? 1 : 0);
+        }
+
+        static Func<object, double> Reader<T>(Func<T, double> read)
+        {
+            if (read == null) throw new ArgumentNullException(nameof(read));
+            return o => read((T)o);
+        }
 
         /// <summary>The value <paramref name="owner"/> (an effect of this setting's type, or limits) holds.</summary>
         public double Read(object owner) => _read(owner);
@@ -70,18 +78,20 @@ namespace Kosmos.PseudoHaptic
                 if (value == 0 || value == 1) return value;
                 throw new ArgumentOutOfRangeException(Name, value, Name + " must be true or false (1 or 0), got " + Text(value) + ".");
             }
-            if (MinExclusive && Min == 0 && double.IsPositiveInfinity(Max)) return ConfigurationGuard.Positive(value, Name);
-            if (double.IsNegativeInfinity(Min) && double.IsPositiveInfinity(Max)) return ConfigurationGuard.Finite(value, Name);
+            // Only Positive makes MinExclusive, with Min = 0.
+            if (MinExclusive && double.IsPositiveInfinity(Max)) return ConfigurationGuard.Positive(value, Name);
+            // An infinite bound leaves that side open; the value itself is still finite.
+            if (double.IsNegativeInfinity(Min) || double.IsPositiveInfinity(Max)) ConfigurationGuard.Finite(value, Name);
             if (MinExclusive)
             {
-                if (double.IsNaN(value) || double.IsInfinity(value) || value <= Min || value > Max)
+                if (double.IsNaN(value) || value <= Min || value > Max) // Max is finite here, so ±∞ fails a bound
                     throw new ArgumentOutOfRangeException(Name, value, Name + " must lie in (" + Text(Min) + ", " + Text(Max) + "], got " + Text(value) + ".");
                 return value;
             }
             return ConfigurationGuard.InRange(value, Min, Max, Name);
         }
 
-        /// <summary>The valid range as docs write it: "[0.001, 10]", "> 0", "any finite", "true/false".</summary>
+        /// <summary>The valid range as docs write it: "[0.001, 10]", "> 0", "(0, 2]", ">= 1", "<= 1", "any finite", "true/false".</summary>
         public string RangeText
         {
             get
@@ -89,7 +99,8 @@ namespace Kosmos.PseudoHaptic
                 if (Kind == SettingKind.Boolean) return "true/false";
                 if (MinExclusive && double.IsPositiveInfinity(Max)) return "> " + Text(Min);
                 if (MinExclusive) return "(" + Text(Min) + ", " + Text(Max) + "]";
-                if (double.IsNegativeInfinity(Min) && double.IsPositiveInfinity(Max)) return "any finite";
+                if (double.IsNegativeInfinity(Min)) return double.IsPositiveInfinity(Max) ? "any finite" : "<= " + Text(Max);
+                if (double.IsPositiveInfinity(Max)) return ">= " + Text(Min);
                 return "[" + Text(Min) + ", " + Text(Max) + "]";
             }
         }
