@@ -9,7 +9,7 @@ import re
 import sys
 import xml.etree.ElementTree as ET
 
-ASSEMBLIES = ("Kosmos.PseudoHaptic.Core", "Kosmos.PseudoHaptic.Evaluation", "Kosmos.PseudoHaptic.Unity")
+ASSEMBLIES = ("Kosmos.PseudoHaptic.Core", "Kosmos.PseudoHaptic.Logic", "Kosmos.PseudoHaptic.Evaluation", "Kosmos.PseudoHaptic.Unity")
 UNITY_FOLDERS = ("Runtime/Unity", "Runtime/Meta", "Runtime/Interaction", "Runtime/XRHands", "Editor", "Samples~")
 
 
