@@ -1,0 +1,138 @@
+using System;
+using System.Collections.Generic;
+using System.Diagnostics;
+using System.Globalization;
+using System.IO;
+using System.Linq;
+using System.Runtime.InteropServices;
+using System.Text.RegularExpressions;
+using System.Threading;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// strace attached to this very test process (every thread), so a test sees the system calls the code under test
+    /// makes in-process, as it runs: the same code a mutation tool swaps in, unlike a child process that loads its own
+    /// copy. Linux only, and only where strace is installed and may trace (root, or ptrace allowed); elsewhere (a Unity
+    /// editor on Windows or macOS) the test is ignored with the reason. <c>-y</c> shows each descriptor's path.
+    /// </summary>
+    sealed class SelfTrace : IDisposable
+    {
+        readonly Process _strace;
+        readonly string _file;
+        bool _stopped;
+
+        SelfTrace(Process strace, string file) { _strace = strace; _file = file; }
+
+        /// <summary>Attaches strace tracing <paramref name="syscalls"/> (strace's <c>-e trace=</c>), with <paramref name="inject"/>
+        /// (<c>-e inject=</c>) if given, and returns once this thread is traced.</summary>
+        public static SelfTrace Start(string folder, string syscalls, string inject = null)
+        {
+            if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux)) Assert.Ignore("strace: Linux only");
+            string strace = new[] { "/usr/bin/strace", "/bin/strace", "/usr/local/bin/strace" }.FirstOrDefault(File.Exists);
+            if (strace == null) Assert.Ignore("strace is not installed (.ci/run installs it)");
+            if (TracerOfThisThread() != 0) Assert.Ignore("this process is already traced (a debugger?)");
+            string file = Path.Combine(folder, "self-" + Guid.NewGuid().ToString("N").Substring(0, 8) + ".strace");
+            var info = new ProcessStartInfo(strace)
+            {
+                Arguments = "-f -qq -y -o \"" + file + "\" -e trace=" + syscalls + (inject != null ? " -e inject=" + inject : "")
+                    + " -p " + Process.GetCurrentProcess().Id.ToString(CultureInfo.InvariantCulture),
+                UseShellExecute = false,
+                RedirectStandardError = true,
+                RedirectStandardOutput = true,
+            };
+            var p = Process.Start(info);
+            var trace = new SelfTrace(p, file);
+            var clock = Stopwatch.StartNew();
+            while (TracerOfThisThread() == 0)
+            {
+                if (p.HasExited)
+                    Assert.Ignore("strace cannot attach here: " + p.StandardError.ReadToEnd().Trim());
+                if (clock.ElapsedMilliseconds > 20000)
+                {
+                    trace.Dispose();
+                    Assert.Ignore("strace did not attach within 20 s");
+                }
+                Thread.Sleep(5);
+            }
+            return trace;
+        }
+
+        /// <summary>Detaches strace (SIGINT, as a user's Ctrl-C) and returns the calls it saw.</summary>
+        public List<Call> Stop()
+        {
+            Detach();
+            var calls = new List<Call>();
+            foreach (string line in File.ReadAllLines(_file))
+            {
+                var m = Complete.Match(line);
+                if (m.Success) calls.Add(new Call(m.Groups[1].Value, m.Groups[2].Value, long.Parse(m.Groups[3].Value, CultureInfo.InvariantCulture)));
+            }
+            return calls;
+        }
+
+        void Detach()
+        {
+            if (_stopped) return;
+            _stopped = true;
+            if (!_strace.HasExited)
+            {
+                using (var kill = Process.Start(new ProcessStartInfo("kill", "-INT " + _strace.Id.ToString(CultureInfo.InvariantCulture)) { UseShellExecute = false }))
+                    kill.WaitForExit(10000);
+                if (!_strace.WaitForExit(20000)) _strace.Kill();
+            }
+            var clock = Stopwatch.StartNew();
+            while (TracerOfThisThread() != 0 && clock.ElapsedMilliseconds < 10000) Thread.Sleep(5);
+        }
+
+        public void Dispose()
+        {
+            Detach();
+            _strace.Dispose();
+        }
+
+        static int TracerOfThisThread()
+        {
+            foreach (string line in File.ReadAllLines("/proc/thread-self/status"))
+                if (line.StartsWith("TracerPid:", StringComparison.Ordinal))
+                    return int.Parse(line.Substring(10).Trim(), CultureInfo.InvariantCulture);
+            return 0;
+        }
+
+        // "1234 fsync(5</tmp/x/.ph0a1b2c3d.tmp>) = 0", "1234 rename(\"/tmp/x/a\", \"/tmp/x/b\") = 0", "… = -1 EIO (…) (INJECTED)".
+        static readonly Regex Complete = new Regex(@"^\d+\s+(\w+)\((.*)\)\s+=\s+(-?\d+)");
+
+        /// <summary>One completed call: its name, its arguments as strace prints them, its result (−1 on an error).</summary>
+        public sealed class Call
+        {
+            public readonly string Name, Args;
+            public readonly long Result;
+            public Call(string name, string args, long result) { Name = name; Args = args; Result = result; }
+
+            /// <summary>The path of a call on a descriptor (<c>fsync(5&lt;/a/b&gt;)</c>), or null.</summary>
+            public string DescriptorPath
+            {
+                get
+                {
+                    int open = Args.IndexOf('<'), close = Args.LastIndexOf('>');
+                    return open >= 0 && close > open ? Args.Substring(open + 1, close - open - 1) : null;
+                }
+            }
+
+            /// <summary>The quoted paths of the call (a rename's source and destination).</summary>
+            public string[] Paths
+            {
+                get
+                {
+                    var found = Regex.Matches(Args, "\"((?:[^\"\\\\]|\\\\.)*)\"");
+                    var paths = new string[found.Count];
+                    for (int i = 0; i < paths.Length; i++) paths[i] = found[i].Groups[1].Value;
+                    return paths;
+                }
+            }
+
+            public override string ToString() => Name + "(" + Args + ") = " + Result;
+        }
+    }
+}
