@@ -63,8 +63,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void TheSameTripleInAnotherQuestionnaireOrConditionIsNoDuplicate()
         {
-            var scores = Read(Header + "P1,on,SUS,1\nP1,on,IPQ,2\nP1,off,SUS,3\nP2,on,SUS,4\n");
-            Assert.That(scores.Count, Is.EqualTo(4));
+            var scores = Read(Header + "P1,on,SUS,1\nP1,on,IPQ,2\nP1,off,SUS,3\nP2,on,SUS,4\nP1o,n,SUS,5\nP1,o,nSUS,6\n");
+            Assert.That(scores.Count, Is.EqualTo(6), "the three fields are kept apart, not run together");
         }
 
         [Test]

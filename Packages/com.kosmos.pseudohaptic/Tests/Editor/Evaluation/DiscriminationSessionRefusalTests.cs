@@ -159,6 +159,35 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(s.FileText(), Is.EqualTo(TrialsCsv.Header + "\n" + Row(t, 1) + "\n"), "rows kept verbatim under the session's own header");
         }
 
+        static Staircase StaircaseOf(string participant, string condition, double start, int maxTrials)
+            => new Staircase(participant, condition, 0.5, start, 0.0625, 2, 8, 6, 5, maxTrials: maxTrials);
+
+        [Test]
+        public void AFileThatDoesNotFollowTheStaircaseIsRefusedNamingWhereItStands()
+        {
+            var first = new DiscriminationSession("P1", "on", TrialsPath, (p, c) => StaircaseOf(p, c, 0.75, 200));
+            for (int i = 0; i < 3; i++)
+            {
+                first.NoteLift(PairSide.Left);
+                first.NoteLift(PairSide.Right);
+                Assert.That(first.Answer(PairSide.Left), Is.True);
+            }
+            string before = File.ReadAllText(TrialsPath);
+
+            var other = Assert.Throws<EvaluationFormatException>(() => new DiscriminationSession("P1", "on", TrialsPath, (p, c) => StaircaseOf(p, c, 0.625, 200)));
+            Assert.That(other.Line, Is.EqualTo(2));
+            Assert.That(other.Reason, Is.EqualTo("this row does not follow the staircase (trial 1 at 0.625): was the file written with other settings or seed?"));
+
+            var shorter = Assert.Throws<EvaluationFormatException>(() => new DiscriminationSession("P1", "on", TrialsPath, (p, c) => StaircaseOf(p, c, 0.75, 2)));
+            Assert.That(shorter.Line, Is.EqualTo(4));
+            Assert.That(shorter.Reason, Is.EqualTo("this row does not follow the staircase (trial none: it had finished): was the file written with other settings or seed?"));
+            Assert.That(File.ReadAllText(TrialsPath), Is.EqualTo(before));
+
+            var same = new DiscriminationSession("P1", "on", TrialsPath, (p, c) => StaircaseOf(p, c, 0.75, 200));
+            Assert.That(same.ResumedCount, Is.EqualTo(3));
+            Assert.That(same.Staircase.Trials.Count, Is.EqualTo(3));
+        }
+
         [Test]
         public void AnAnswerWhoseWriteFailsIsWithdrawn()
         {

@@ -225,6 +225,22 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void TheSidesAreDrawnFromTheSeedOnePerTrial()
+        {
+            var s = Make(stop: 100, last: 1);
+            var draws = new SeededRandom(7);
+            int comparisonFirst = 0;
+            for (int i = 0; i < 40; i++)
+            {
+                var t = s.Next();
+                Assert.That(t.ComparisonFirst, Is.EqualTo(draws.NextInt(2) == 1), "trial " + (i + 1));
+                if (t.ComparisonFirst) comparisonFirst++;
+                s.Record(i % 2);
+            }
+            Assert.That(comparisonFirst, Is.InRange(10, 30), "both orders occur");
+        }
+
+        [Test]
         public void TheSameSeedGivesTheSameSides()
         {
             var a = Make();
