@@ -337,5 +337,52 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Math.Abs(obj - hand), Is.LessThanOrEqualTo(DocumentedGlideSpeed * dt + 1e-9),
                 "the object stepped " + obj + " m where the hand stepped " + hand + " m: the change of mass did not glide");
         }
-    }
+    
+        // ---- the bounds ALGORITHM.md writes, at the bound itself ----
+
+        /// <summary>A scene's position effect that puts the object at <see cref="At"/> on the frame numbered <see cref="On"/>.</summary>
+        sealed class PlaceAt : WeightEffect
+        {
+            public double At;
+            public int On, Frame;
+            public override string Name => "place-at";
+            public override EffectStage Stage => EffectStage.Position;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
+            {
+                if (Frame++ == On) frame.NewObjectY = At;
+            }
+        }
+
+        [TestCase(1e5, true)]
+        [TestCase(-1e5, true)]
+        [TestCase(100000.00000000001, false)]
+        [TestCase(-100000.00000000001, false)]
+        public void AHeightOfExactly1E5IsAHeightAndOneBeyondItIsNot(double at, bool taken)
+        {
+            // ALGORITHM.md §3 step 11: a height that "lies beyond ±10⁵ m" is refused; ±10⁵ m itself is a height.
+            var s = new WeightSolver(WeightModel.FromMass(0.045), new WeightProfile("scene", new WeightEffect[] { new PlaceAt { At = at, On = 3 } }));
+            s.BeginHold(1.0, 1.0, 0);
+            double before = double.NaN;
+            for (int i = 1; i <= 4; i++)
+            {
+                before = s.ObjectY;
+                s.Step(new HandSample(1.0 + 0.01 * i, true, true, i / 30.0), 1 / 30.0);
+            }
+            Assert.That(s.ObjectY, Is.EqualTo(taken ? at : before));
+        }
+
+        [TestCase(0.005, 0.0)]
+        [TestCase(0.00500001, 0.00500001)]
+        [TestCase(-0.005, 0.0)]
+        [TestCase(-0.00500001, -0.00500001)]
+        public void TheLiftIsMeasuredFromTheMedianOnlyWhenTheGrabsPoseLiesMoreThan5MmFromIt(double later, double startShift)
+        {
+            // ALGORITHM.md: the grab's pose is taken for a glitch when it lies *more than* 5 mm from the median of the first
+            // three poses; at exactly 5 mm it is the hand's own pose (the heights are exact in binary: 0 and ±0.005).
+            var s = new WeightSolver(WeightModel.FromMass(0.5), NamedProfiles.Paper);
+            s.BeginHold(0.0, 0.0, 0);
+            for (int i = 1; i <= 2; i++) s.Step(new HandSample(later, true, true, i / 30.0), 1 / 30.0);
+            Assert.That(s.State.StartY, Is.EqualTo(startShift));
+        }
+}
 }

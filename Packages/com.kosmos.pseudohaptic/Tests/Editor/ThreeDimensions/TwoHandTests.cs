@@ -167,5 +167,32 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
             Assert.That(afterReturn, Is.LessThan(1e-9), "the far return is re-anchored: nothing moves while the hands rest");
             Assert.That(Run3D.MaxStep3D(r), Is.LessThan(0.02), "crossing moves the midpoint little; no step anywhere");
         }
-    }
+    
+        [Test]
+        public void EachHandIsJudgedAgainstTheWorkspaceAndTheFollowedPointNotAgain()
+        {
+            // The smallest workspace (1 m), 3 m above the floor. Hand 2 joins 0.9 m above hand 1, hand 1 lets go, and hand 2 comes down to 0.95 m
+            // below where the hold began: each hand stays within 1 m of it, but the followed point, re-anchored so that the
+            // object does not jump when the hands change, ends 1.85 m below it. The hands were judged; the point they make
+            // is followed (the y solver does not judge it again: in 3D it would refuse it as a pose outside the workspace).
+            var xyz = NamedProfiles.Xyz;
+            var s = new WeightSolver3D(WeightModel.FromMass(PhysicalConstants.StandardMassKg),
+                new WeightProfile("xyz-1m", xyz.Effects, new SolverLimits(workspaceRadius: 1.0), xyz.HandFilter));
+            s.BeginHold(Run3D.At(0, 3.0, 0.3, 0), HandPose.Lost, 0, 3.0, 0.3);
+            double t = 0;
+            for (int i = 0; i < 90; i++) { t += 1 / 90.0; s.Step(Run3D.At(0, 3.0, 0.3, t), Run3D.At(0, 3.9, 0.3, t), 1 / 90.0); }
+            Assert.That(s.FollowedHands, Is.EqualTo(2));
+            Assert.That(s.FollowedY, Is.EqualTo(3.0).Within(1e-12), "re-anchored: the point stays where the object is");
+            s.SetGrip(1, false);
+            for (int i = 1; i <= 270; i++)
+            {
+                t += 1 / 90.0;
+                double y = 3.9 - 1.85 * Math.Min(1, i / 180.0);
+                s.Step(HandPose.Lost, Run3D.At(0, y, 0.3, t), 1 / 90.0);
+            }
+            Assert.That(s.FollowedHands, Is.EqualTo(1));
+            Assert.That(s.FollowedY, Is.EqualTo(3.0 - 1.85).Within(1e-9));
+            Assert.That(s.ObjectY, Is.EqualTo(s.FollowedY).Within(1e-9), "the standard weight: rigid with the point it follows");
+        }
+}
 }
