@@ -27,7 +27,7 @@ namespace Kosmos.PseudoHaptic
 
         // The hold.
         bool _holding, _brokeAway;
-        bool _grip1 = true, _grip2 = true;   // the driver lets the hand take part
+        bool _grip1, _grip2;                 // the driver lets the hand take part (both, from each hold's begin)
         bool _holds1, _holds2;               // the hand has been followed since it gripped (carries its share)
         bool _in1, _in2;                     // followed this frame
         bool _last1, _last2;                 // the last non-empty followed set
@@ -178,7 +178,7 @@ namespace Kosmos.PseudoHaptic
             _settleTime = loss != null ? loss.SettleTime : 0;
             _limits = profile.Limits;
             _corrected = profile.Has<OffsetCorrection>();
-            ApplyMass(force: true, standardSpeed);
+            ApplyMass(standardSpeed); // the y solver was just configured with the per-hand model: reconfigured only if it is not the one wanted
         }
 
         /// <summary>One-hand hold: the hand (may be untracked) and where the object is.</summary>
@@ -229,7 +229,7 @@ namespace Kosmos.PseudoHaptic
             _hasGrab = _beyond = false;
 
             Select(first, second, first.IsUsable, second.IsUsable, 0, begin: true);
-            ApplyMass(force: false, _y.StandardSpeed);
+            ApplyMass(_y.StandardSpeed);
             if (_in1 || _in2)
             {
                 if (withOffset) _y.BeginHoldWithGrabOffset(_vy, grabOffsetY, PoseTime(first, second));
@@ -255,7 +255,7 @@ namespace Kosmos.PseudoHaptic
             if (hand == 1) { _grip1 = grips; if (!grips) { _holds1 = false; _reach1.Reset(); } }
             else { _grip2 = grips; if (!grips) { _holds2 = false; _reach2.Reset(); } }
             if (!grips) Forget(hand);
-            ApplyMass(force: false, _y.StandardSpeed);
+            ApplyMass(_y.StandardSpeed);
         }
 
         /// <summary>A hand that lets go leaves the last followed set now, so that whatever is followed next (the other
@@ -292,7 +292,7 @@ namespace Kosmos.PseudoHaptic
             bool holdsBefore = _holds1 && _holds2;
             bool was1 = _in1, was2 = _in2;
             Select(first, second, u1, u2, dt, begin: false);
-            if (holdsBefore != (_holds1 && _holds2)) ApplyMass(force: false, _y.StandardSpeed);
+            if (holdsBefore != (_holds1 && _holds2)) ApplyMass(_y.StandardSpeed);
 
             // y: the followed point (confident only when every followed hand is), or nothing when no hand is followed.
             HandSample sample;
@@ -421,11 +421,11 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>The y solver sees the per-hand mass while both hands hold, the whole mass otherwise.</summary>
-        void ApplyMass(bool force, double standardSpeed)
+        void ApplyMass(double standardSpeed)
         {
             bool two = _holds1 && _holds2 && _twoHands != null;
             var want = two ? _perHand : _model;
-            if (force || !ReferenceEquals(want, _y.Model)) _y.Configure(want, _y.Profile, standardSpeed);
+            if (!ReferenceEquals(want, _y.Model)) _y.Configure(want, _y.Profile, standardSpeed);
             _tau = two ? _tauTwo : _tauOne;
         }
 

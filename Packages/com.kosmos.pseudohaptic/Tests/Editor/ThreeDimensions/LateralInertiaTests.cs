@@ -221,6 +221,30 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void TheLagFollowsTheCueStrengthAsTheGainItGives([ValueSource(typeof(CueStrengths), nameof(CueStrengths.Others))] double s)
+        {
+            // Issue 31: the lateral time constant follows the gain the person's cue strength gives (G^s), as the y solver's
+            // weight does: 2 kg at strength s trails sideways exactly as the mass whose gain at strength 1 is G^s (found by
+            // bisection on the mass), and not as 2 kg at strength 1.
+            var frames = new Headset3D().Render(Carry(), null, 3.5);
+            var atS = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz).At(s);
+            double gain = atS.Vertical.Gain, lo = 0.05, hi = 1e4; // the gain falls with the mass
+            for (int i = 0; i < 200; i++)
+            {
+                double mid = Math.Sqrt(lo * hi);
+                if (new WeightSolver3D(WeightModel.FromMass(mid), NamedProfiles.Xyz).Vertical.Gain > gain) lo = mid; else hi = mid;
+            }
+            var sameGain = new WeightSolver3D(WeightModel.FromMass(lo), NamedProfiles.Xyz);
+            Assert.That(sameGain.Vertical.Gain, Is.EqualTo(gain).Within(1e-12));
+            var a = Run3D.Of(atS, frames);
+            var b = Run3D.Of(sameGain, frames);
+            var one = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz), frames);
+            for (int i = 0; i < a.X.Length; i++)
+                Assert.That(a.X[i], Is.EqualTo(b.X[i]).Within(1e-9), "frame " + i);
+            Assert.That(Math.Abs(MaxLag(a) - MaxLag(one)), Is.GreaterThan(0.002), "strength " + s + " trails otherwise than strength 1");
+        }
+
+        [Test]
         public void TheTimeConstantIsTauTimesOneMinusGAndNoneForTheStandardOrLighter()
         {
             var e = new LateralInertia();
