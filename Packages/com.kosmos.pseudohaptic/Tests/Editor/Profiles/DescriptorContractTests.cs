@@ -100,6 +100,9 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var b = SettingDescriptor.Boolean<Probe>("on", true, "", e => e.On);
             Assert.That(b.Kind, Is.EqualTo(SettingKind.Boolean));
+            Assert.That(b.MinExclusive, Is.False, "off (0) is a value");
+            Assert.That(b.Min, Is.EqualTo(0.0));
+            Assert.That(b.Max, Is.EqualTo(1.0));
             Assert.That(b.Default, Is.EqualTo(1.0));
             Assert.That(SettingDescriptor.Boolean<Probe>("off", false, "", e => e.On).Default, Is.EqualTo(0.0));
             Assert.That(b.Check(1), Is.EqualTo(1.0));
@@ -226,6 +229,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase("a bad value (Parameter 'level')", "a bad value")]
         [TestCase("first line\nsecond", "first line")]
         [TestCase("first line\r\nsecond", "first line")]
+        [TestCase("\nsecond", "")]
         [TestCase("a value (Parameter 'x')\r\nActual value was 3.", "a value")]
         [TestCase(" (Parameter 'x') at the start", "")]
         [TestCase("mentions (Parameter without its quote", "mentions (Parameter without its quote")]

@@ -155,6 +155,10 @@ namespace Kosmos.PseudoHaptic.Tests
 
         [TestCase("{ x: 1 }", 1, "expected a quoted key")]
         [TestCase("{\"a\":1,\n}", 2, "expected a quoted key")]
+        [TestCase("{", 1, "expected a quoted key")]
+        [TestCase("{ \n", 2, "expected a quoted key")]
+        [TestCase("{\"a\":1,", 1, "expected a quoted key")]
+        [TestCase("{\"a\":\"\\u0041", 1, "a string that does not end on its line")]
         [TestCase("{\"a\":1,\n\"a\":2}", 2, "key 'a' given twice")]
         [TestCase("{\"a\"\n1}", 2, "expected ':' after \"a\"")]
         [TestCase("{\"a\"", 1, "expected ':' after \"a\"")]
@@ -187,6 +191,16 @@ namespace Kosmos.PseudoHaptic.Tests
             string Nested(int lists) => "{\"x\":" + new string('[', lists) + new string(']', lists) + "}";
             RefusedAs(Nested(64), 1, "unknown key 'x'; a profile has format, name, effects, limits, handFilter");
             RefusedAs(Nested(65), 1, "not valid JSON: nested too deeply");
+        }
+
+        [Test]
+        public void EmptyListsAndObjectsMayHoldSpaceAndLineBreaks()
+        {
+            var p = ProfileJson.Read("{ \"format\": 1, \"name\": \"x\", \"effects\": [ \n\t], \"limits\": {\r\n } }", "p.json");
+            Assert.That(p.Effects, Is.Empty);
+            Assert.That(p.Limits.MaxGain, Is.EqualTo(SolverLimits.Default.MaxGain));
+            RefusedAs("{ \"format\": 1, \"name\": \"x\", \"effects\": [ \n ], \"colour\": { } }", 2,
+                "unknown key 'colour'; a profile has format, name, effects, limits, handFilter");
         }
 
         [Test]
