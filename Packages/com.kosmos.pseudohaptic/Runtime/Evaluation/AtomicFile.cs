@@ -29,8 +29,6 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// </remarks>
     public static class AtomicFile
     {
-        static readonly UTF8Encoding Utf8NoBom = new UTF8Encoding(false);
-
         /// <summary>Whether <see cref="WriteWith"/> syncs (default true). Off only for a measurement of what the sync costs.</summary>
         public static bool Durable { get; set; } = true;
 
@@ -47,7 +45,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             {
                 using (var stream = new FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 4096))
                 {
-                    byte[] bytes = Utf8NoBom.GetBytes(text ?? "");
+                    byte[] bytes = Encoding.UTF8.GetBytes(text ?? ""); // GetBytes never writes a byte order mark
                     stream.Write(bytes, 0, bytes.Length);
                     if (Durable) SyncStream(stream); // fsync: the data is on the device before the rename
                 }
@@ -67,10 +65,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (write == null) throw new ArgumentNullException(nameof(write));
             string full = Path.GetFullPath(path);
             if (Directory.Exists(full)) throw new IOException(path + ": is a folder");
-            string directory = Path.GetDirectoryName(full);
-            if (string.IsNullOrEmpty(directory)) directory = ".";
+            string directory = Path.GetDirectoryName(full); // a full path that is not a folder (not a root) has one
             string temp = TemporaryPath(directory), tempName = Path.GetFileName(temp);
-            bool renamed = false;
             // Registered before the file exists, so a cleanup that sees the file also sees that it is in use.
             lock (InFlight) InFlight.Add(tempName);
             try
@@ -78,13 +74,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 write(temp);
                 if (Durable && !synced) SyncFile(temp);
                 Rename(temp, full);
-                renamed = true;
                 if (Durable) SyncDirectory(directory);
             }
             catch
             {
-                if (!renamed)
-                    try { if (File.Exists(temp)) File.Delete(temp); } catch (IOException) { } catch (UnauthorizedAccessException) { }
+                // Before the rename the temporary file goes; after it (a failed folder sync) its name no longer exists.
+                try { if (File.Exists(temp)) File.Delete(temp); } catch (IOException) { } catch (UnauthorizedAccessException) { }
                 throw;
             }
             finally
@@ -259,7 +254,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             try
             {
                 fd = Libc.Open(directory, OpenReadOnly | OpenCloseOnExec);
-                errno = fd < 0 ? Marshal.GetLastWin32Error() : 0;
+                errno = Marshal.GetLastWin32Error(); // read only when fd < 0
             }
             catch (Exception e) when (e is DllNotFoundException || e is EntryPointNotFoundException)
             {

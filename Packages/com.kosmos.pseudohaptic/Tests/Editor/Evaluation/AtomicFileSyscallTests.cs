@@ -101,6 +101,49 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void TheDataIsWrittenBeforeItIsSyncedAndTheFolderIsOpenedCloseOnExec()
+        {
+            // The text goes from the stream's buffer to the file (write) before the fsync, not when the stream is closed after
+            // it; the folder is opened read-only with O_CLOEXEC, so a child process started meanwhile does not inherit it.
+            string target = Path.Combine(_dir, "responses.csv");
+            List<SelfTrace.Call> calls;
+            using (var trace = SelfTrace.Start(_dir, "write,pwrite64,pwritev,pwritev2,openat,fsync,rename,renameat,renameat2"))
+            {
+                try { AtomicFile.WriteAllText(target, "a,b\n"); }
+                finally { calls = trace.Stop(); }
+            }
+            var mine = calls.Where(c => (c.DescriptorPath ?? "").StartsWith(_dir, StringComparison.Ordinal) && c.Name != "openat"
+                || c.Name == "openat" && c.Paths.Length > 0 && c.Paths[0].StartsWith(_dir, StringComparison.Ordinal)).ToList();
+            string Shown(SelfTrace.Call c) => (c.Name.StartsWith("pwrite", StringComparison.Ordinal) ? "write" : c.Name) + " " + (c.Name == "openat" ? c.Paths[0] : c.DescriptorPath);
+            string temp = mine.First(c => c.Name == "openat").Paths[0];
+            Assert.That(AtomicFile.IsTemporaryName(Path.GetFileName(temp)), Is.True, temp);
+            var order = mine.Where(c => c.Name != "rename" && !c.Name.StartsWith("rename", StringComparison.Ordinal)).Select(Shown).ToList();
+            Assert.That(order, Is.EqualTo(new[] { "openat " + temp, "write " + temp, "fsync " + temp, "openat " + _dir, "fsync " + _dir }),
+                string.Join("\n", mine));
+            var folderOpen = mine.Last(c => c.Name == "openat");
+            StringAssert.Contains("O_RDONLY|O_CLOEXEC", folderOpen.Args);
+            StringAssert.DoesNotContain("O_WRONLY", folderOpen.Args);
+        }
+
+        [Test]
+        public void AFolderThatCannotBeOpenedToSyncItIsAnErrorNamingIt()
+        {
+            // Only the calls on the folder itself are traced (-P), so its open is the first openat: EACCES.
+            string target = Path.Combine(_dir, "responses.csv");
+            IOException error = null;
+            List<SelfTrace.Call> calls;
+            using (var trace = SelfTrace.Start(_dir, "openat", "openat:error=EACCES:when=1", path: _dir))
+            {
+                try { error = Assert.Throws<IOException>(() => AtomicFile.WriteAllText(target, "a")); }
+                finally { calls = trace.Stop(); }
+            }
+            Assert.That(calls.Count(c => c.Result < 0), Is.EqualTo(1), string.Join("\n", calls));
+            Assert.That(error.Message, Is.EqualTo(_dir + ": the folder could not be opened to sync it (errno 13)"));
+            Assert.That(File.ReadAllText(target), Is.EqualTo("a"), "renamed before the folder's sync");
+            Assert.That(Directory.GetFiles(_dir).Count(f => AtomicFile.IsTemporaryName(Path.GetFileName(f))), Is.Zero);
+        }
+
+        [Test]
         public void NotDurableNothingIsSynced()
         {
             AtomicFile.Durable = false;

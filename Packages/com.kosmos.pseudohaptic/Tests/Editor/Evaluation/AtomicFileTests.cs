@@ -51,6 +51,20 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void TextIsWrittenAsUtf8WithoutAByteOrderMark()
+        {
+            // A BOM would sit before the header of every CSV the tool and R read ("\uFEFFparticipant" is not "participant").
+            string path = Path.Combine(dir, "r.csv");
+            AtomicFile.WriteAllText(path, "participant,é\n");
+            Assert.That(File.ReadAllBytes(path), Is.EqualTo(new byte[] { (byte)'p', (byte)'a', (byte)'r', (byte)'t', (byte)'i', (byte)'c', (byte)'i',
+                (byte)'p', (byte)'a', (byte)'n', (byte)'t', (byte)',', 0xC3, 0xA9, (byte)'\n' }));
+        }
+
+        [Test]
+        public void SyncingNoStreamIsRefused()
+            => Assert.That(Assert.Throws<ArgumentNullException>(() => AtomicFile.SyncStream(null)).ParamName, Is.EqualTo("stream"));
+
+        [Test]
         public void AnEmptyOrNullPathAndANullWriterAreRefusedNamingThem()
         {
             foreach (string bad in new[] { "", null })

@@ -263,5 +263,32 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(queue.Pending, Is.Zero);
             queue.Dispose();
         }
-    }
+    
+        [Test]
+        public void DisposingTheQueueEndsItsThreadWhileItWaitsForWork()
+        {
+            // The background thread waits for work without a timeout; Dispose must wake it, or every study scene left would
+            // leave a thread behind. Linux names threads in /proc (the name cut to 15 characters).
+            if (!System.Runtime.InteropServices.RuntimeInformation.IsOSPlatform(System.Runtime.InteropServices.OSPlatform.Linux))
+                Assert.Ignore("Linux only (/proc/self/task)");
+            int Threads()
+            {
+                int n = 0;
+                foreach (string task in Directory.GetDirectories("/proc/self/task"))
+                    try { if (File.ReadAllText(Path.Combine(task, "comm")).Trim() == "Kosmos.PseudoHa") n++; } catch (IOException) { }
+                return n;
+            }
+            int before = Threads();
+            var queue = new SaveQueue(background: true);
+            bool saved = false;
+            queue.Enqueue(() => { }, () => saved = true, _ => { });
+            Assert.That(queue.Drain(5000), Is.True);
+            Assert.That(saved, Is.True);
+            Assert.That(Threads(), Is.EqualTo(before + 1), "its thread, waiting for work");
+            queue.Dispose();
+            var clock = System.Diagnostics.Stopwatch.StartNew();
+            while (Threads() > before && clock.ElapsedMilliseconds < 5000) Thread.Sleep(10);
+            Assert.That(Threads(), Is.EqualTo(before), "the thread ended");
+        }
+}
 }

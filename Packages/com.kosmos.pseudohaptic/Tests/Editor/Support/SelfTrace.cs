@@ -26,8 +26,9 @@ namespace Kosmos.PseudoHaptic.Tests
         SelfTrace(Process strace, string file) { _strace = strace; _file = file; }
 
         /// <summary>Attaches strace tracing <paramref name="syscalls"/> (strace's <c>-e trace=</c>), with <paramref name="inject"/>
-        /// (<c>-e inject=</c>) if given, and returns once this thread is traced.</summary>
-        public static SelfTrace Start(string folder, string syscalls, string inject = null)
+        /// (<c>-e inject=</c>) if given, only the calls on <paramref name="path"/> (<c>-P</c>) if given, and returns once this
+        /// thread is traced.</summary>
+        public static SelfTrace Start(string folder, string syscalls, string inject = null, string path = null)
         {
             if (!RuntimeInformation.IsOSPlatform(OSPlatform.Linux)) Assert.Ignore("strace: Linux only");
             string strace = new[] { "/usr/bin/strace", "/bin/strace", "/usr/local/bin/strace" }.FirstOrDefault(File.Exists);
@@ -36,7 +37,7 @@ namespace Kosmos.PseudoHaptic.Tests
             string file = Path.Combine(folder, "self-" + Guid.NewGuid().ToString("N").Substring(0, 8) + ".strace");
             var info = new ProcessStartInfo(strace)
             {
-                Arguments = "-f -qq -y -o \"" + file + "\" -e trace=" + syscalls + (inject != null ? " -e inject=" + inject : "")
+                Arguments = "-f -qq -y -o \"" + file + "\" -e trace=" + syscalls + (inject != null ? " -e inject=" + inject : "") + (path != null ? " -P \"" + path + "\"" : "")
                     + " -p " + Process.GetCurrentProcess().Id.ToString(CultureInfo.InvariantCulture),
                 UseShellExecute = false,
                 RedirectStandardError = true,
