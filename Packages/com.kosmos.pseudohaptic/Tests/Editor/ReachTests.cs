@@ -139,6 +139,25 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void APoseThatDiffersAlongOneAxisAloneIsJudgedLikeAnyOther()
+        {
+            // The shortcut for the same pose again must need all three coordinates equal: 1 m along one axis is out of reach.
+            var r = new Reach();
+            r.TryAccept(0, 1, 0, Speed);
+            r.Tick(0.011, Longest);
+            Assert.That(r.TryAccept(0, 1, 1, Speed), Is.False, "1 m along z alone");
+            var s = new Reach();
+            s.TryAccept(0, 1, 0, Speed);
+            s.Tick(0.011, Longest);
+            Assert.That(s.TryAccept(0, 2, 0, Speed), Is.False, "1 m along y alone");
+            var t = new Reach();
+            t.TryAccept(0, 1, 0, Speed);
+            t.Tick(0.011, Longest);
+            Assert.That(t.TryAccept(1, 1, 0, Speed), Is.False, "1 m along x alone");
+            Assert.That(t.TryAccept(0, 1, 0, Speed), Is.True, "and the same pose again is taken");
+        }
+
+        [Test]
         public void AnAcceptedGlitchIsOverruledByThePoseBeforeIt()
         {
             var r = At(0);

@@ -21,7 +21,7 @@ namespace Kosmos.PseudoHaptic
         bool _hasPose;
         bool _lost;
 
-        /// <summary>A hand that has shown no new pose for this long is taken as still, s.</summary>
+        /// <summary>A hand that has shown no new pose for longer than this is taken as still, s.</summary>
         const double StillAfter = 0.1;
 
         /// <summary>The shortest pose period assumed when poses carry no timestamp: Quest tracks hands at 60 Hz at most.</summary>
@@ -32,7 +32,7 @@ namespace Kosmos.PseudoHaptic
 
         public bool HasPose => _hasPose;
 
-        /// <summary>The hand's last pose-to-pose speed, m/s, kept over repeated poses; 0 once no new pose came for 0.1 s.</summary>
+        /// <summary>The hand's last pose-to-pose speed, m/s, kept over repeated poses; 0 once more than 0.1 s passed without a new pose.</summary>
         public double Speed => _sincePose > StillAfter || _lost ? 0 : _speed;
 
         /// <summary>Starts over at the pose <paramref name="handY"/> taken at <paramref name="poseTime"/>. When the hand is
