@@ -104,6 +104,37 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void AMeasureOfExactlyTheDistanceIsNotPastIt([Values("paper", "paper-experiment")] string name)
+        {
+            // The measure at each new pose of the high lift, from a hold that cannot break (100 m); then the distance set to
+            // exactly the first of them past 0.15 m: that pose is not past it, so the hold ends two poses later, not one.
+            var f = new Headset3D().Render(HighLift, null, 2);
+            var probe = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Get(name).With(new BreakAway(100)));
+            probe.BeginHold(f.A[0], 0.1, f.A[0].Y, 0.2);
+            var poses = new System.Collections.Generic.List<(int frame, double measure)>();
+            for (int i = 1; i < f.Count; i++)
+            {
+                probe.Step(f.A[i], f.Dt[i]);
+                if (f.A[i].PoseTime != f.A[i - 1].PoseTime) poses.Add((i, probe.BreakAwayMeasure));
+            }
+            int j = poses.FindIndex(p => p.measure > 0.15);
+            Assert.That(j, Is.GreaterThan(0));
+            double distance = poses[j].measure;
+            Assert.That(poses[j + 1].measure, Is.GreaterThan(distance), "the pull grows over the next two poses");
+            Assert.That(poses[j + 2].measure, Is.GreaterThan(distance), "the pull grows over the next two poses");
+
+            var solver = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Get(name).With(new BreakAway(distance)));
+            solver.BeginHold(f.A[0], 0.1, f.A[0].Y, 0.2);
+            int ended = -1;
+            for (int i = 1; i < f.Count && ended < 0; i++)
+            {
+                solver.Step(f.A[i], f.Dt[i]);
+                if (!solver.IsHolding) ended = i;
+            }
+            Assert.That(ended, Is.EqualTo(poses[j + 2].frame), "ended at the second pose past the distance, the one at it not counted");
+        }
+
+        [Test]
         public void UnderTheCorrectionItMeasuresStrainWithoutItTheDistance()
         {
             // The same lift: under paper the offset stops at the ceiling, the measure is how far the hand pulled beyond what
