@@ -36,6 +36,32 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void EffectsSeeTheHeldHeightOnTheHoldsFirstFrame([Values(0.1, -0.05)] double handAbovePivot)
+        {
+            // MotionFrame.ObjectY is the held height before the frame (pivot + grab offset): on the first frame of a hold, the
+            // hand where it grabbed. No effect of the package reads it; a scene's own can (here a probe in the input stage).
+            var probe = new FrameProbe();
+            var solver = new WeightSolver(WeightModel.FromMass(1), NamedProfiles.Paper.With(probe, "paper+probe"));
+            solver.BeginHold(1.0, 1.0 - handAbovePivot, 0);
+            solver.Step(new HandSample(1.01, true, true, Pose), Pose);
+            Assert.That(probe.Last.ObjectY, Is.EqualTo(1.0).Within(1e-12));
+        }
+
+        [Test]
+        public void TheHoldsClockKeepsTheNanosecondOverTenHoursOfFrames()
+        {
+            // 3,240,000 frames of 1/90 s, the same pose throughout (still frames: only the clocks move). Summed plainly the
+            // clock ends 0.49 µs short, each addition's rounding gathered; the compensated (Kahan) sum is within 10⁻¹² s.
+            var solver = new WeightSolver(WeightModel.FromMass(1), NamedProfiles.Paper);
+            solver.BeginHold(1.0, 1.0, 0);
+            const double dt = 1 / 90.0;
+            const int frames = 3240000;
+            var sample = new HandSample(1.0, true, true, 0);
+            for (int i = 0; i < frames; i++) solver.Step(sample, dt);
+            Assert.That(solver.State.Time, Is.EqualTo(frames * dt).Within(1e-9));
+        }
+
+        [Test]
         public void AGrabOffsetNeedsAUsableHandAndAPlausibleOffset()
         {
             var s = GolfBall();
