@@ -36,6 +36,33 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(PaperGain(0.01), Is.EqualTo(2.75).Within(0.005));
         }
 
+        /// <summary>At the cue strength 1 each frame is Eq. 6 as printed, bit for bit: v_final = (v_virtual + v_real ·
+        /// v_exp(m)/v_exp(m_std)) / 2 with v_virtual = v_real · W_std / W (Eq. 4), not the algebraically equal gain form
+        /// v_real · ½(W_std/W + v_exp(m)/v_exp(m_std)) the other cue strengths use, which rounds differently: a researcher
+        /// replaying the paper's equations gets them as written. One frame of 1 cm in 1/8 s (0.08 m/s, the window's only
+        /// sample), 200 masses from 1 g to 20 kg.</summary>
+        [Test]
+        public void AtCueStrengthOneEachFrameIsEquationSixAsPrintedBitForBit()
+        {
+            var rng = new Random(6);
+            int differs = 0;
+            for (int i = 0; i < 200; i++)
+            {
+                double massKg = 0.001 * Math.Pow(20000, rng.NextDouble());
+                var solver = new PaperLiteralSolver(massKg);
+                solver.BeginHold(1.0, 1.0);
+                double vReal = (1.01 - 1.0) / Dt;
+                double weight = massKg * G, standardWeight = GolfBallKg * G;
+                double vVirtual = vReal * standardWeight / weight;
+                double vExp = CurveA * Math.Exp(-CurveB * massKg), vExpStandard = CurveA * Math.Exp(-CurveB * GolfBallKg);
+                double printed = 1.0 + (vVirtual + vReal * vExp / vExpStandard) / 2 * Dt;
+                double gainForm = 1.0 + vReal * ((standardWeight / weight + vExp / vExpStandard) / 2) * Dt;
+                if (printed != gainForm) differs++;
+                Assert.That(solver.Step(1.01, true, Dt), Is.EqualTo(printed), $"{massKg} kg");
+            }
+            Assert.That(differs, Is.GreaterThan(0), "the two forms round apart for some masses, so the test can tell them");
+        }
+
         /// <summary>The hand rests for a second, jumps 8 cm in one frame and rests again: the last second's mean speed is
         /// 8 cm/s for exactly the 8 frames that hold the jump, so the object climbs G^s · 1 cm on each of them (v·dt, Eq. 6)
         /// and then stands still, G^s · 8 cm above where it was.</summary>

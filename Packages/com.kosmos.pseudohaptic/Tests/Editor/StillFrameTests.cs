@@ -34,6 +34,36 @@ namespace Kosmos.PseudoHaptic.Tests
                                 .SetName("Still " + profile.Name + " " + mass + " kg " + rate + " Hz" + (quantized ? " 5 mm poses" : ""));
         }
 
+        /// <summary>A scene's own input effect that is still but keeps something that moves with time (a budget, say) is
+        /// told of each still frame and its time, and its Apply is not called on them.</summary>
+        sealed class KeepsABudget : WeightEffect
+        {
+            public int Applied, Advanced;
+            public double AdvancedFor;
+            public override string Name => "advances-when-still";
+            public override EffectStage Stage => EffectStage.Input;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Applied++;
+            protected override bool IsStill(in HoldState state, in SolverConstants constants) => true;
+            protected override bool AdvancesWhenStill => true;
+            protected override void AdvanceStill(ref HoldState state, in SolverConstants constants, double dt) { Advanced++; AdvancedFor += dt; }
+        }
+
+        [Test]
+        public void AnInputEffectThatAdvancesWhenStillIsAdvancedOnEachStillFrame()
+        {
+            var effect = new KeepsABudget();
+            var solver = new WeightSolver(WeightModel.FromMass(1), new WeightProfile("advancing", new WeightEffect[] { effect }));
+            solver.BeginHold(1.0, 1.0, 0);
+            var pose = new HandSample(1.02, true, true, 1 / 30.0);
+            solver.Step(pose, 1 / 90.0);
+            Assert.That(effect.Applied, Is.EqualTo(1), "a new pose runs the pipeline");
+            solver.Step(pose, 1 / 90.0);
+            solver.Step(pose, 1 / 64.0);
+            Assert.That(effect.Applied, Is.EqualTo(1), "the repeats are still frames");
+            Assert.That(effect.Advanced, Is.EqualTo(2));
+            Assert.That(effect.AdvancedFor, Is.EqualTo(1 / 90.0 + 1 / 64.0));
+        }
+
         [TestCaseSource(nameof(Cases))]
         public void AStillFrameLeavesBitForBitWhatThePipelineWould(WeightProfile profile, double mass, int rate, bool quantized)
         {
