@@ -1,4 +1,5 @@
 using NUnit.Framework;
+using static Kosmos.PseudoHaptic.Tests.EstimatorFrame;
 
 namespace Kosmos.PseudoHaptic.Tests
 {
@@ -10,14 +11,7 @@ namespace Kosmos.PseudoHaptic.Tests
     /// </summary>
     public class PoseDeltaEstimatorBoundaryTests
     {
-        const double Half = 0.05;
-
-        static MotionFrame Frame(ref PoseDeltaEstimator e, double y, double dt)
-        {
-            var f = new MotionFrame { Dt = dt, PoseY = y, PoseTime = double.NaN, Usable = true, IsHighConfidence = true };
-            e.Update(ref f, SolverLimits.Default);
-            return f;
-        }
+        const double Half = 0.05, NoTime = double.NaN; // poses without a time stamp: time is the frames'
 
         [Test]
         public void TheFrameTimesAddUpToTheBoundaryExactly()
@@ -30,15 +24,15 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var e = new PoseDeltaEstimator();
             e.Reset(1.0, double.NaN);
-            Assert.That(Frame(ref e, 1.0, Half).NewPose, Is.False);
-            var at = Frame(ref e, 1.01, Half);
+            Assert.That(Frame(ref e, 1.0, NoTime, Half).NewPose, Is.False);
+            var at = Frame(ref e, 1.01, NoTime, Half);
             Assert.That(at.NewPose, Is.True);
             Assert.That(at.AcrossGap, Is.False, "0.1 s since the last pose is not more than the gap time");
 
             var later = new PoseDeltaEstimator();
             later.Reset(1.0, double.NaN);
-            Frame(ref later, 1.0, Half);
-            var beyond = Frame(ref later, 1.01, Half + 1e-9);
+            Frame(ref later, 1.0, NoTime, Half);
+            var beyond = Frame(ref later, 1.01, NoTime, Half + 1e-9);
             Assert.That(beyond.NewPose, Is.True);
             Assert.That(beyond.AcrossGap, Is.True, "more than 0.1 s since the last pose");
             Assert.That(beyond.Bridged, Is.False, "a gap in time, not a loss");
@@ -49,15 +43,15 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             var e = new PoseDeltaEstimator();
             e.Reset(1.0, double.NaN);
-            var moved = Frame(ref e, 1.01, Half);
+            var moved = Frame(ref e, 1.01, NoTime, Half);
             Assert.That(moved.HandSpeed, Is.EqualTo(0.01 / Half).Within(1e-12), "1 cm over the 50 ms since the last pose");
             double speed = e.Speed;
             Assert.That(speed, Is.EqualTo(moved.HandSpeed));
 
-            Frame(ref e, 1.01, Half);
-            Frame(ref e, 1.01, Half);
+            Frame(ref e, 1.01, NoTime, Half);
+            Frame(ref e, 1.01, NoTime, Half);
             Assert.That(e.Speed, Is.EqualTo(speed), "exactly 0.1 s without a new pose: not yet still");
-            Frame(ref e, 1.01, 1e-9);
+            Frame(ref e, 1.01, NoTime, 1e-9);
             Assert.That(e.Speed, Is.EqualTo(0.0), "more than 0.1 s without a new pose: still");
         }
     }

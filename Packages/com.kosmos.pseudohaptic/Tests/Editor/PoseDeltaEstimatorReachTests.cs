@@ -1,4 +1,5 @@
 using NUnit.Framework;
+using static Kosmos.PseudoHaptic.Tests.EstimatorFrame;
 
 namespace Kosmos.PseudoHaptic.Tests
 {
@@ -9,13 +10,6 @@ namespace Kosmos.PseudoHaptic.Tests
     /// </summary>
     public class PoseDeltaEstimatorReachTests
     {
-        static MotionFrame Frame(ref PoseDeltaEstimator e, double y, double poseTime, double dt)
-        {
-            var f = new MotionFrame { Dt = dt, PoseY = y, PoseTime = poseTime, Usable = true, IsHighConfidence = true };
-            e.Update(ref f, SolverLimits.Default);
-            return f;
-        }
-
         [Test]
         public void AJumpRightAfterTheFirstPoseOfAnUntrackedStartIsRefused()
         {

@@ -1,4 +1,5 @@
 using NUnit.Framework;
+using static Kosmos.PseudoHaptic.Tests.EstimatorFrame;
 
 namespace Kosmos.PseudoHaptic.Tests
 {
@@ -10,20 +11,11 @@ namespace Kosmos.PseudoHaptic.Tests
     /// </summary>
     public class PoseDeltaEstimatorTests
     {
-        static readonly SolverLimits Limits = SolverLimits.Default; // hand ≤ 10 m/s
-
         static PoseDeltaEstimator Started(double y = 1.0, double poseTime = 0)
         {
             var e = new PoseDeltaEstimator();
             e.Reset(y, poseTime);
             return e;
-        }
-
-        static MotionFrame Frame(ref PoseDeltaEstimator e, double y, double poseTime, double dt, bool usable = true)
-        {
-            var f = new MotionFrame { Dt = dt, PoseY = y, PoseTime = poseTime, Usable = usable, IsHighConfidence = true };
-            e.Update(ref f, Limits);
-            return f;
         }
 
         [Test]

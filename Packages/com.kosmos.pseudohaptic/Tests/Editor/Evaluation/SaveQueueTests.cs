@@ -263,7 +263,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(queue.Pending, Is.Zero);
             queue.Dispose();
         }
-    
+
         [Test]
         public void DisposingTheQueueEndsItsThreadWhileItWaitsForWork()
         {
@@ -290,5 +290,5 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             while (Threads() > before && clock.ElapsedMilliseconds < 5000) Thread.Sleep(10);
             Assert.That(Threads(), Is.EqualTo(before), "the thread ended");
         }
-}
+    }
 }
