@@ -20,6 +20,8 @@ run from the repository): where none differs, the mutants are the same at COMMIT
 are all at COMMIT as measured (else its newest run, marked stale); per assembly (Core, Logic, Evaluation), every mutant of
 every file at COMMIT with the status of the newest report that tested it on that very source, the files and mutants no
 such report tested, and the score of what was tested. A mutant's source must match the whole file, not only its span.
+A file whose code is the same and only its comments differ (`code_only`) counts as measured: Stryker mutates no comment,
+and the line breaks stay, so every mutant keeps its place; a comment naming Stryker (`// Stryker disable`) counts as code.
 Python 3 standard library only. Exit 2 on a missing or unreadable report.
 """
 import argparse
@@ -96,9 +98,46 @@ def changed_at(files, commit, root):
             continue
         shown = subprocess.run(["git", "show", "%s:%s" % (commit, repo_path(name))], capture_output=True)
         now = shown.stdout.decode("utf-8-sig") if shown.returncode == 0 else None
-        if now is None or now.replace("\r\n", "\n") != f.get("source", "").replace("\r\n", "\n"):
+        if not same_code(now and now.replace("\r\n", "\n"), f.get("source", "").replace("\r\n", "\n")):
             changed.append(short(name, root))
     return changed
+
+def code_only(text):
+    """C# source with its comments emptied (line breaks kept, and a block comment's last line as wide as it was, so every
+    piece of code keeps its line and column): two sources with the same code_only differ only in comments, which Stryker does not mutate, so
+    a report of one is a report of the other. Comments that speak to Stryker (`// Stryker disable …`) are kept."""
+    out, i, n = [], 0, len(text)
+    while i < n:
+        c = text[i]
+        if text.startswith("//", i) or text.startswith("/*", i):
+            end = text.find("\n", i) if c == "/" and text[i + 1] == "/" else text.find("*/", i + 2)
+            end = n if end < 0 else (end if text[i + 1] == "/" else end + 2)
+            comment = text[i:end]
+            # a block comment's last line keeps its width, so that code after it on that line keeps its column
+            tail = 0 if text[i + 1] == "/" else len(comment) - comment.rfind("\n") - 1
+            out.append(comment if "Stryker" in comment else "\n" * comment.count("\n") + " " * tail)
+            i = end
+        elif c == '"' or c == "'":
+            verbatim = c == '"' and i > 0 and text[i - 1] == "@" or i > 1 and text[i - 2:i] in ("@$", "$@")
+            j = i + 1
+            while j < n and text[j] != c:
+                if text[j] == "\\" and not verbatim:
+                    j += 1
+                elif verbatim and text.startswith('""', j):
+                    j += 1
+                j += 1
+            out.append(text[i:j + 1])
+            i = j + 1
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out)
+
+
+def same_code(a, b):
+    """Whether two sources (None: no such file) hold the same code, comments aside."""
+    return a is not None and b is not None and (a == b or code_only(a) == code_only(b))
+
 
 ASSEMBLIES = ("Core", "Logic", "Evaluation")
 PACKAGE = "Packages/com.kosmos.pseudohaptic/Runtime/"
@@ -149,11 +188,13 @@ def standing(commit, folders):
             continue
         files = report.get("files", {})
         changed = [n for n in files if any(m.get("status") in COUNTED for m in files[n].get("mutants", []))
-                   and sources.get(repo_path(n)) != files[n].get("source", "").replace("\r\n", "\n")]
+                   and not same_code(sources.get(repo_path(n)), files[n].get("source", "").replace("\r\n", "\n"))]
+        commented = [n for n in files if any(m.get("status") in COUNTED for m in files[n].get("mutants", []))
+                     and n not in changed and sources.get(repo_path(n)) != files[n].get("source", "").replace("\r\n", "\n")]
         if changed:
             # an older run of the piece may still be of this code
             older = [r for r in runs if r[1].get("piece") == piece and r[0] < start]
-            if any(all(sources.get(repo_path(n)) == f.get("source", "").replace("\r\n", "\n")
+            if any(all(same_code(sources.get(repo_path(n)), f.get("source", "").replace("\r\n", "\n"))
                        for n, f in r[2].get("files", {}).items()
                        if any(m.get("status") in COUNTED for m in f.get("mutants", []))) for r in older):
                 continue
@@ -161,6 +202,9 @@ def standing(commit, folders):
         c = counts([m for f in files.values() for m in f.get("mutants", [])])
         where = "as measured" if not changed else "stale: " + ", ".join(
             "`%s`" % short(n, report.get("projectRoot", "")) for n in sorted(changed)) + " changed"
+        if not changed and commented:
+            where += " (comments changed in " + ", ".join(
+                "`%s`" % short(n, report.get("projectRoot", "")) for n in sorted(commented)) + ")"
         print("| %s | %s | %d | %d | %d | %d | `%s` | %s %s | %s |" % (
             piece, pct(score(c)), c["Killed"], c["Survived"], c["Timeout"], c["NoCoverage"], meta.get("commit", "?"),
             start[:10], start[11:16], where))
@@ -180,7 +224,7 @@ def standing(commit, folders):
             seen_as_is = False
             for start, meta, report in runs:
                 for name, f in report.get("files", {}).items():
-                    if repo_path(name) != path or f.get("source", "").replace("\r\n", "\n") != sources[path]:
+                    if repo_path(name) != path or not same_code(f.get("source", "").replace("\r\n", "\n"), sources[path]):
                         continue
                     seen_as_is = True
                     for m in f.get("mutants", []):
