@@ -152,7 +152,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
     }
 
-    /// <summary>Regularized incomplete gamma functions P(a, x) and Q(a, x) = 1 − P (Numerical Recipes §6.2).</summary>
+    /// <summary>The regularized upper incomplete gamma function Q(a, x) = 1 − P(a, x) (Numerical Recipes §6.2).</summary>
     static class Gamma
     {
         /// <summary>Q(a, x), the upper one, accurate relative to itself where it is small.</summary>
@@ -162,15 +162,6 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (double.IsPositiveInfinity(x)) return 0;
             if (x < a + 1) return 1 - Series(a, x);
             return ContinuedFraction(a, x);
-        }
-
-        /// <summary>P(a, x), the lower one.</summary>
-        public static double RegularizedP(double a, double x)
-        {
-            if (x <= 0) return 0;
-            if (double.IsPositiveInfinity(x)) return 1;
-            if (x < a + 1) return Series(a, x);
-            return 1 - ContinuedFraction(a, x);
         }
 
         static double Series(double a, double x)
