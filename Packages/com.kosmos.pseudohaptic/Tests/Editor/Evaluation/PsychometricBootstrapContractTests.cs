@@ -1,0 +1,222 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using Kosmos.PseudoHaptic.Evaluation;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.Evaluation
+{
+    /// <summary>
+    /// The bootstrap's, the Wilson interval's and the simulated observer's contracts, each against numbers worked out
+    /// apart from the code: R's type-7 quantile by hand, the bootstrap rebuilt from its description (binomial draws per
+    /// level from the fitted function, refits, percentiles), Wilson's interval computed in Python, the observer's
+    /// probability from its formula. The coverage tests in PsychophysicsTests judge the intervals statistically; these
+    /// pin what a statistic cannot see (an interpolation off by one order statistic, a refused argument let through).
+    /// </summary>
+    public class PsychometricBootstrapContractTests
+    {
+        static readonly double[] Primes = { 2, 3, 5, 7, 11 };
+
+        [TestCase(0.0, 2.0)]
+        [TestCase(0.3, 3.4)]   // h = 4·0.3 = 1.2: 3 + 0.2·(5 − 3)
+        [TestCase(0.5, 5.0)]
+        [TestCase(0.75, 7.0)]  // h = 3 exactly: the order statistic itself
+        [TestCase(0.9, 9.4)]   // h = 3.6: 7 + 0.6·(11 − 7)
+        [TestCase(1.0, 11.0)]
+        public void APercentileIsRsTypeSeven(double p, double expected)
+            => Assert.That(PsychometricBootstrap.Percentile(Primes, p), Is.EqualTo(expected).Within(1e-14));
+
+        [Test]
+        public void APercentileOfOneValueIsThatValueAndNoValuesAreRefused()
+        {
+            Assert.That(PsychometricBootstrap.Percentile(new[] { 4.5 }, 0.025), Is.EqualTo(4.5));
+            Assert.That(PsychometricBootstrap.Percentile(new[] { 4.5 }, 0.975), Is.EqualTo(4.5));
+            Assert.That(PsychometricBootstrap.Percentile(new[] { 1.0, 2.0 }, 0.5), Is.EqualTo(1.5));
+            Assert.That(Assert.Throws<ArgumentException>(() => PsychometricBootstrap.Percentile(new double[0], 0.5)).ParamName, Is.EqualTo("sorted"));
+            Assert.That(Assert.Throws<ArgumentException>(() => PsychometricBootstrap.Percentile(null, 0.5)).ParamName, Is.EqualTo("sorted"));
+        }
+
+        static PsychometricFit SevenLevels(long seed, int repetitions = 12, double sigma = 0.1)
+        {
+            var trials = new ConstantStimuliPlan { Standard = 1, Seed = seed, Repetitions = repetitions }.Build("P1");
+            new SimulatedObserver(1.03, sigma, seed + 100).AnswerAll(trials);
+            return PsychometricFit.Fit(trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray());
+        }
+
+        [Test]
+        public void TheIntervalsAreThePercentilesOfRefitsOfBinomialDrawsFromTheFit()
+        {
+            // Seeds 1–3 with twelve repetitions a level; 11–13 with three from a noisier observer, where some resamples cannot be fitted.
+            int failures = 0;
+            foreach (long seed in new long[] { 1, 2, 3, 11, 12, 13 })
+            {
+                var fit = seed > 10 ? SevenLevels(seed, 3, 0.3) : SevenLevels(seed);
+                Assert.That(fit.Estimable, Is.True, "seed " + seed);
+                foreach (double confidence in new[] { 0.95, 0.8 })
+                {
+                    const int resamples = 200;
+                    var rng = new SeededRandom(seed * 7);
+                    var pses = new List<double>();
+                    var jnds = new List<double>();
+                    for (int r = 0; r < resamples; r++)
+                    {
+                        var drawn = fit.Levels.Select(l => new StimulusLevel(l.Level, l.Trials, rng.NextBinomial(l.Trials, fit.Psi(l.Level)))).ToArray();
+                        var refit = PsychometricFit.Fit(drawn, fit.Lapse);
+                        if (!refit.Estimable) continue;
+                        pses.Add(refit.Pse);
+                        jnds.Add(refit.Jnd);
+                    }
+                    pses.Sort();
+                    jnds.Sort();
+                    double a = (1 - confidence) / 2;
+                    var boot = PsychometricBootstrap.Run(fit, resamples, seed * 7, confidence);
+                    string at = "seed " + seed + ", confidence " + confidence;
+                    Assert.That(boot.Resamples, Is.EqualTo(resamples), at);
+                    Assert.That(boot.Failed, Is.EqualTo(resamples - pses.Count), at);
+                    failures += boot.Failed;
+                    Assert.That(boot.HasIntervals, Is.True, at);
+                    // The refits here start from the data, the bootstrap's from the fit: the same maxima, to the fit's precision.
+                    Assert.That(boot.PseLow, Is.EqualTo(PsychometricBootstrap.Percentile(pses, a)).Within(1e-9), at);
+                    Assert.That(boot.PseHigh, Is.EqualTo(PsychometricBootstrap.Percentile(pses, 1 - a)).Within(1e-9), at);
+                    Assert.That(boot.JndLow, Is.EqualTo(PsychometricBootstrap.Percentile(jnds, a)).Within(1e-9), at);
+                    Assert.That(boot.JndHigh, Is.EqualTo(PsychometricBootstrap.Percentile(jnds, 1 - a)).Within(1e-9), at);
+                }
+            }
+            Assert.That(failures, Is.GreaterThan(0), "some resamples of 21 answers could not be fitted");
+        }
+
+        [Test]
+        public void ANarrowerConfidenceGivesANestedInterval()
+        {
+            var fit = SevenLevels(4);
+            var wide = PsychometricBootstrap.Run(fit, 300, 9, 0.95);
+            var narrow = PsychometricBootstrap.Run(fit, 300, 9, 0.5);
+            Assert.That(narrow.PseLow, Is.GreaterThan(wide.PseLow));
+            Assert.That(narrow.PseHigh, Is.LessThan(wide.PseHigh));
+            Assert.That(narrow.JndLow, Is.GreaterThan(wide.JndLow));
+            Assert.That(narrow.JndHigh, Is.LessThan(wide.JndHigh));
+        }
+
+        [Test]
+        public void FewerThanTwoRefitsGiveNoIntervals()
+        {
+            var fit = SevenLevels(5);
+            var none = PsychometricBootstrap.Run(fit, 0, 1);
+            Assert.That(none.HasIntervals, Is.False);
+            Assert.That(none.Failed, Is.EqualTo(0));
+            Assert.That(double.IsNaN(none.PseLow) && double.IsNaN(none.PseHigh) && double.IsNaN(none.JndLow) && double.IsNaN(none.JndHigh));
+            var one = PsychometricBootstrap.Run(fit, 1, 1);
+            Assert.That(one.HasIntervals, Is.False, "one refit is no interval");
+            Assert.That(one.Resamples, Is.EqualTo(1));
+            var two = PsychometricBootstrap.Run(fit, 2, 1);
+            Assert.That(two.Failed, Is.EqualTo(0));
+            Assert.That(two.HasIntervals, Is.True, "two refits are");
+            Assert.That(two.PseLow, Is.LessThanOrEqualTo(two.PseHigh));
+        }
+
+        [Test]
+        public void AFitThatIsNotEstimableFailsEveryResample()
+        {
+            var flat = PsychometricFit.Fit(new[] { 0.9, 1.0, 1.1 }, new[] { 1, 1, 1 });
+            Assert.That(flat.Estimable, Is.False);
+            var boot = PsychometricBootstrap.Run(flat, 50, 1);
+            Assert.That(boot.Resamples, Is.EqualTo(50));
+            Assert.That(boot.Failed, Is.EqualTo(50));
+            Assert.That(boot.HasIntervals, Is.False);
+        }
+
+        [Test]
+        public void BadArgumentsAreRefusedNamingThem()
+        {
+            var fit = SevenLevels(6);
+            Assert.That(Assert.Throws<ArgumentNullException>(() => PsychometricBootstrap.Run(null, 10, 1)).ParamName, Is.EqualTo("fit"));
+            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, -1, 1)).ParamName, Is.EqualTo("resamples"));
+            foreach (double c in new[] { 0.0, 1.0, -0.5, 1.5, double.NaN })
+                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, 10, 1, c)).ParamName, Is.EqualTo("confidence"), "confidence " + c);
+        }
+
+        [TestCase(7, 12, 0.95, 0.3195113125495498, 0.8067396863412434)]
+        [TestCase(1, 3, 0.8, 0.10577563612172286, 0.6788173521696517)]
+        [TestCase(50, 100, 0.99, 0.37527962504483986, 0.6247203749551602)]
+        [TestCase(10, 10, 0.95, 0.7224672001371109, 1.0)]
+        [TestCase(0, 10, 0.95, 0.0, 0.27753279986288915)]
+        public void WilsonsIntervalIsItsFormula(int successes, int trials, double confidence, double low, double high)
+        {
+            double lo, hi;
+            WilsonInterval.Compute(successes, trials, confidence, out lo, out hi);
+            Assert.That(lo, Is.EqualTo(low).Within(1e-13));
+            Assert.That(hi, Is.EqualTo(high).Within(1e-13));
+        }
+
+        [Test]
+        public void WilsonsIntervalEndsAtZeroAndOneExactlyForNoneAndAll()
+        {
+            double lo, hi;
+            for (int n = 1; n <= 60; n++)
+            {
+                WilsonInterval.Compute(0, n, 0.95, out lo, out hi);
+                Assert.That(lo, Is.EqualTo(0), "0 of " + n);
+                WilsonInterval.Compute(n, n, 0.95, out lo, out hi);
+                Assert.That(hi, Is.EqualTo(1), n + " of " + n);
+            }
+        }
+
+        [TestCase(0, 0)]
+        [TestCase(-1, 5)]
+        [TestCase(6, 5)]
+        public void WilsonsIntervalRefusesImpossibleCounts(int successes, int trials)
+        {
+            double lo, hi;
+            Assert.Throws<ArgumentOutOfRangeException>(() => WilsonInterval.Compute(successes, trials, 0.95, out lo, out hi));
+        }
+
+        [Test]
+        public void TheObserversProbabilityIsTheLapsedCumulativeGaussian()
+        {
+            var o = new SimulatedObserver(1.0, 0.1, 1, 0.05);
+            Assert.That(o.Pse, Is.EqualTo(1.0));
+            Assert.That(o.Sigma, Is.EqualTo(0.1));
+            Assert.That(o.Lapse, Is.EqualTo(0.05));
+            Assert.That(o.Probability(1.0), Is.EqualTo(0.5).Within(1e-15));
+            // Φ(1) = 0.8413447460685429: 0.05 + 0.9·Φ(1).
+            Assert.That(o.Probability(1.1), Is.EqualTo(0.05 + 0.9 * 0.8413447460685429).Within(1e-15));
+            Assert.That(o.Probability(0.9), Is.EqualTo(0.05 + 0.9 * (1 - 0.8413447460685429)).Within(1e-15));
+            Assert.That(o.Probability(-100), Is.EqualTo(0.05).Within(1e-15), "a lapse below");
+            Assert.That(o.Probability(100), Is.EqualTo(0.95).Within(1e-15), "and above");
+            Assert.That(new SimulatedObserver(1.0, 0.1, 1).Probability(1.1), Is.EqualTo(0.8413447460685429).Within(1e-15));
+        }
+
+        [Test]
+        public void TheObserverSaysHeavierWhenItsDrawIsBelowTheProbability()
+        {
+            var o = new SimulatedObserver(1.0, 0.1, 31, 0.02);
+            var draws = new SeededRandom(31);
+            for (int i = 0; i < 500; i++)
+            {
+                double x = 0.7 + 0.0012 * i;
+                Assert.That(o.Answer(x), Is.EqualTo(draws.NextDouble() < o.Probability(x) ? 1 : 0), "x = " + x);
+            }
+        }
+
+        [Test]
+        public void TheObserverAnswersEveryTrialInOrder()
+        {
+            var trials = new ConstantStimuliPlan { Seed = 3, Repetitions = 4 }.Build("P1");
+            var o = new SimulatedObserver(1.0, 0.1, 8);
+            var twin = new SimulatedObserver(1.0, 0.1, 8);
+            o.AnswerAll(trials);
+            Assert.That(trials.Select(t => t.Response), Is.EqualTo(trials.Select(t => twin.Answer(t.Comparison))));
+        }
+
+        [Test]
+        public void AnObserverWithoutSpreadOrWithTooMuchLapseIsRefused()
+        {
+            foreach (double sigma in new[] { 0.0, -0.1, double.NaN })
+                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SimulatedObserver(1, sigma, 1)).ParamName, Is.EqualTo("sigma"), "sigma " + sigma);
+            foreach (double lapse in new[] { -0.01, 0.5, double.NaN })
+                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SimulatedObserver(1, 0.1, 1, lapse)).ParamName, Is.EqualTo("lapse"), "lapse " + lapse);
+            Assert.That(new SimulatedObserver(1, 0.1, 1, 0.0).Lapse, Is.EqualTo(0));
+            Assert.That(new SimulatedObserver(1, 0.1, 1, 0.49).Lapse, Is.EqualTo(0.49));
+        }
+    }
+}
