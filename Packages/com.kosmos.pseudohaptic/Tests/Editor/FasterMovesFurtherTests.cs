@@ -63,6 +63,26 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(with, Is.EqualTo(without));
         }
 
+        /// <summary>A scene's own lift effect, listed before faster-moves-further, that halves the frame's gain.</summary>
+        sealed class HalvesTheGain : WeightEffect
+        {
+            public override string Name => "halves-the-gain";
+            public override EffectStage Stage => EffectStage.Lift;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => frame.Gain *= 0.5;
+        }
+
+        [Test]
+        public void AtTheStandardWeightAGainAnEarlierEffectGaveIsLeftAsItIs([Values(0.02, 0.045)] double massKg)
+        {
+            // "Applied only below 1": at the golf ball's gain of exactly 1 (and lighter) the effect leaves the frame's gain
+            // alone, also when a scene's effect before it changed it, as it would for the standard weight's own gain.
+            var frames = Frames(HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.2, 0.3).Hold(1));
+            var profile = new WeightProfile("halved", new WeightEffect[] { new WeightGain(), new HalvesTheGain(), new FasterMovesFurther() });
+            var with = Run.Replay(Solver(massKg, profile: profile), frames);
+            var without = Run.Replay(Solver(massKg, profile: profile.Without<FasterMovesFurther>()), frames);
+            Assert.That(with, Is.EqualTo(without));
+        }
+
         [Test]
         public void APacedLiftSettlesOnceItPausesAndAHeftLeavesItAsItWas([Values(0.3, 2.0)] double heftSeconds)
         {
