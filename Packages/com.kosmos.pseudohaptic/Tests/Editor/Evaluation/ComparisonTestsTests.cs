@@ -13,8 +13,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     public class ComparisonTestsTests
     {
         // R's ?wilcox.test example (Hollander and Wolfe 1973, p. 29): depression scale before (y) and after (x).
-        static readonly double[] X = { 1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30 };
-        static readonly double[] Y = { 0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29 };
+        internal static readonly double[] X = { 1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30 };
+        internal static readonly double[] Y = { 0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29 };
 
         /// <summary>P(T &gt; t) by Simpson's rule on the t density: independent of the incomplete beta.</summary>
         static double TTailBySimpson(double t, int df)

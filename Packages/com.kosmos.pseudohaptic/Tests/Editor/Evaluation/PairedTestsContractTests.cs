@@ -14,8 +14,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     /// </summary>
     public class PairedTestsContractTests
     {
-        static readonly double[] A = { 0.878, 0.647, 0.598, 2.05, 1.06, 1.29, 1.06, 3.14, 1.29 };
-        static readonly double[] B = { 1.83, 0.50, 1.62, 2.48, 1.68, 1.88, 1.55, 3.06, 1.30 };
+        // R's ?wilcox.test example: before (a) and after (b).
+        static readonly double[] A = ComparisonTestsTests.Y;
+        static readonly double[] B = ComparisonTestsTests.X;
 
         [Test]
         public void SwappingTheConditionsMirrorsEveryFigure()
