@@ -222,6 +222,34 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void AGlitchOnTheFirstPoseAfterTheGrabNeverBreaks([Values(false, true)] bool begunUntracked)
+        {
+            // The grab is where the two-in-a-row count starts: a one-pose glitch past the distance on the very next pose (the
+            // hold's first, or the first after a hold begun untracked found its hand) is one pose past, not two.
+            var solver = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.PaperExperiment.With(new BreakAway(0.2)));
+            double t = 0;
+            if (begunUntracked)
+            {
+                solver.BeginHold(HandPose.Lost, 0, 1, 0);
+                for (int i = 0; i < 4; i++) { t += 1 / 32.0; solver.Step(HandPose.Lost, 1 / 32.0); }
+                t += 1 / 32.0;
+                solver.Step(At(0, 1, 0, t), 1 / 32.0);
+            }
+            else solver.BeginHold(At(0, 1, 0, t), 0, 1, 0);
+            t += 1 / 32.0;
+            solver.Step(At(0, 1.3, 0, t), 1 / 32.0); // 0.3 m: within reach (under 33 cm), a heavy object left behind
+            Assert.That(solver.BreakAwayMeasure, Is.GreaterThan(0.2), "the glitch is past the distance");
+            Assert.That(solver.IsHolding, Is.True, "one pose past");
+            for (int i = 0; i < 30; i++)
+            {
+                t += 1 / 32.0;
+                solver.Step(At(0, 1, 0, t), 1 / 32.0);
+                Assert.That(solver.IsHolding, Is.True, "back at rest, pose " + (i + 1));
+            }
+            Assert.That(solver.BrokeAway, Is.False);
+        }
+
+        [Test]
         public void WhileTrackingIsLostNothingCountsTheNextPoseSeenDecides([Values(true, false)] bool stillPastWhenBack)
         {
             // 10 kg lifted 0.5 m fast (no correction): one pose past 0.2 m, then tracking lost for 2 s. Back still past: the
