@@ -41,6 +41,37 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void WhereTheHandWasBeforeALossDoesNotReachTheSteadyPointAfterIt()
+        {
+            // Two holds begun still, one at x = +0.3 and one at −0.3 (no lag in either), lose the hand for half a second and
+            // find it at x = 0, moving right 2 cm a pose: from there on the object moves the same in both, to the bit. The
+            // steady point starts over after the loss: until three poses are back it is the first of them, whatever the
+            // points before the loss were (a median over them would take +0.3's side and not −0.3's).
+            WeightSolver3D right = Solver(), left = Solver();
+            right.BeginHold(Run3D.At(0.3, 1, 0, 0), 0.3, 1, 0);
+            left.BeginHold(Run3D.At(-0.3, 1, 0, 0), -0.3, 1, 0);
+            double t = 0;
+            for (int i = 0; i < 30; i++)
+            {
+                t += 1 / 30.0;
+                right.Step(Run3D.At(0.3, 1, 0, t), 1 / 30.0);
+                left.Step(Run3D.At(-0.3, 1, 0, t), 1 / 30.0);
+            }
+            Assert.That(right.LagX, Is.EqualTo(0.0));
+            Assert.That(left.LagX, Is.EqualTo(0.0));
+            for (int i = 0; i < 15; i++) { t += 1 / 30.0; right.Step(HandPose.Lost, 1 / 30.0); left.Step(HandPose.Lost, 1 / 30.0); }
+            for (int i = 0; i < 30; i++)
+            {
+                t += 1 / 30.0;
+                right.Step(Run3D.At(0.02 * i, 1, 0, t), 1 / 30.0);
+                left.Step(Run3D.At(0.02 * i, 1, 0, t), 1 / 30.0);
+                Assert.That(right.LagX, Is.EqualTo(left.LagX), "the lag, pose " + (i + 1) + " after the loss");
+                Assert.That(right.ObjectX, Is.EqualTo(left.ObjectX), "the object (grabbed where the hand was, taken rigidly across the loss), pose " + (i + 1) + " after the loss");
+            }
+            Assert.That(right.LagX, Is.GreaterThan(0.001), "the carry after the loss left a lag");
+        }
+
+        [Test]
         public void WhileNoHandIsFollowedTheHandsLeadOnTheSteadyPointIsKept()
         {
             // 1 cm per pose sideways, a pose every frame: the steady point (the median of the last three) is one pose behind,
