@@ -60,6 +60,14 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         /// <summary>The Newton steps after the bisection: the quantile is the double whose CDF lies nearest p (or ties with
         /// it) for 91 % of 4,000 seeded probabilities below ½, uniform and log-uniform down to 1e-300 (measured), and within
         /// one double of it for 99.5 %; the bisection's bracket alone gives 55 % and 99.1 % (measured with the steps cut out).</summary>
+        /// <summary>The next double above (+1) or below (−1) a finite, non-zero x. Math.BitIncrement is not in Unity's
+        /// .NET profile (the per-asmdef compile tests say so).</summary>
+        static double Neighbour(double x, int direction)
+        {
+            long bits = BitConverter.DoubleToInt64Bits(x);
+            return BitConverter.Int64BitsToDouble(x > 0 ? bits + direction : bits - direction);
+        }
+
         [Test]
         public void TheQuantileIsTheDoubleWhoseCdfIsNearestMostOfTheTime()
         {
@@ -71,7 +79,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 if (!(p > 0 && p < 0.5)) continue;
                 double z = Normal.Quantile(p);
                 double at = Math.Abs(Normal.Cdf(z) - p);
-                double below = Math.Abs(Normal.Cdf(Math.BitDecrement(z)) - p), above = Math.Abs(Normal.Cdf(Math.BitIncrement(z)) - p);
+                double below = Math.Abs(Normal.Cdf(Neighbour(z, -1)) - p), above = Math.Abs(Normal.Cdf(Neighbour(z, +1)) - p);
                 n++;
                 if (at <= below && at <= above) nearest++;
             }
