@@ -90,15 +90,25 @@ def repo_path(path):
     return p[at:] if at >= 0 else p
 
 
+def measured(f):
+    """The source a report measured of one file, with Unix line breaks."""
+    return f.get("source", "").replace("\r\n", "\n")
+
+
+def has_counted(f):
+    """Whether a report's file has a mutant that counts in the score."""
+    return any(m.get("status") in COUNTED for m in f.get("mutants", []))
+
+
 def changed_at(files, commit, root):
     """The piece's files (those with a counted mutant) whose source at commit is not the source the report measured."""
     changed = []
     for name, f in sorted(files.items(), key=lambda kv: short(kv[0], root)):
-        if not any(m.get("status") in COUNTED for m in f.get("mutants", [])):
+        if not has_counted(f):
             continue
         shown = subprocess.run(["git", "show", "%s:%s" % (commit, repo_path(name))], capture_output=True)
         now = shown.stdout.decode("utf-8-sig") if shown.returncode == 0 else None
-        if not same_code(now and now.replace("\r\n", "\n"), f.get("source", "").replace("\r\n", "\n")):
+        if not same_code(now and now.replace("\r\n", "\n"), measured(f)):
             changed.append(short(name, root))
     return changed
 
@@ -187,16 +197,15 @@ def standing(commit, folders):
         if piece in seen:
             continue
         files = report.get("files", {})
-        changed = [n for n in files if any(m.get("status") in COUNTED for m in files[n].get("mutants", []))
-                   and not same_code(sources.get(repo_path(n)), files[n].get("source", "").replace("\r\n", "\n"))]
-        commented = [n for n in files if any(m.get("status") in COUNTED for m in files[n].get("mutants", []))
-                     and n not in changed and sources.get(repo_path(n)) != files[n].get("source", "").replace("\r\n", "\n")]
+        counted = [n for n in files if has_counted(files[n])]
+        changed = [n for n in counted if not same_code(sources.get(repo_path(n)), measured(files[n]))]
+        commented = [n for n in counted if n not in changed and sources.get(repo_path(n)) != measured(files[n])]
         if changed:
             # an older run of the piece may still be of this code
             older = [r for r in runs if r[1].get("piece") == piece and r[0] < start]
-            if any(all(same_code(sources.get(repo_path(n)), f.get("source", "").replace("\r\n", "\n"))
+            if any(all(same_code(sources.get(repo_path(n)), measured(f))
                        for n, f in r[2].get("files", {}).items()
-                       if any(m.get("status") in COUNTED for m in f.get("mutants", []))) for r in older):
+                       if has_counted(f)) for r in older):
                 continue
         seen.add(piece)
         c = counts([m for f in files.values() for m in f.get("mutants", [])])
@@ -224,7 +233,7 @@ def standing(commit, folders):
             seen_as_is = False
             for start, meta, report in runs:
                 for name, f in report.get("files", {}).items():
-                    if repo_path(name) != path or not same_code(f.get("source", "").replace("\r\n", "\n"), sources[path]):
+                    if repo_path(name) != path or not same_code(measured(f), sources[path]):
                         continue
                     seen_as_is = True
                     for m in f.get("mutants", []):
