@@ -34,7 +34,7 @@ namespace Kosmos.PseudoHaptic
         {
             BottomBelowPivot = bottomBelowPivot;
             OffsetThreshold = offsetThreshold;
-            LogGain = gain > 0 ? System.Math.Log(gain) : double.NegativeInfinity;
+            LogGain = System.Math.Log(gain); // the gain is never negative: 0 gives −∞
             Gain = gain;
             StandardSpeed = standardSpeed;
             CapSpeed = capSpeed;

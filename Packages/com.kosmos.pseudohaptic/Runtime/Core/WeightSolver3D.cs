@@ -228,7 +228,7 @@ namespace Kosmos.PseudoHaptic
             _objZ = objectZ;
             _hasGrab = _beyond = false;
 
-            Select(first, second, first.IsUsable, second.IsUsable, 0, begin: true);
+            Select(first, second, first.IsUsable, second.IsUsable, 0);
             ApplyMass(_y.StandardSpeed);
             if (_in1 || _in2)
             {
@@ -291,7 +291,7 @@ namespace Kosmos.PseudoHaptic
 
             bool holdsBefore = _holds1 && _holds2;
             bool was1 = _in1, was2 = _in2;
-            Select(first, second, u1, u2, dt, begin: false);
+            Select(first, second, u1, u2, dt);
             if (holdsBefore != (_holds1 && _holds2)) ApplyMass(_y.StandardSpeed);
 
             // y: the followed point (confident only when every followed hand is), or nothing when no hand is followed.
@@ -331,7 +331,7 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>Decides which hands are followed this frame and re-anchors the followed point when that changes.</summary>
-        void Select(in HandPose first, in HandPose second, bool usable1, bool usable2, double dt, bool begin)
+        void Select(in HandPose first, in HandPose second, bool usable1, bool usable2, double dt)
         {
             bool f1 = _grip1 && usable1 && InWorkspace(first);
             f1 = Reachable(f1, first, ref _reach1, dt);
@@ -339,10 +339,11 @@ namespace Kosmos.PseudoHaptic
             f2 = Reachable(f2, second, ref _reach2, dt);
             if (f1) { _k1x = first.X; _k1y = first.Y; _k1z = first.Z; }
             if (f2) { _k2x = second.X; _k2y = second.Y; _k2z = second.Z; }
-            // A hand joining a hand already followed waits for steady tracking (the profile's settle time).
+            // A hand joining a hand already followed waits for steady tracking (the profile's settle time); at a hold's begin
+            // no hand is followed yet, so every followed hand joins at once.
             bool staying = (_in1 && f1) || (_in2 && f2);
-            bool n1 = f1 && (_in1 || !staying || begin || Settled(ref _join1, dt));
-            bool n2 = f2 && (_in2 || !staying || begin || Settled(ref _join2, dt));
+            bool n1 = f1 && (_in1 || !staying || Settled(ref _join1, dt));
+            bool n2 = f2 && (_in2 || !staying || Settled(ref _join2, dt));
             if (!f1) _join1 = 0;
             if (!f2) _join2 = 0;
             if (n1 || n2)
@@ -438,7 +439,6 @@ namespace Kosmos.PseudoHaptic
             _ax = _objX - _vx;
             _az = _objZ - _vz;
             _px = _vx; _py = _vy; _pz = _vz; _pt = double.NaN;
-            _steadyCount = 0;
             Remember(_vx, _vz, restart: true);
             _gx = _vx - _objX;
             _gy = _vy - _y.ObjectY;
@@ -470,8 +470,7 @@ namespace Kosmos.PseudoHaptic
                 double k = _tau / (_tau + step * (1 + n * perM));
                 ex *= k;
                 ez *= k;
-                n *= k;
-                if (n < 1e-12) { ex = ez = 0; n = 0; }
+                if (n * k < 1e-12) ex = ez = 0;
                 if (double.IsFinite(ex) && double.IsFinite(ez))
                 {
                     _ex = ex;
@@ -515,7 +514,7 @@ namespace Kosmos.PseudoHaptic
         /// and the hold ends no later than one pose interval after the first pose past it.</summary>
         void CheckBreakAway(bool newPose)
         {
-            if (!(_in1 || _in2) || !_hasGrab || !newPose) return;
+            if (!newPose) return; // a new pose is a followed hand's, and the first followed hand anchors the grab
             if (BreakAwayMeasure > _breakAway.Distance)
             {
                 if (_beyond)
