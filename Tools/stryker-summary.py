@@ -7,6 +7,8 @@
     python3 Tools/stryker-summary.py out/stryker/PIECE --survivors  # list survivors and no-coverage mutants
     python3 Tools/stryker-summary.py out/stryker/PIECE --unchanged-at HEAD  # is the measured code still the code at HEAD?
     python3 Tools/stryker-summary.py --standing HEAD out/stryker/*         # what the reports say of HEAD, piece by piece and whole
+    python3 Tools/stryker-summary.py out/stryker/PIECE --keep Tools/stryker-reports  # keep the run: Tools/stryker-reports/PIECE.json
+    python3 Tools/stryker-summary.py --standing HEAD Tools/stryker-reports/*.json   # the standing from the kept runs
 
 The argument is a report file or a folder holding one (out/stryker/PIECE from Tools/stryker-piece.sh, whose
 run.txt gives the commit, start and end). Score = (killed + timeout) / (killed + timeout + survived + no
@@ -22,10 +24,15 @@ every file at COMMIT with the status of the newest report that tested it on that
 such report tested, and the score of what was tested. A mutant's source must match the whole file, not only its span.
 A file whose code is the same and only its comments differ (`code_only`) counts as measured: Stryker mutates no comment,
 and the line breaks stay, so every mutant keeps its place; a comment naming Stryker (`// Stryker disable`) counts as code.
+--keep DIR writes the run as DIR/PIECE.json, small enough to commit (Stryker's report is tens of megabytes, and a folder
+outside the repository does not outlive the machine): the run's meta (run.txt), and per file the SHA-256 of the source
+measured and of its code alone (`code_only`), and every mutant's id, mutator, replacement, place and status, with the
+line's code for survivors. Every mode reads such a file as it reads Stryker's report.
 Python 3 standard library only. Exit 2 on a missing or unreadable report.
 """
 import argparse
 import glob
+import hashlib
 import json
 import os
 import subprocess
@@ -91,8 +98,28 @@ def repo_path(path):
 
 
 def measured(f):
-    """The source a report measured of one file, with Unix line breaks."""
-    return f.get("source", "").replace("\r\n", "\n")
+    """The source a report measured of one file, with Unix line breaks (None in a kept run, which holds its hashes)."""
+    return f["source"].replace("\r\n", "\n") if "source" in f else None
+
+
+def sha256(text):
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def same_source(now, f):
+    """Whether the file's source now (None: no such file) is, to the character, the source the report measured."""
+    if now is None:
+        return False
+    return now == measured(f) if "source" in f else sha256(now) == f.get("sourceSha256")
+
+
+def same_code_as(now, f):
+    """Whether the file's code now is the code the report measured, comments aside (same_code)."""
+    if now is None:
+        return False
+    if "source" in f:
+        return same_code(now, measured(f))
+    return sha256(now) == f.get("sourceSha256") or sha256(code_only(now)) == f.get("codeSha256")
 
 
 def has_counted(f):
@@ -108,7 +135,7 @@ def changed_at(files, commit, root):
             continue
         shown = subprocess.run(["git", "show", "%s:%s" % (commit, repo_path(name))], capture_output=True)
         now = shown.stdout.decode("utf-8-sig") if shown.returncode == 0 else None
-        if not same_code(now and now.replace("\r\n", "\n"), measured(f)):
+        if not same_code_as(now and now.replace("\r\n", "\n"), f):
             changed.append(short(name, root))
     return changed
 
@@ -180,7 +207,7 @@ def standing(commit, folders):
         except (OSError, ValueError) as e:
             print("stryker-summary: %s: %s" % (folder, e), file=sys.stderr)
             return 2
-        meta = read_meta(folder if os.path.isdir(folder) else os.path.dirname(folder))
+        meta = report.get("run") or read_meta(folder if os.path.isdir(folder) else os.path.dirname(folder))
         runs.append((meta.get("start", ""), meta, report))
     runs.sort(key=lambda r: r[0], reverse=True)  # newest first
     listed = subprocess.run(["git", "ls-tree", "-r", "--name-only", commit, PACKAGE], capture_output=True, text=True)
@@ -198,12 +225,12 @@ def standing(commit, folders):
             continue
         files = report.get("files", {})
         counted = [n for n in files if has_counted(files[n])]
-        changed = [n for n in counted if not same_code(sources.get(repo_path(n)), measured(files[n]))]
-        commented = [n for n in counted if n not in changed and sources.get(repo_path(n)) != measured(files[n])]
+        changed = [n for n in counted if not same_code_as(sources.get(repo_path(n)), files[n])]
+        commented = [n for n in counted if n not in changed and not same_source(sources.get(repo_path(n)), files[n])]
         if changed:
             # an older run of the piece may still be of this code
             older = [r for r in runs if r[1].get("piece") == piece and r[0] < start]
-            if any(all(same_code(sources.get(repo_path(n)), measured(f))
+            if any(all(same_code_as(sources.get(repo_path(n)), f)
                        for n, f in r[2].get("files", {}).items()
                        if has_counted(f)) for r in older):
                 continue
@@ -233,7 +260,7 @@ def standing(commit, folders):
             seen_as_is = False
             for start, meta, report in runs:
                 for name, f in report.get("files", {}).items():
-                    if repo_path(name) != path or not same_code(measured(f), sources[path]):
+                    if repo_path(name) != path or not same_code_as(sources[path], f):
                         continue
                     seen_as_is = True
                     for m in f.get("mutants", []):
@@ -257,6 +284,42 @@ def standing(commit, folders):
     return 0
 
 
+def keep(report, meta, folder):
+    """Writes the run as folder/PIECE.json: what --standing, --files, --survivors and --unchanged-at need of it, one mutant a
+    line, so that a rerun's diff shows which mutants changed status."""
+    files = {}
+    for name, f in sorted(report.get("files", {}).items(), key=lambda kv: repo_path(kv[0])):
+        src = measured(f)
+        lines = src.split("\n") if src is not None else []
+        mutants = []
+        for m in sorted(f.get("mutants", []), key=mutant_key):
+            if mutate_filtered(m):
+                continue
+            k = {"id": m.get("id"), "mutatorName": m.get("mutatorName"), "replacement": m.get("replacement"),
+                 "location": m["location"], "status": m.get("status")}
+            line = m["location"]["start"]["line"]
+            if k["status"] in ("Survived", "NoCoverage"):
+                k["code"] = m.get("code") or (lines[line - 1].strip() if 0 < line <= len(lines) else "")
+            mutants.append(k)
+        if not mutants:
+            continue
+        files[repo_path(name)] = {
+            "sourceSha256": f.get("sourceSha256") or sha256(src),
+            "codeSha256": f.get("codeSha256") or sha256(code_only(src)),
+            "mutants": mutants}
+    os.makedirs(folder, exist_ok=True)
+    path = os.path.join(folder, meta.get("piece", "piece") + ".json")
+    with open(path, "w", encoding="utf-8", newline="\n") as out:
+        out.write('{"kept": 1, "run": %s,\n "files": {' % json.dumps(meta, sort_keys=True))
+        for i, (name, f) in enumerate(files.items()):
+            out.write('%s\n  %s: {"sourceSha256": "%s", "codeSha256": "%s", "mutants": [' % (
+                "," if i else "", json.dumps(name), f["sourceSha256"], f["codeSha256"]))
+            out.write(",".join("\n   " + json.dumps(m, sort_keys=True, ensure_ascii=False) for m in f["mutants"]))
+            out.write("]}")
+        out.write("}}\n")
+    return path
+
+
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("report", nargs="+", help="mutation-report.json or a folder holding one (out/stryker/PIECE); "
@@ -268,6 +331,7 @@ def main(argv):
     ap.add_argument("--survivors", action="store_true", help="list survived and no-coverage mutants")
     ap.add_argument("--unchanged-at", metavar="COMMIT", help="check that every file of the piece is at COMMIT as measured")
     ap.add_argument("--standing", metavar="COMMIT", help="what the reports given measure of COMMIT, per piece and assembly")
+    ap.add_argument("--keep", metavar="DIR", help="write the run as DIR/PIECE.json, small enough to commit")
     a = ap.parse_args(argv)
     if a.standing:
         return standing(a.standing, a.report)
@@ -282,7 +346,7 @@ def main(argv):
         print("stryker-summary: %s: %s" % (a.report, e), file=sys.stderr)
         return 2
     folder = a.report if os.path.isdir(a.report) else os.path.dirname(report_path)
-    meta = read_meta(folder)
+    meta = report.get("run") or read_meta(folder)
     piece = a.piece or meta.get("piece") or os.path.basename(os.path.normpath(folder))
     commit = a.commit or meta.get("commit", "?")
     if a.date:
@@ -320,9 +384,13 @@ def main(argv):
                 if m.get("status") not in ("Survived", "NoCoverage"):
                     continue
                 line = m["location"]["start"]["line"]
-                code = src[line - 1].strip() if 0 < line <= len(src) else ""
+                code = m.get("code") or (src[line - 1].strip() if 0 < line <= len(src) else "")
                 print("%s:%d [%s] %s: %s -> %s" % (short(name, root), line, m["status"], m.get("mutatorName"),
                                                    code[:110], (m.get("replacement") or "").replace("\n", " ")[:110]))
+    if a.keep:
+        kept = keep(report, dict(meta, piece=piece, commit=commit), a.keep)
+        print()
+        print("kept as %s" % kept)
     if a.unchanged_at:
         changed = changed_at(files, a.unchanged_at, root)
         print()
