@@ -83,6 +83,29 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AThresholdMetExactlyMidwayBetweenTheBoundsGivesExactlyThatStrength()
+        {
+            // "The smallest strength at which every pair differs by at least Δc*": when Δc* is the adjacent cue at the
+            // bisection's first midpoint, that strength meets it exactly (and every weaker one falls short), so it is the answer.
+            var frames = ReferenceLift.Frames();
+            double midway = 0.5 * (WeightSolver.MinCueStrength + WeightSolver.MaxCueStrength);
+            double atMidway = CueStrengthTuning.AdjacentCueAt(Boxes, midway, WeightSolver.DefaultStandardSpeed, frames);
+            var t = CueStrengthTuning.SolveForThresholdCue(2, atMidway, Boxes);
+            Assert.That(t.Reached, Is.True);
+            Assert.That(t.CueStrength, Is.EqualTo(midway), "exactly the strength that meets the threshold, not one above it");
+            Assert.That(t.AdjacentCue, Is.EqualTo(atMidway));
+        }
+
+        [Test]
+        public void ABadStandardSpeedIsNamedEvenWhenTheStandardPlusTheJndOverflows()
+        {
+            // Both masses are finite and > 0 (valid); only the speed is bad, so the exception names standardSpeed, although
+            // the standard plus the JND is +∞ and a solver built for that mass would refuse its own massKg first.
+            Assert.That(() => CueStrengthTuning.Solve(double.MaxValue, double.MaxValue, Boxes, 0.01),
+                Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("standardSpeed"));
+        }
+
+        [Test]
         public void BadArgumentsThrowNamingThem()
         {
             Assert.That(() => CueStrengthTuning.Solve(0, 0.1, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Message.Contains("standardKg"));
