@@ -15,7 +15,8 @@ namespace Kosmos.PseudoHaptic.Tests
         static readonly double[] Boxes = CueStrengthTuning.ExperimentOneBoxes;
         static double Speed => WeightSolver.DefaultStandardSpeed;
 
-        [TestCase(2.0, 0.1), TestCase(0.5, 0.3), TestCase(1.0, 2.0), TestCase(0.2, 0.05)]
+        // The last case: a light standard (10 g) and a threshold whose JND is about 1/8000 of it, found to the same precision.
+        [TestCase(2.0, 0.1), TestCase(0.5, 0.3), TestCase(1.0, 2.0), TestCase(0.2, 0.05), TestCase(0.01, 1e-4)]
         public void TheJndIsTheMassWhoseCueLiesTheThresholdBelowTheStandards(double standard, double thresholdCue)
         {
             var t = CueStrengthTuning.SolveForThresholdCue(standard, thresholdCue, Boxes);
@@ -26,6 +27,18 @@ namespace Kosmos.PseudoHaptic.Tests
             var again = CueStrengthTuning.Solve(standard, t.JndKg, Boxes);
             Assert.That(again.ThresholdCue, Is.EqualTo(thresholdCue).Within(1e-6 * thresholdCue), "Solve(standard, JndKg) sees the same threshold");
             Assert.That(again.CueStrength, Is.EqualTo(t.CueStrength).Within(1e-6), "and gives the same strength");
+        }
+
+        [TestCase(4.0), TestCase(3.0)]
+        public void AComparisonWhoseCueLiesExactlyTheThresholdBelowGivesExactlyItsJnd(double comparison)
+        {
+            // Δc* taken from a comparison of 4 kg (twice the standard, where the search first brackets the JND) or 3 kg
+            // (the first midpoint of that bracket): the search meets a mass whose cue lies exactly Δc* below the standard's,
+            // and that mass is the answer: the JND is exactly comparison − standard, neither above nor below it.
+            var frames = ReferenceLift.Frames();
+            double threshold = CueStrengthTuning.CueDifference(2, comparison, Speed, frames);
+            var t = CueStrengthTuning.SolveForThresholdCue(2, threshold, Boxes);
+            Assert.That(t.JndKg, Is.EqualTo(comparison - 2));
         }
 
         [Test]
