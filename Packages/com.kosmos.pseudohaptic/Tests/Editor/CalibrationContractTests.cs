@@ -91,6 +91,37 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void ALiftOfExactlyTheShortestDurationCounts()
+        {
+            // "Too short" is a lift under 0.1 s: 0.25 m over one straight interval of 0.125 s (samples beyond the ±25 ms
+            // smoothing) takes 0.8 × 0.125 = 0.1 s from 10 % to 90 %, to the last bit, at 2 m/s.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.125, 0.375 }, new[] { 0, 0, 0.25, 0.25 });
+            Assert.That(lift.Duration, Is.EqualTo(StandardSpeedCalibration.MinDuration));
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Speed, Is.EqualTo(2.0).Within(1e-12));
+        }
+
+        [Test]
+        public void ALiftAtExactlyTheSlowestSpeedCounts()
+        {
+            // Speeds under 0.05 m/s are refused: 0.125 m over 2.5 s is 0.1 m in 2 s from 10 % to 90 %, 0.05 m/s to the last bit.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 2.5, 2.75 }, new[] { 0, 0, 0.125, 0.125 });
+            Assert.That(lift.Duration, Is.EqualTo(2.0).Within(1e-12));
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Speed, Is.EqualTo(StandardSpeedCalibration.MinSpeed));
+        }
+
+        [Test]
+        public void ALiftAtExactlyTheFastestSpeedCounts()
+        {
+            // Speeds over 5 m/s are refused: 1.25 m over 0.25 s is 1 m in 0.2 s from 10 % to 90 %, 5 m/s to the last bit.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5 }, new[] { 0, 0, 1.25, 1.25 });
+            Assert.That(lift.Duration, Is.EqualTo(0.2).Within(1e-12));
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Speed, Is.EqualTo(StandardSpeedCalibration.MaxSpeed));
+        }
+
+        [Test]
         public void OnlyTheLargestRiseCounts()
         {
             // A small lift (0.12 m) first, down again, then the real one (0.3 m) from a lower start.
@@ -213,6 +244,20 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(same.LiftsUsed, Is.EqualTo(4));
             Assert.That(same.StandardSpeed, Is.EqualTo(0.5));
             Assert.That(same.RelativeSpread, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void ALiftExactlyThreeScaledMadsFromTheMedianIsNotAnOutlier()
+        {
+            // Outliers lie *beyond* 3 scaled MADs (1.4826 × MAD). Median 0.75, MAD 0.25 (deviations 0.25, 0.125, 0, 0.25 and
+            // the fifth's): a fifth lift at 0.75 + 3 × 1.4826 × 0.25 m/s is exactly at the limit and stays in.
+            double atLimit = 0.75 + 3 * 1.4826 * 0.25;
+            Assert.That(atLimit - 0.75, Is.EqualTo(3 * 1.4826 * 0.25), "binary-exact: the limit to the last bit");
+            var r = StandardSpeedCalibration.Combine(new[] { Accepted(0.5), Accepted(0.625), Accepted(0.75), Accepted(1.0), Accepted(atLimit) });
+            Assert.That(r.IsAccepted, Is.True, r.Reason);
+            Assert.That(r.LiftsUsed, Is.EqualTo(5));
+            Assert.That(r.StandardSpeed, Is.EqualTo(0.75));
+            Assert.That(r.RelativeSpread, Is.EqualTo(0.25 / 0.75).Within(1e-12));
         }
 
         [Test]
