@@ -122,6 +122,41 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AHandThatPausesExactlyAtNinetyPercentReachedItWhenThePauseBegan()
+        {
+            // A rise of 0.5 m that pauses at exactly 0.45 m (90 %) from 0.25 s to 0.5 s: "the first time it reached 90 %" is
+            // 0.25 s, not when it next went above. 10 % (0.05 m) is crossed at 0.25 / 9 s on the way up.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5, 0.75, 1.0 }, new[] { 0, 0, 0.45, 0.45, 0.5, 0.5 });
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Rise, Is.EqualTo(0.5));
+            Assert.That(lift.Duration, Is.EqualTo(0.25 - 0.25 / 9).Within(1e-12));
+        }
+
+        [Test]
+        public void AHandThatPausesExactlyAtTenPercentWasLastBelowItWhenThePauseBegan()
+        {
+            // A rise of 0.5 m that pauses at exactly 0.05 m (10 %) from 0.25 s to 0.5 s: at 10 % is not below it, so "the last
+            // time the hand was below 10 %" ends at 0.25 s, not at 0.5 s. 90 % (0.45 m) is crossed at 0.5 + 0.25 × 0.4 / 0.45 s.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5, 0.75, 1.0 }, new[] { 0, 0, 0.05, 0.05, 0.5, 0.5 });
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Rise, Is.EqualTo(0.5));
+            Assert.That(lift.Duration, Is.EqualTo(0.5 + 0.25 * 0.4 / 0.45 - 0.25).Within(1e-12));
+        }
+
+        [Test]
+        public void SamplesExactly25MsApartAreInsideEachOthersSmoothingWindow()
+        {
+            // The moving average is over ±25 ms, both ends included: at 0, 25 and 50 ms (exactly 25 ms apart) the hand is at
+            // 0, 0.3 and 0.6 m, so the smoothed heights there are 0.15 (0 and 25 ms), 0.3 (all three) and 0.45 m (25 and 50 ms);
+            // the other samples are 0.25 s from any. Rise 0.6 m: 10 % (0.06 m) is crossed at −0.25 + 0.25 × 0.06 / 0.15 = −0.15 s,
+            // 90 % (0.54 m) at 0.05 + 0.25 × 0.09 / 0.15 = 0.2 s.
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.5, -0.25, 0, 0.025, 0.05, 0.3, 0.55 }, new[] { 0, 0, 0, 0.3, 0.6, 0.6, 0.6 });
+            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
+            Assert.That(lift.Rise, Is.EqualTo(0.6).Within(1e-12));
+            Assert.That(lift.Duration, Is.EqualTo(0.35).Within(1e-12));
+        }
+
+        [Test]
         public void OnlyTheLargestRiseCounts()
         {
             // A small lift (0.12 m) first, down again, then the real one (0.3 m) from a lower start.
