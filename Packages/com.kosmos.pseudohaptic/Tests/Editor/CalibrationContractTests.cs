@@ -101,24 +101,16 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(lift.Speed, Is.EqualTo(2.0).Within(1e-12));
         }
 
-        [Test]
-        public void ALiftAtExactlyTheSlowestSpeedCounts()
+        // Speeds under 0.05 m/s or over 5 m/s are refused. Slowest: 0.125 m over 2.5 s is 0.1 m in 2 s from 10 % to 90 %,
+        // 0.05 m/s to the last bit; fastest: 1.25 m over 0.25 s is 1 m in 0.2 s, 5 m/s to the last bit.
+        [TestCase(2.5, 0.125, 2.0, StandardSpeedCalibration.MinSpeed, TestName = "ALiftAtExactlyTheSlowestSpeedCounts")]
+        [TestCase(0.25, 1.25, 0.2, StandardSpeedCalibration.MaxSpeed, TestName = "ALiftAtExactlyTheFastestSpeedCounts")]
+        public void ALiftAtExactlyASpeedBoundCounts(double riseTime, double rise, double duration, double speed)
         {
-            // Speeds under 0.05 m/s are refused: 0.125 m over 2.5 s is 0.1 m in 2 s from 10 % to 90 %, 0.05 m/s to the last bit.
-            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 2.5, 2.75 }, new[] { 0, 0, 0.125, 0.125 });
-            Assert.That(lift.Duration, Is.EqualTo(2.0).Within(1e-12));
+            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, riseTime, riseTime + 0.25 }, new[] { 0, 0, rise, rise });
+            Assert.That(lift.Duration, Is.EqualTo(duration).Within(1e-12));
             Assert.That(lift.IsAccepted, Is.True, lift.Reason);
-            Assert.That(lift.Speed, Is.EqualTo(StandardSpeedCalibration.MinSpeed));
-        }
-
-        [Test]
-        public void ALiftAtExactlyTheFastestSpeedCounts()
-        {
-            // Speeds over 5 m/s are refused: 1.25 m over 0.25 s is 1 m in 0.2 s from 10 % to 90 %, 5 m/s to the last bit.
-            var lift = StandardSpeedCalibration.MeasureLift(new[] { -0.25, 0, 0.25, 0.5 }, new[] { 0, 0, 1.25, 1.25 });
-            Assert.That(lift.Duration, Is.EqualTo(0.2).Within(1e-12));
-            Assert.That(lift.IsAccepted, Is.True, lift.Reason);
-            Assert.That(lift.Speed, Is.EqualTo(StandardSpeedCalibration.MaxSpeed));
+            Assert.That(lift.Speed, Is.EqualTo(speed));
         }
 
         [Test]
