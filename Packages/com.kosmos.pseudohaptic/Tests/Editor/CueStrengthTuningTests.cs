@@ -106,6 +106,32 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AStandardAndAJndWhoseSumOverflowsAreRefusedNamingTheJnd()
+        {
+            // Each is a valid mass, but the comparison (their sum) is not: the argument named is the JND, not the solver's massKg.
+            Assert.That(() => CueStrengthTuning.Solve(double.MaxValue, double.MaxValue, Boxes),
+                Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("jndKg").And.Message.Contains("standardKg + jndKg"));
+            Assert.That(() => CueStrengthTuning.Solve(1e308, 1e308, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("jndKg"));
+        }
+
+        [Test]
+        public void TheThresholdCueTakesStandardsUpToATenthOfAPercentOfTheLargestDouble()
+        {
+            // Its search for the JND reaches 1000 × the standard: the largest standard taken gives the search's cap, 999 × the
+            // standard, at the next one up the standard itself is refused, named (not the solver's massKg of 1000 × it).
+            double largest = CueStrengthTuning.MaxStandardKgOfThresholdCue;
+            Assert.That(largest * 1000, Is.LessThan(double.PositiveInfinity));
+            var t = CueStrengthTuning.SolveForThresholdCue(largest, 100, Boxes);
+            Assert.That(t.JndKg, Is.EqualTo(999 * largest).Within(1e-12).Percent);
+            double above = largest * (1 + 1e-15);
+            Assert.That(above, Is.GreaterThan(largest));
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(above, 100, Boxes),
+                Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("standardKg"));
+            Assert.That(() => CueStrengthTuning.SolveForThresholdCue(1e306, 0.1, Boxes),
+                Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("standardKg"));
+        }
+
+        [Test]
         public void BadArgumentsThrowNamingThem()
         {
             Assert.That(() => CueStrengthTuning.Solve(0, 0.1, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Message.Contains("standardKg"));

@@ -45,8 +45,8 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>
         /// Tunes for a person whose JND is <paramref name="jndKg"/> at the standard <paramref name="standardKg"/> (both finite,
-        /// &gt; 0), for a scene of <paramref name="masses"/> (at least two, each finite and &gt; 0; sorted here), a user of
-        /// standard speed <paramref name="standardSpeed"/>: the threshold cue is Δc* = |c(m₀ + JND, 1) − c(m₀, 1)|. Bad
+        /// &gt; 0, their sum finite), for a scene of <paramref name="masses"/> (at least two, each finite and &gt; 0; sorted
+        /// here), a user of standard speed <paramref name="standardSpeed"/>: the threshold cue is Δc* = |c(m₀ + JND, 1) − c(m₀, 1)|. Bad
         /// arguments throw naming the argument. A JND measured in kg by a Gaussian in kg is not the model's (the cue is not
         /// linear in kg); <c>tune</c> and the headset staircase measure Δc* in the cue itself (<see cref="SolveForThresholdCue"/>).
         /// </summary>
@@ -55,13 +55,17 @@ namespace Kosmos.PseudoHaptic
             ConfigurationGuard.Positive(standardKg, nameof(standardKg));
             ConfigurationGuard.Positive(jndKg, nameof(jndKg));
             ConfigurationGuard.InRange(standardSpeed, WeightSolver.MinStandardSpeed, WeightSolver.MaxStandardSpeed, nameof(standardSpeed));
+            // The comparison's mass must exist: named here, or the solver built for it would name its own massKg.
+            if (double.IsInfinity(standardKg + jndKg))
+                throw new ArgumentOutOfRangeException(nameof(jndKg), jndKg, "standardKg + jndKg must be a finite mass, got standardKg " + standardKg.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + " and jndKg " + jndKg.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + ".");
             var frames = ReferenceLift.Frames();
             double threshold = Math.Abs(ReferenceLift.Cue(Profile, standardKg + jndKg, standardSpeed, 1, frames) - ReferenceLift.Cue(Profile, standardKg, standardSpeed, 1, frames));
             return Tune(standardKg, jndKg, threshold, masses, standardSpeed, frames);
         }
 
         /// <summary>
-        /// Tunes for a person whose threshold, measured in the cue itself at the standard <paramref name="standardKg"/> and
+        /// Tunes for a person whose threshold, measured in the cue itself at the standard <paramref name="standardKg"/> (finite,
+        /// &gt; 0, at most <see cref="MaxStandardKgOfThresholdCue"/>) and
         /// s = 1, is <paramref name="thresholdCue"/> = Δc* (the 75 % point's distance in c, finite, &gt; 0): the psychometric
         /// function fitted on <see cref="CueDifference"/> rather than on kg. <see cref="JndKg"/> is then the mass above the
         /// standard whose cue lies Δc* below the standard's (the JND in kg this threshold means there), so that
@@ -71,10 +75,16 @@ namespace Kosmos.PseudoHaptic
         {
             ConfigurationGuard.Positive(standardKg, nameof(standardKg));
             ConfigurationGuard.Positive(thresholdCue, nameof(thresholdCue));
+            // The search for the JND goes up to 1000 × the standard, which must be a finite mass.
+            ConfigurationGuard.InRange(standardKg, 0, MaxStandardKgOfThresholdCue, nameof(standardKg));
             ConfigurationGuard.InRange(standardSpeed, WeightSolver.MinStandardSpeed, WeightSolver.MaxStandardSpeed, nameof(standardSpeed));
             var frames = ReferenceLift.Frames();
             return Tune(standardKg, JndKgOfCue(standardKg, thresholdCue, standardSpeed, frames), thresholdCue, masses, standardSpeed, frames);
         }
+
+        /// <summary>The largest standard <see cref="SolveForThresholdCue"/> takes, kg: its search for the JND reaches 1000 × the
+        /// standard, a finite mass up to here.</summary>
+        public const double MaxStandardKgOfThresholdCue = double.MaxValue / 1000;
 
         /// <summary>
         /// The stimulus of the model's observer: c(standard, 1) − c(comparison, 1) on the reference lift, the cue by which a
