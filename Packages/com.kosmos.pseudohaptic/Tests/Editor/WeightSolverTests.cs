@@ -90,6 +90,19 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.GrabOffset, Is.EqualTo(0.3));
         }
 
+        [Test]
+        public void AnObjectExactlyOnTheFloorKeepsItsGrabOffsetExactly()
+        {
+            // The floor is not in the way of an object resting exactly on it, so the offset is kept as given, not recomputed
+            // from the heights: 1.0 − (1.0 − 0.1) is 0.09999999999999998 in doubles, not 0.1.
+            double floor = 1.0 - 0.1;
+            Assert.That(1.0 - floor, Is.Not.EqualTo(0.1), "the fixture needs an offset the heights do not give back");
+            var s = GolfBall(new WeightProfile("floor", new WeightEffect[] { new FloorClamp(floor) }));
+            s.BeginHoldWithGrabOffset(1.0, 0.1);
+            Assert.That(s.ObjectY, Is.EqualTo(floor), "on the floor, not raised");
+            Assert.That(s.GrabOffset, Is.EqualTo(0.1), "kept exactly as given");
+        }
+
         // Found by a surviving mutant: a hold begun with no tracked hand took the hand to be at height 0, and under the
         // paper profile the offset correction pulled the object 0.5 m down toward it in the first second.
         [Test]
