@@ -371,6 +371,47 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.ObjectY, Is.EqualTo(taken ? at : before));
         }
 
+        [TestCase(1)]
+        [TestCase(-1)]
+        public void APoseExactlyTheWorkspaceRadiusAwayIsTrackedAndOneBeyondItIsNot(int direction)
+        {
+            // ALGORITHM.md §5: a pose *farther* than the workspace radius from where the hold began is not tracked. With the
+            // smallest radius, 1 m, the hand walks 1/32 m a pose (under 1 m/s) from 1 m to exactly 2 m (or 0 m), then one step
+            // beyond: the golf ball (no effect, gain 1) is at the hand up to the radius and stays there after it.
+            var s = new WeightSolver(WeightModel.FromMass(PhysicalConstants.StandardMassKg), Only().WithLimits(new SolverLimits(workspaceRadius: 1.0)));
+            s.BeginHold(1.0, 1.0, 0);
+            for (int i = 1; i <= 33; i++)
+            {
+                double hand = 1.0 + direction * i / 32.0;
+                s.Step(new HandSample(hand, true, true, i / 30.0), 1 / 30.0);
+                Assert.That(s.ObjectY, Is.EqualTo(i <= 32 ? hand : 1.0 + direction), "pose " + i);
+            }
+        }
+
+        [TestCase(false)]
+        [TestCase(true)]
+        public void AGlideOfExactly1E5IsAGlideAndOneBeyondItIsNot(bool beyond)
+        {
+            // ALGORITHM.md §3 step 9: an offset change the hand's motion does not explain glides away, but a glide beyond ±10⁵ m
+            // (an absurd offset a scene's effect wrote) is none. A gain of 1 explains no change; a glide speed of 0.25 m/s over
+            // frames of 1/64 s takes steps of 1/256 m, so a change of 10⁵ + 1/256 m leaves a glide of exactly −10⁵ m after
+            // the frame's step (every number exact in binary): the object moves by that one step. At the next double beyond,
+            // there is no glide and the object goes where the offset puts it.
+            const double dt = 1 / 64.0, step = 1 / 256.0;
+            double change = beyond ? Math.BitIncrement(1e5 + step) : 1e5 + step;
+            var profile = Only(new AbsurdOffset { Value = change, From = 3, To = 4 }).WithLimits(new SolverLimits(glideSpeed: 0.25));
+            var s = new WeightSolver(WeightModel.FromMass(PhysicalConstants.StandardMassKg), profile);
+            s.BeginHold(1.0, 1.0, 0);
+            double hand = 1.0;
+            for (int i = 1; i <= 4; i++)
+            {
+                hand = 1.0 + i / 128.0;
+                s.Step(new HandSample(hand, true, true, i * dt), dt);
+            }
+            Assert.That(s.State.Glide, Is.EqualTo(beyond ? 0 : -1e5));
+            Assert.That(s.ObjectY, Is.EqualTo(beyond ? hand - change : hand - step));
+        }
+
         [TestCase(0.005, 0.0)]
         [TestCase(0.00500001, 0.00500001)]
         [TestCase(-0.005, 0.0)]
