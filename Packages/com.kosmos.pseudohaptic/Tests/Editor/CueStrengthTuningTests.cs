@@ -111,7 +111,9 @@ namespace Kosmos.PseudoHaptic.Tests
             // Each is a valid mass, but the comparison (their sum) is not: the argument named is the JND, not the solver's massKg.
             Assert.That(() => CueStrengthTuning.Solve(double.MaxValue, double.MaxValue, Boxes),
                 Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("jndKg").And.Message.Contains("standardKg + jndKg"));
-            Assert.That(() => CueStrengthTuning.Solve(1e308, 1e308, Boxes), Throws.TypeOf<ArgumentOutOfRangeException>().With.Property("ParamName").EqualTo("jndKg"));
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => CueStrengthTuning.Solve(1e308, 1e308, Boxes));
+            Assert.That(e.ParamName, Is.EqualTo("jndKg"));
+            Assert.That(e.Message, Does.StartWith("standardKg + jndKg must be a finite mass, got standardKg 1E+308 and jndKg 1E+308."), "says both values");
         }
 
         [Test]
