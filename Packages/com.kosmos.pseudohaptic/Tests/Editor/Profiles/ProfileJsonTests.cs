@@ -78,6 +78,8 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-correction\",\n\"band\": \"x\" }\n]\n}", 6, "effect 'offset-correction': setting 'band'", "a number (m)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"offset-relaxation\",\n\"timeConstant\": \"x\" }\n]\n}", 6, "effect 'offset-relaxation': setting 'timeConstant'", "a number (s)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"speed-cap\",\n\"headroom\": \"x\" }\n]\n}", 6, "effect 'speed-cap': setting 'headroom'", "a number (× v_exp)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"faster-moves-further\",\n\"restBand\": \"x\" }\n]\n}", 6, "effect 'faster-moves-further': setting 'restBand'", "a number (m)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"faster-moves-further\",\n\"pauseTime\": \"x\" }\n]\n}", 6, "effect 'faster-moves-further': setting 'pauseTime'", "a number (s)")]
         [TestCase("{\"format\":1,\"name\":\"x\",\"effects\":[],\"colour\":3}", 1, "unknown key 'colour'", "effects")]
         public void ABadFileNamesTheFileTheLineTheEffectAndTheSetting(string json, int line, string what, string hint)
         {
