@@ -398,7 +398,8 @@ namespace Kosmos.PseudoHaptic.Tests
             // the frame's step (every number exact in binary): the object moves by that one step. At the next double beyond,
             // there is no glide and the object goes where the offset puts it.
             const double dt = 1 / 64.0, step = 1 / 256.0;
-            double change = beyond ? Math.BitIncrement(1e5 + step) : 1e5 + step;
+            // The next double up, from its bits (Math.BitIncrement is not in Unity's .NET profile).
+            double change = beyond ? BitConverter.Int64BitsToDouble(BitConverter.DoubleToInt64Bits(1e5 + step) + 1) : 1e5 + step;
             var profile = Only(new AbsurdOffset { Value = change, From = 3, To = 4 }).WithLimits(new SolverLimits(glideSpeed: 0.25));
             var s = new WeightSolver(WeightModel.FromMass(PhysicalConstants.StandardMassKg), profile);
             s.BeginHold(1.0, 1.0, 0);
