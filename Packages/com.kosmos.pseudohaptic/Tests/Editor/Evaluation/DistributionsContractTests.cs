@@ -57,9 +57,6 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             }
         }
 
-        /// <summary>The Newton steps after the bisection: the quantile is the double whose CDF lies nearest p (or ties with
-        /// it) for 91 % of 4,000 seeded probabilities below ½, uniform and log-uniform down to 1e-300 (measured), and within
-        /// one double of it for 99.5 %; the bisection's bracket alone gives 55 % and 99.1 % (measured with the steps cut out).</summary>
         /// <summary>The next double above (+1) or below (−1) a finite, non-zero x. Math.BitIncrement is not in Unity's
         /// .NET profile (the per-asmdef compile tests say so).</summary>
         static double Neighbour(double x, int direction)
@@ -68,6 +65,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             return BitConverter.Int64BitsToDouble(x > 0 ? bits + direction : bits - direction);
         }
 
+        /// <summary>The Newton steps after the bisection: the quantile is the double whose CDF lies nearest p (or ties with
+        /// it) for 91 % of 4,000 seeded probabilities below ½, uniform and log-uniform down to 1e-300 (measured), and within
+        /// one double of it for 99.5 %; the bisection's bracket alone gives 55 % and 99.1 % (measured with the steps cut out).</summary>
         [Test]
         public void TheQuantileIsTheDoubleWhoseCdfIsNearestMostOfTheTime()
         {
