@@ -120,7 +120,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void TheThresholdCueTakesStandardsUpToATenthOfAPercentOfTheLargestDouble()
         {
             // Its search for the JND reaches 1000 × the standard: the largest standard taken gives the search's cap, 999 × the
-            // standard, at the next one up the standard itself is refused, named (not the solver's massKg of 1000 × it).
+            // standard; the next one up is refused, naming standardKg (not the massKg of a solver built for 1000 × it).
             double largest = CueStrengthTuning.MaxStandardKgOfThresholdCue;
             Assert.That(largest * 1000, Is.LessThan(double.PositiveInfinity));
             var t = CueStrengthTuning.SolveForThresholdCue(largest, 100, Boxes);
