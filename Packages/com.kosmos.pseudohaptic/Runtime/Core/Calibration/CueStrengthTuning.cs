@@ -46,10 +46,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>
         /// Tunes for a person whose JND is <paramref name="jndKg"/> at the standard <paramref name="standardKg"/> (both finite,
         /// &gt; 0, their sum finite), for a scene of <paramref name="masses"/> (at least two, each finite and &gt; 0; sorted
-        /// here), a user of standard speed <paramref name="standardSpeed"/>: the threshold cue is
-        /// Δc* = |c(m₀ + JND, 1) − c(m₀, 1)|. Bad arguments throw naming the argument. A JND measured in kg by a Gaussian in kg
-        /// is not the model's (the cue is not linear in kg); <c>tune</c> and the headset staircase measure Δc* in the cue
-        /// itself (<see cref="SolveForThresholdCue"/>).
+        /// here), a user of standard speed <paramref name="standardSpeed"/>: the threshold cue is Δc* = |c(m₀ + JND, 1) − c(m₀, 1)|. Bad
+        /// arguments throw naming the argument. A JND measured in kg by a Gaussian in kg is not the model's (the cue is not
+        /// linear in kg); <c>tune</c> and the headset staircase measure Δc* in the cue itself (<see cref="SolveForThresholdCue"/>).
         /// </summary>
         public static CueStrengthTuning Solve(double standardKg, double jndKg, IReadOnlyList<double> masses, double standardSpeed = WeightSolver.DefaultStandardSpeed)
         {
@@ -65,9 +64,9 @@ namespace Kosmos.PseudoHaptic
         }
 
         /// <summary>
-        /// Tunes for a person whose threshold, measured in the cue itself at the standard <paramref name="standardKg"/>
-        /// (finite, &gt; 0, at most <see cref="MaxStandardKgOfThresholdCue"/>) and s = 1, is <paramref name="thresholdCue"/>
-        /// = Δc* (the 75 % point's distance in c, finite, &gt; 0): the psychometric
+        /// Tunes for a person whose threshold, measured in the cue itself at the standard <paramref name="standardKg"/> (finite,
+        /// &gt; 0, at most <see cref="MaxStandardKgOfThresholdCue"/>) and
+        /// s = 1, is <paramref name="thresholdCue"/> = Δc* (the 75 % point's distance in c, finite, &gt; 0): the psychometric
         /// function fitted on <see cref="CueDifference"/> rather than on kg. <see cref="JndKg"/> is then the mass above the
         /// standard whose cue lies Δc* below the standard's (the JND in kg this threshold means there), so that
         /// <see cref="Solve"/>(standardKg, JndKg) gives the same strength.

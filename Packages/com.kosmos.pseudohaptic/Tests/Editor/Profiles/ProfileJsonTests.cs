@@ -80,6 +80,12 @@ namespace Kosmos.PseudoHaptic.Tests
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"speed-cap\",\n\"headroom\": \"x\" }\n]\n}", 6, "effect 'speed-cap': setting 'headroom'", "a number (× v_exp)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"faster-moves-further\",\n\"restBand\": \"x\" }\n]\n}", 6, "effect 'faster-moves-further': setting 'restBand'", "a number (m)")]
         [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"faster-moves-further\",\n\"pauseTime\": \"x\" }\n]\n}", 6, "effect 'faster-moves-further': setting 'pauseTime'", "a number (s)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"floor-clamp\",\n\"floor\": \"x\" }\n]\n}", 6, "effect 'floor-clamp': setting 'floor'", "a number (m)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"height-deceleration\",\n\"height\": \"x\" }\n]\n}", 6, "effect 'height-deceleration': setting 'height'", "a number (m)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"lateral-inertia\",\n\"timeConstant\": \"x\" }\n]\n}", 6, "effect 'lateral-inertia': setting 'timeConstant'", "a number (s)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"lateral-inertia\",\n\"maxOffset\": \"x\" }\n]\n}", 6, "effect 'lateral-inertia': setting 'maxOffset'", "a number (m)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"motion-deadband\",\n\"lagTime\": \"x\" }\n]\n}", 6, "effect 'motion-deadband': setting 'lagTime'", "a number (s)")]
+        [TestCase("{\n\"format\": 1,\n\"name\": \"x\",\n\"effects\": [\n{ \"effect\": \"motion-deadband\",\n\"jitterSpan\": \"x\" }\n]\n}", 6, "effect 'motion-deadband': setting 'jitterSpan'", "a number (m)")]
         [TestCase("{\"format\":1,\"name\":\"x\",\"effects\":[],\"colour\":3}", 1, "unknown key 'colour'", "effects")]
         public void ABadFileNamesTheFileTheLineTheEffectAndTheSetting(string json, int line, string what, string hint)
         {
