@@ -52,6 +52,19 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AHoldBegunTrackedHasNothingToSettleWhateverTheSettleTime()
+        {
+            // A hold starts settled: with no loss there is nothing to settle, so even the longest settle time (5 s) lets the first
+            // frame count.
+            var probe = new SettlingProbe();
+            var s = new WeightSolver(WeightModel.FromMass(1), new WeightProfile("settle", new WeightEffect[] { new TrackingLossHold(5), probe, new WeightGain() }));
+            double t = 0, dt = 1 / 64.0;
+            s.BeginHold(1.0, 1.0, t);
+            for (int i = 1; i <= 10; i++) { t += dt; s.Step(new HandSample(1.0 + 0.001 * i, true, true, t), dt); }
+            Assert.That(probe.Settling, Is.All.False);
+        }
+
+        [Test]
         public void OnceSettledAfterALossARepeatedPoseIsAStillFrameAgain()
         {
             var counts = new CountsPipelineFrames();
