@@ -18,6 +18,10 @@ namespace Kosmos.PseudoHaptic.Tests
             protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => Settling.Add(frame.Settling);
         }
 
+        /// <summary>A 1 kg object under the tracking-loss hold of <paramref name="settleTime"/>, the probe after it.</summary>
+        static WeightSolver Settling(double settleTime, SettlingProbe probe)
+            => new WeightSolver(WeightModel.FromMass(1), new WeightProfile("settle", new WeightEffect[] { new TrackingLossHold(settleTime), probe, new WeightGain() }));
+
         [Test]
         public void TheHoldStateSaysHowLongTheLossHasLastedAndZeroOnceTracked()
         {
@@ -41,7 +45,7 @@ namespace Kosmos.PseudoHaptic.Tests
             // Frames of 1/64 s and a settle time of 0.125 s, both exact in binary: the 8th usable frame after the loss is the
             // first that counts (the settle time is over), the 7 before it settle.
             var probe = new SettlingProbe();
-            var s = new WeightSolver(WeightModel.FromMass(1), new WeightProfile("settle", new WeightEffect[] { new TrackingLossHold(0.125), probe, new WeightGain() }));
+            var s = Settling(0.125, probe);
             double t = 0, dt = 1 / 64.0;
             s.BeginHold(1.0, 1.0, t);
             for (int i = 0; i < 4; i++) { t += dt; s.Step(new HandSample(1.0, true, true, t), dt); }
@@ -57,7 +61,7 @@ namespace Kosmos.PseudoHaptic.Tests
             // A hold starts settled: with no loss there is nothing to settle, so even the longest settle time (5 s) lets the first
             // frame count.
             var probe = new SettlingProbe();
-            var s = new WeightSolver(WeightModel.FromMass(1), new WeightProfile("settle", new WeightEffect[] { new TrackingLossHold(5), probe, new WeightGain() }));
+            var s = Settling(5, probe);
             double t = 0, dt = 1 / 64.0;
             s.BeginHold(1.0, 1.0, t);
             for (int i = 1; i <= 10; i++) { t += dt; s.Step(new HandSample(1.0 + 0.001 * i, true, true, t), dt); }
