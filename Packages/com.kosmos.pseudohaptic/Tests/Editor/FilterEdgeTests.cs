@@ -109,6 +109,27 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheWindowAveragesRunningSumKeepsAPoseCheapHoweverFullTheWindow()
+        {
+            // The running sum is why a pose costs the same with 65,536 poses in the window as with 1: it is recomputed
+            // from the slots only once per capacity's count of poses. 200,000 poses of a 10 kHz source into a 10 s
+            // window, full at 65,536 from the 65,536th on: a few milliseconds with the running sum; summed afresh at
+            // every pose, about 10¹⁰ additions, seconds on any machine. The bound leaves two orders of magnitude for a
+            // loaded one.
+            const int poses = 200000, capacity = OneSecondAverage.MaxCapacity;
+            var f = new OneSecondAverage(10, capacity);
+            f.Reset(0);
+            double y = 0;
+            var watch = System.Diagnostics.Stopwatch.StartNew();
+            for (int i = 1; i <= poses; i++) y = f.Filter(i % 100 * 0.001, true, 1e-4, 1e-4);
+            watch.Stop();
+            double sum = 0;
+            for (int i = poses - capacity + 1; i <= poses; i++) sum += i % 100 * 0.001;
+            Assert.That(y, Is.EqualTo(sum / capacity).Within(1e-12), "the mean of the last 65,536 poses");
+            Assert.That(watch.Elapsed.TotalSeconds, Is.LessThan(2), "200,000 poses into a full window");
+        }
+
+        [Test]
         public void OneSecondAverageGivesTheLastPoseItselfWhenItIsAlone()
         {
             // 0.1 + 0.2 − 0.1 is 0.20000000000000004 in doubles: alone, the newest pose is returned, not the running sum.
