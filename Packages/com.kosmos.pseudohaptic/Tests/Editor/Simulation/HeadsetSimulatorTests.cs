@@ -290,5 +290,41 @@ namespace Kosmos.PseudoHaptic.Tests
             // A stretch of no time is allowed (it changes nothing).
             Assert.That(sim.Drop(0.5, 0).Render(Held(1)), Has.All.Matches<TraceFrame>(f => f.Tracked));
         }
+
+        // A seed is a trace: the accuracy pages' generated figures and a study's synthetic runs are reproduced from seeds,
+        // so the streams behind jitter, glitches, confidence and frame wobble (SplitMix64 per pose, System.Random's seeded
+        // sequence per frame) must not change between versions. Known answers of this version, printed with "R"; the
+        // heights are compared to 1e-15 m because Math.Log and Math.Cos may differ in the last bit between runtimes.
+        [Test]
+        public void ASeedRendersTheSameTraceInEveryVersion()
+        {
+            var frames = new HeadsetSimulator
+            {
+                JitterSd = 0.01, GlitchChance = 0.5, GlitchSize = 0.03, LowConfidenceAboveSpeed = 0, LowConfidenceChance = 0.5,
+                FrameTimeWobble = 0.2, Seed = 11,
+            }.Render(HandPath.StartAt(0.8).MoveTo(1.2, 1.0));
+            double[] times =
+            {
+                0, 0.010990763226881875, 0.02007934168502244, 0.030998855394569418, 0.043914559518464694, 0.05356956525820236,
+                0.06322183489432127, 0.0758202826253647, 0.0889789773110306, 0.09937201490079096, 0.10972742170858854,
+                0.12037605322914946,
+            };
+            for (int i = 0; i < times.Length; i++) Assert.That(frames[i].Time, Is.EqualTo(times[i]), "frame " + i);
+            // The first 16 poses (from k = −2, before the move starts), and which of them are low-confidence.
+            double[] heights =
+            {
+                0.7799839273097269, 0.8390861095947324, 0.8166579971149303, 0.8275951370310078, 0.8411620299685549,
+                0.7847943334676651, 0.781285522149886, 0.8139784321345547, 0.7826579298308729, 0.7907839820887508,
+                0.8612077241333161, 0.8530518317613349, 0.837385025828127, 0.8667404363963549, 0.9535092111277116,
+                0.9438190412850153,
+            };
+            bool[] low = { false, false, true, true, false, true, false, false, false, false, false, true, false, false, true, true };
+            var poses = Poses(frames);
+            for (int i = 0; i < heights.Length; i++)
+            {
+                Assert.That(poses[i].HandY, Is.EqualTo(heights[i]).Within(1e-15), "pose " + i);
+                Assert.That(poses[i].LowConfidence, Is.EqualTo(low[i]), "pose " + i);
+            }
+        }
     }
 }
