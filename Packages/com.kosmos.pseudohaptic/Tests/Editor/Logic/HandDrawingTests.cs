@@ -110,6 +110,20 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(frames, Is.EqualTo(22), "0.22 m at 1 cm a frame");
         }
 
+        /// <summary>What remains of a return is measured through a square root and a division, so it is the step to the last
+        /// bit only by chance: an offset within a picometre of a frame's step ends in that frame (here 1 cm and a picometre,
+        /// released before a 250 ms hitch whose step is the 1 cm cap), not one frame later with a picometre left.</summary>
+        [Test]
+        public void AnOffsetAPicometreOverTheFramesStepReturnsInThatFrame()
+        {
+            const double picometre = 1e-12;
+            var drawing = new HandDrawing();
+            drawing.Update(HandDrawingMode.HandOnObject, true, new Vector3d(HandDrawing.MaxStep + picometre, 0, 0), 1 / 72.0);
+            drawing.Update(HandDrawingMode.HandOnObject, false, Vector3d.NaN, 0.25);
+            Assert.That(drawing.Offset.X, Is.EqualTo(0), "the offset left after the hitch");
+            Assert.That(drawing.IsReturning, Is.False);
+        }
+
         [Test]
         public void ARegrabDuringTheReturnNeverJumps([Range(1, 100)] int seed)
         {

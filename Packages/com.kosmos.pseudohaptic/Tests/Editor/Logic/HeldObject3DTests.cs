@@ -193,6 +193,43 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(one.Solver.State.Time, Is.EqualTo(both.Solver.State.Time).Within(1e-9), "every frame's time was stepped");
         }
 
+        /// <summary>
+        /// The same stop mid-lift, against a driver that goes on stepping the hand but reports it lost from that frame: the
+        /// object moves the same, bit for bit, frame by frame. The frame the first hand stepped alone (its step then waits for
+        /// the other hand) is stepped with the first hand's pose when the stop is noticed a frame later, not with both hands
+        /// taken as lost.
+        /// </summary>
+        [Test]
+        public void AHandWhoseDriverStopsIsSteppedAsALostHandFromTheFrameItStopped([Range(1, 20)] int seed)
+        {
+            const int stopAt = 81; // 0.9 s: mid-lift
+            HandFrame[] left = Hand(QuestHand.Lift(Table + LeftGrip, 0.3, 0.6, 0.8), 2.0, seed);
+            HandFrame[] right = Hand(QuestHand.Lift(Table + RightGrip, 0.3, 0.6, 0.8), 2.0, seed + 700);
+
+            double[] Run(bool rightStops, out HeldObject hold)
+            {
+                hold = Object(1, NamedProfiles.PaperExperiment);
+                Assert.That(hold.Begin(1, Table + LeftGrip, double.NaN, Table, Table.Y), Is.True, hold.Error);
+                Assert.That(hold.Begin(2, Table + RightGrip, double.NaN, Table, Table.Y), Is.True, hold.Error);
+                var ys = new double[left.Length];
+                for (int i = 0; i < left.Length; i++)
+                {
+                    HandFrame r = right[i];
+                    if (i < stopAt) hold.Step(2, r.Position, r.Tracked, r.HighConfidence, double.NaN, r.Dt);
+                    else if (!rightStops) hold.Step(2, r.Position, false, false, double.NaN, r.Dt);
+                    ys[i] = hold.Step(1, left[i].Position, left[i].Tracked, left[i].HighConfidence, double.NaN, left[i].Dt);
+                }
+                return ys;
+            }
+
+            double[] stopped = Run(rightStops: true, out HeldObject one), lost = Run(rightStops: false, out HeldObject reported);
+            Assert.That(stopped[stopAt], Is.NaN, "the first hand's step at the stop waits for the other hand");
+            for (int i = stopAt + 1; i < left.Length; i++) Assert.That(stopped[i], Is.EqualTo(lost[i]), "frame " + i);
+            Assert.That(one.ObjectY, Is.EqualTo(reported.ObjectY));
+            Assert.That(one.HandPoint.Y, Is.EqualTo(reported.HandPoint.Y));
+            Assert.That(one.Solver.State.Time, Is.EqualTo(reported.Solver.State.Time));
+        }
+
         /// <summary>A hand lets go and another grasp takes its slot elsewhere: the object does not move to the new hand.</summary>
         [Test]
         public void AHandThatLetsGoAndGraspsElsewhereIsNotTakenForAHandReturning()

@@ -63,6 +63,40 @@ namespace Kosmos.PseudoHaptic.Tests
             using (var reader = new StreamReader(path)) return HoldRecording.ReadCsv(reader, path);
         }
 
+        /// <summary>
+        /// What the recorder reports written is on the device: the hold file's temporary copy is synced once, by its writer,
+        /// before the rename that makes it the hold file, and the folder after (strace attached to this process,
+        /// <see cref="SelfTrace"/>; Linux with strace, ignored elsewhere). The tool's DurabilityTests check the same in a child
+        /// process; this one sees the recorder's own code, in the process that runs it.
+        /// </summary>
+        [Test]
+        public void AHoldFileIsSyncedOnceBeforeItsRenameAndItsFolderAfter()
+        {
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "Box B", 1.5);
+            Lift(box, 0.3, 1.1);
+            string folder = Path.Combine(_folder, "P1"), path = Path.Combine(folder, "hold-001-Box_B.csv");
+            Directory.CreateDirectory(_folder);
+            List<SelfTrace.Call> calls;
+            using (var trace = SelfTrace.Start(_folder, "fsync,fdatasync,rename,renameat,renameat2"))
+            {
+                try { box.Hold.End(1); }
+                finally { calls = trace.Stop(); }
+            }
+            Assert.That(File.Exists(path), Is.True);
+
+            int renamed = calls.FindIndex(c => c.Name.StartsWith("rename", StringComparison.Ordinal) && c.Paths.Length == 2 && c.Paths[1] == path);
+            Assert.That(renamed, Is.GreaterThanOrEqualTo(0), "the hold file's rename: " + string.Join("\n", calls));
+            string temp = calls[renamed].Paths[0];
+            var syncs = new List<int>();
+            for (int i = 0; i < calls.Count; i++)
+                if ((calls[i].Name == "fsync" || calls[i].Name == "fdatasync") && calls[i].DescriptorPath == temp) syncs.Add(i);
+            Assert.That(syncs.Count, Is.EqualTo(1), "syncs of " + temp + ": " + string.Join("\n", calls));
+            Assert.That(syncs[0], Is.LessThan(renamed), "synced before its rename");
+            Assert.That(calls.FindIndex(renamed + 1, c => (c.Name == "fsync" || c.Name == "fdatasync") && c.DescriptorPath == folder),
+                Is.GreaterThan(renamed), "the folder synced after the rename: " + string.Join("\n", calls));
+        }
+
         [Test]
         public void EachHoldIsWrittenWhenItEndsAsAReplayTraceWithOneRowPerFrame()
         {
