@@ -287,6 +287,64 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(c.Message, Does.StartWith("Hold the ball still for lift 2 of 3").And.EndWith("."));
         }
 
+        /// <summary>
+        /// A lift that rose half the smallest lift (5 cm) or more waits for the ball lowered by as much from its top before the
+        /// next rest; a smaller one asks for the rest at once. Both at their exact edge: from 5 cm to 10 cm (0.1 − 0.05 is
+        /// 0.05 exactly in doubles), held there until MaxLiftTime ends the lift (too small to count), then lowered to 5 cm.
+        /// </summary>
+        [Test]
+        public void ALiftOfHalfTheSmallestRiseWaitsForTheBallLoweredByHalfTheSmallestRise()
+        {
+            double half = 0.5 * StandardSpeedCalibration.MinRise;
+            Assert.That(2 * half - half, Is.EqualTo(half), "the heights below are exact");
+            var c = Scripted(2);
+            c.MaxLiftTime = 1;
+            c.Begin(true);
+            Still(c, half, 17);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
+            Frames(c, 2 * half);
+            Still(c, 2 * half, 40);
+            Assert.That(c.Measurements.Count, Is.EqualTo(1), "ended by MaxLiftTime");
+            Assert.That(c.Measurements[0].IsAccepted, Is.False, "smaller than the smallest lift");
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lower), "risen half the smallest lift: lower the ball first");
+            Assert.That(c.Message, Does.EndWith(" Lower the ball to the table."));
+            Frames(c, 2 * half - half / 2);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lower), "lowered a quarter of the smallest lift");
+            Frames(c, half);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Rest), "lowered half the smallest lift from the top");
+
+            // A hair less than half the smallest lift: the rest is asked for at once.
+            var d = Scripted(2);
+            d.MaxLiftTime = 1;
+            d.Begin(true);
+            Still(d, half, 17);
+            Still(d, 2 * half - 1e-9, 40);
+            Assert.That(d.Measurements.Count, Is.EqualTo(1));
+            Assert.That(d.Phase, Is.EqualTo(CalibrationPhase.Rest));
+            Assert.That(d.Message, Does.EndWith(" Hold the ball still to try again."));
+        }
+
+        /// <summary>Faster than the 250 new poses a second the buffer is sized for (no headset tracks that fast), a lift ends
+        /// when its buffer is full, measured from what it holds, rather than running on with nothing more recorded.</summary>
+        [Test]
+        public void AboveTwoHundredFiftyPosesASecondALiftEndsWhenItsBufferIsFull()
+        {
+            const double dt = 1.0 / 1024;
+            var c = new CalibrationStation { LiftsWanted = 1 };
+            c.Begin(true);
+            double y = 0.8;
+            for (int i = 0; i < 2000 && c.Phase == CalibrationPhase.Rest; i++) c.Tick(dt, true, y, double.NaN);
+            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
+            int frames = 1; // the lift's first sample was the frame that started it
+            for (; frames < 8000 && c.Phase == CalibrationPhase.Lift; frames++)
+            {
+                y += 0.0001; // rising slowly, never settling
+                c.Tick(dt, true, y, double.NaN);
+            }
+            Assert.That(c.Measurements.Count, Is.EqualTo(1));
+            Assert.That(frames, Is.EqualTo((int)(c.MaxLiftTime * 250) + 2), "the buffer's samples, each a new pose");
+        }
+
         [Test]
         public void ALiftThatRanOutOfTimeBackNearItsStartDoesNotCountAndSaysWhy()
         {
