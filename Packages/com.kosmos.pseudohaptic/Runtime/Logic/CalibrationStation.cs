@@ -12,7 +12,7 @@ namespace Kosmos.PseudoHaptic
         Rest,
         /// <summary>Recording a lift.</summary>
         Lift,
-        /// <summary>Waiting for the hand to lower the ball after a lift.</summary>
+        /// <summary>Waiting for the ball lowered half the smallest lift from its top, after a lift that rose at least that much (a smaller one goes back to Rest).</summary>
         Lower,
         Accepted,
         Rejected,
@@ -29,16 +29,12 @@ namespace Kosmos.PseudoHaptic
     /// The calibration station's decisions (Son et al. 2022, §3, Fig. 6a), engine-free: it segments the hand's height
     /// into lifts of a real golf ball (still at rest → lift → still at the top → lowered), hands each lift's samples to
     /// the core's <see cref="StandardSpeedCalibration"/>, says what to do next or why a lift did not count, and, with
-    /// enough lifts, combines them and stores an accepted result through an <see cref="ICalibrationSaver"/>. A lift that
-    /// rose half the smallest lift (<see cref="StandardSpeedCalibration.MinRise"/> / 2) or more, counted or not, waits for
-    /// the ball lowered by as much from its top before the next rest; a smaller one asks for the rest at once. Buffers
-    /// are allocated at <see cref="Begin"/> for 250 new poses a second over <see cref="MaxLiftTime"/> (faster than any
-    /// headset tracks; a lift that fills them ends there); frames allocate nothing (messages are built only when the
-    /// phase changes).
+    /// enough lifts, combines them and stores an accepted result through an <see cref="ICalibrationSaver"/>. Buffers
+    /// are allocated at <see cref="Begin"/>; frames allocate nothing (messages are built only when the phase changes).
     /// </summary>
     public sealed class CalibrationStation
     {
-        const int SamplesPerSecond = 250; // above any tracking or frame rate
+        const int SamplesPerSecond = 250; // above any tracking or frame rate; a lift that fills its buffer (MaxLiftTime at this rate) ends there
 
         readonly List<LiftMeasurement> _measurements = new List<LiftMeasurement>();
         double[] _t = Array.Empty<double>();
