@@ -329,20 +329,9 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void AboveTwoHundredFiftyPosesASecondALiftEndsWhenItsBufferIsFull()
         {
-            const double dt = 1.0 / 1024;
-            var c = new CalibrationStation { LiftsWanted = 1 };
-            c.Begin(true);
-            double y = 0.8;
-            for (int i = 0; i < 2000 && c.Phase == CalibrationPhase.Rest; i++) c.Tick(dt, true, y, double.NaN);
-            Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
-            int frames = 1; // the lift's first sample was the frame that started it
-            for (; frames < 8000 && c.Phase == CalibrationPhase.Lift; frames++)
-            {
-                y += 0.0001; // rising slowly, never settling
-                c.Tick(dt, true, y, double.NaN);
-            }
+            var (c, rising) = SlowLift(1.0 / 1024, 0.0001);
             Assert.That(c.Measurements.Count, Is.EqualTo(1));
-            Assert.That(frames, Is.EqualTo((int)(c.MaxLiftTime * 250) + 2), "the buffer's samples, each a new pose");
+            Assert.That(1 + rising, Is.EqualTo((int)(c.MaxLiftTime * 250) + 2), "the buffer's samples (the lift's first and each rising pose)");
         }
 
         [Test]
@@ -452,19 +441,28 @@ namespace Kosmos.PseudoHaptic.Tests
         {
             // The buffer is sized for 250 samples a second ("above any tracking or frame rate").
             const double dt = 1.0 / 250;
+            var (c, rising) = SlowLift(dt, 0.0005);
+            Assert.That(rising * dt, Is.GreaterThanOrEqualTo(c.MaxLiftTime));
+            Assert.That(c.Measurements.Count, Is.EqualTo(1));
+        }
+
+        /// <summary>A one-lift station given a new pose every <paramref name="dt"/> s: at rest at 0.8 m until its lift starts,
+        /// then rising <paramref name="step"/> m a pose, never settling, until the lift ends (at most 8000 poses). Returns the
+        /// station and the rising poses the lift took.</summary>
+        static (CalibrationStation station, int rising) SlowLift(double dt, double step)
+        {
             var c = new CalibrationStation { LiftsWanted = 1 };
             c.Begin(true);
             double y = 0.8;
-            for (int i = 0; i < 500 && c.Phase == CalibrationPhase.Rest; i++) c.Tick(dt, true, y, double.NaN);
+            for (int i = 0; i < 8000 && c.Phase == CalibrationPhase.Rest; i++) c.Tick(dt, true, y, double.NaN);
             Assert.That(c.Phase, Is.EqualTo(CalibrationPhase.Lift));
-            int frames = 0;
-            for (; frames < 2000 && c.Phase == CalibrationPhase.Lift; frames++)
+            int rising = 0;
+            for (; rising < 8000 && c.Phase == CalibrationPhase.Lift; rising++)
             {
-                y += 0.0005; // rising slowly, never settling
+                y += step;
                 c.Tick(dt, true, y, double.NaN);
             }
-            Assert.That(frames * dt, Is.GreaterThanOrEqualTo(c.MaxLiftTime));
-            Assert.That(c.Measurements.Count, Is.EqualTo(1));
+            return (c, rising);
         }
     }
 }
