@@ -33,26 +33,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
         }
 
-        /// <summary>The calls on <paramref name="under"/> (its own path or below it), each as "fsync PATH", "rename FROM -> TO",
-        /// "mkdir PATH", with " = -1" appended to a failed one.</summary>
-        List<string> Traced(Action act, string under, string inject = null)
-        {
-            List<SelfTrace.Call> calls;
-            using (var trace = SelfTrace.Start(_dir, Syscalls, inject))
-            {
-                try { act(); }
-                finally { calls = trace.Stop(); }
-            }
-            var shown = new List<string>();
-            foreach (var c in calls)
-            {
-                string[] paths = c.Name.StartsWith("fsync", StringComparison.Ordinal) || c.Name == "fdatasync" ? new[] { c.DescriptorPath } : c.Paths;
-                if (paths.Length == 0 || paths[0] == null || !(paths[0] == under || paths[0].StartsWith(under + "/", StringComparison.Ordinal))) continue;
-                string name = c.Name.StartsWith("rename", StringComparison.Ordinal) ? "rename" : c.Name.StartsWith("mkdir", StringComparison.Ordinal) ? "mkdir" : c.Name;
-                shown.Add(name + " " + string.Join(" -> ", paths) + (c.Result < 0 ? " = -1" : ""));
-            }
-            return shown;
-        }
+        List<string> Traced(Action act, string under, string inject = null) => SelfTrace.CallsUnder(act, _dir, Syscalls, under, inject);
 
         /// <summary>The temporary file a traced write renamed from (the first rename's source).</summary>
         static string TemporaryOf(List<string> calls)

@@ -77,24 +77,20 @@ namespace Kosmos.PseudoHaptic.Tests
             Lift(box, 0.3, 1.1);
             string folder = Path.Combine(_folder, "P1"), path = Path.Combine(folder, "hold-001-Box_B.csv");
             Directory.CreateDirectory(_folder);
-            List<SelfTrace.Call> calls;
-            using (var trace = SelfTrace.Start(_folder, "fsync,fdatasync,rename,renameat,renameat2"))
-            {
-                try { box.Hold.End(1); }
-                finally { calls = trace.Stop(); }
-            }
+            List<string> calls = SelfTrace.CallsUnder(() => box.Hold.End(1), _folder, "fsync,fdatasync,rename,renameat,renameat2", folder);
             Assert.That(File.Exists(path), Is.True);
 
-            int renamed = calls.FindIndex(c => c.Name.StartsWith("rename", StringComparison.Ordinal) && c.Paths.Length == 2 && c.Paths[1] == path);
-            Assert.That(renamed, Is.GreaterThanOrEqualTo(0), "the hold file's rename: " + string.Join("\n", calls));
-            string temp = calls[renamed].Paths[0];
+            string all = string.Join("\n", calls);
+            int renamed = calls.FindIndex(c => c.StartsWith("rename ", StringComparison.Ordinal) && c.EndsWith(" -> " + path, StringComparison.Ordinal));
+            Assert.That(renamed, Is.GreaterThanOrEqualTo(0), "the hold file's rename: " + all);
+            string temp = calls[renamed].Substring(7, calls[renamed].IndexOf(" -> ", StringComparison.Ordinal) - 7);
             var syncs = new List<int>();
             for (int i = 0; i < calls.Count; i++)
-                if ((calls[i].Name == "fsync" || calls[i].Name == "fdatasync") && calls[i].DescriptorPath == temp) syncs.Add(i);
-            Assert.That(syncs.Count, Is.EqualTo(1), "syncs of " + temp + ": " + string.Join("\n", calls));
+                if (calls[i] == "fsync " + temp || calls[i] == "fdatasync " + temp) syncs.Add(i);
+            Assert.That(syncs.Count, Is.EqualTo(1), "syncs of " + temp + ": " + all);
             Assert.That(syncs[0], Is.LessThan(renamed), "synced before its rename");
-            Assert.That(calls.FindIndex(renamed + 1, c => (c.Name == "fsync" || c.Name == "fdatasync") && c.DescriptorPath == folder),
-                Is.GreaterThan(renamed), "the folder synced after the rename: " + string.Join("\n", calls));
+            Assert.That(calls.FindIndex(renamed + 1, c => c == "fsync " + folder || c == "fdatasync " + folder),
+                Is.GreaterThan(renamed), "the folder synced after the rename: " + all);
         }
 
         [Test]

@@ -60,6 +60,28 @@ namespace Kosmos.PseudoHaptic.Tests
             return trace;
         }
 
+        /// <summary>Runs <paramref name="act"/> traced (<see cref="Start"/>, the trace in <paramref name="folder"/>) and returns
+        /// the calls on <paramref name="under"/> (its own path or below it), each as "fsync PATH", "rename FROM -> TO",
+        /// "mkdir PATH", with " = -1" appended to a failed one.</summary>
+        public static List<string> CallsUnder(Action act, string folder, string syscalls, string under, string inject = null)
+        {
+            List<Call> calls;
+            using (var trace = Start(folder, syscalls, inject))
+            {
+                try { act(); }
+                finally { calls = trace.Stop(); }
+            }
+            var shown = new List<string>();
+            foreach (var c in calls)
+            {
+                string[] paths = c.Name.StartsWith("fsync", StringComparison.Ordinal) || c.Name == "fdatasync" ? new[] { c.DescriptorPath } : c.Paths;
+                if (paths.Length == 0 || paths[0] == null || !(paths[0] == under || paths[0].StartsWith(under + "/", StringComparison.Ordinal))) continue;
+                string name = c.Name.StartsWith("rename", StringComparison.Ordinal) ? "rename" : c.Name.StartsWith("mkdir", StringComparison.Ordinal) ? "mkdir" : c.Name;
+                shown.Add(name + " " + string.Join(" -> ", paths) + (c.Result < 0 ? " = -1" : ""));
+            }
+            return shown;
+        }
+
         /// <summary>Detaches strace (SIGINT, as a user's Ctrl-C) and returns the calls it saw.</summary>
         public List<Call> Stop()
         {
