@@ -89,6 +89,16 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void AFileWhoseFirstConditionComesAfterRowsWithoutOneIsRefusedNamingPairs()
+        {
+            // Rows that leave the condition blank, then the file's first named condition: the refusal counts pairs, though
+            // no condition was kept yet (P1 in "visual" is a set of sheets besides P1 in "").
+            var limit = new ParticipantLimit(1, long.MaxValue);
+            Assert.That(limit.Admit("P1", ""), Is.Null);
+            Assert.That(limit.Admit("P1", "visual"), Does.Contain("more than 1 participant × condition pairs"));
+        }
+
+        [Test]
         public void PairsAreToldApartWhateverCharactersTheNamesHold()
         {
             // Any character may be in an id, the control characters included: "a\u0001b" in "c", "a" in "x" and "a" in

@@ -40,6 +40,18 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void NoParticipantNoQuestionnaireAndNoAnswerFindNoSheet()
+        {
+            var set = new ResponseSet(SampleQuestionnaires.Paper());
+            SampleQuestionnaires.Answer(set, "P1", QuestionnaireCatalog.ImmersionId, 3);
+            Assert.That(set.Find("P1", QuestionnaireCatalog.ImmersionId).AnswerAt(0), Is.EqualTo(3));
+            Assert.That(set.Find(null, QuestionnaireCatalog.ImmersionId), Is.Null, "no participant");
+            Assert.That(set.Find("P2", QuestionnaireCatalog.ImmersionId), Is.Null, "a participant who answered nothing");
+            Assert.That(set.Find("P1", "presence"), Is.Null, "a questionnaire the catalog does not have");
+            Assert.That(set.Find("P1", QuestionnaireCatalog.WeightDetectionId), Is.Null, "a questionnaire P1 did not answer");
+        }
+
+        [Test]
         public void AResponseReadsAsItsRowInTheFile()
         {
             Assert.That(new Response("P1", "immersion", 4, 3).ToString(), Is.EqualTo("P1,immersion,4,3"));

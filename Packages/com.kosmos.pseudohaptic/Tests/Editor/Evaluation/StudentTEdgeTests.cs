@@ -46,6 +46,15 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(StudentT.Quantile(1e-12, 1000), Is.EqualTo(-7.1242289253144091385).Within(1e-11));
         }
 
+        // The CDF's side of the same edge: ν = 1000 is still the beta form's; the expansion, inverted, would be 1.3e-9
+        // (at 1e-12) and 5.9e-8 (at t = −10) off the tail (mpmath 1.3.0, betainc and findroot, 40 digits).
+        [TestCase(-7.1242289253144091385, 9.9999999999999717827e-13)]
+        [TestCase(-10.0, 8.3353514793000331542e-23)]
+        public void CdfAtOneThousandDegreesOfFreedomIsExactFarIntoTheTail(double t, double expected)
+        {
+            Assert.That(StudentT.Cdf(t, 1000), Is.EqualTo(expected).Within(1e-9).Percent);
+        }
+
         // As ν grows the incomplete beta function cancels (1 − ν/(ν + t²), ln Γ(ν/2 + ½) − ln Γ(ν/2)): before the fix
         // P(T ≤ 1) was 3.7e-8 off at ν = 1e8 and read ½ at ν = 1e16 (found through Stryker mutant 4185). Past ν = 1000
         // the CDF now inverts the quantile's Cornish–Fisher expansion.
