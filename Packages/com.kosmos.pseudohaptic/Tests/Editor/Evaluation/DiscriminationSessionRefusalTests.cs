@@ -94,6 +94,19 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(s.Plan[0].Condition, Is.EqualTo(""));
         }
 
+        [Test]
+        public void NoPlanNoStaircaseMakerAndAMakerThatMakesNoneAreRefused()
+        {
+            Assert.That(() => new DiscriminationSession("P1", "on", TrialsPath, (ConstantStimuliPlan)null),
+                Throws.ArgumentNullException.With.Property("ParamName").EqualTo("planSettings"));
+            Assert.That(() => new DiscriminationSession("P1", "on", TrialsPath, (Func<string, string, Staircase>)null),
+                Throws.ArgumentNullException.With.Property("ParamName").EqualTo("makeStaircase"));
+            var e = Assert.Throws<ArgumentException>(() => new DiscriminationSession("P1", "on", TrialsPath, (p, c) => null));
+            Assert.That(e.ParamName, Is.EqualTo("makeStaircase"));
+            Assert.That(e.Message, Does.StartWith("no staircase made"));
+            Assert.That(File.Exists(TrialsPath), Is.False);
+        }
+
         [TestCase("0")]
         [TestCase("8")]
         [TestCase("x")]

@@ -115,6 +115,73 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 (p, c) => new Staircase(p, c, 0.5, 0.65, 0.08, 2, 8, 6, 5, halvingReversals: 2)));
         }
 
+        [Test]
+        public void AFinishedSessionShowsNoTrialAndSaysSoWhenAskedForAMass()
+        {
+            var s = new DiscriminationSession("P1", "on", Path1, Plan());
+            var observer = new SimulatedObserver(0.52, 0.05, 1);
+            while (!s.IsFinished) AnswerLikeTheObserver(s, observer);
+            Assert.That(s.Current, Is.Null);
+            Assert.That(s.ProgressText, Is.EqualTo("7 / 7"));
+            Assert.That(() => s.MassAt(PairSide.Left), Throws.InvalidOperationException.With.Message.EqualTo("the session is finished"));
+            Assert.That(() => s.Acknowledge(), Throws.InvalidOperationException.With.Message.EqualTo("no answer is waiting for its write"));
+            Assert.That(s.AnsweredCount, Is.EqualTo(7), "a stray acknowledgement counts nothing");
+        }
+
+        [Test]
+        public void AStaircaseSessionCountsTheTrialShownUntilItFinishes()
+        {
+            // 1-up-2-down from 0.7 kg, at most three trials: the count is the trials answered and the one shown.
+            var s = new DiscriminationSession("P1", "on", Path1, (p, c) => new Staircase(p, c, 0.5, 0.7, 0.08, 2, 8, 6, 5, maxTrials: 3));
+            Assert.That(s.TrialCount, Is.EqualTo(1));
+            Assert.That(s.ProgressText, Is.EqualTo("1 (reversals 0 / 8)"));
+            foreach (int heavier in new[] { 1, 1, 0 })
+            {
+                s.NoteLift(PairSide.Left);
+                s.NoteLift(PairSide.Right);
+                Assert.That(s.Answer((heavier == 1) == s.Current.ComparisonFirst ? PairSide.Left : PairSide.Right), Is.True);
+            }
+            // Two "heavier" lower the level, the "lighter" after them raises it: one reversal; then the trial limit.
+            Assert.That(s.IsFinished, Is.True);
+            Assert.That(s.TrialCount, Is.EqualTo(3), "no trial shown after the last");
+            Assert.That(s.ProgressText, Is.EqualTo("3 (reversals 1 / 8)"));
+            Assert.That(s.Current, Is.Null);
+        }
+
+        [TestCase("")]
+        [TestCase(" \r\n\n")]
+        [TestCase("\uFEFF\n")]
+        public void AnEmptyOrBlankFileIsANewOne(string text)
+        {
+            File.WriteAllText(Path1, text, new System.Text.UTF8Encoding(true));
+            var s = new DiscriminationSession("P1", "on", Path1, Plan());
+            Assert.That(s.ResumedCount, Is.Zero);
+            Assert.That(s.CurrentIndex, Is.Zero);
+            AnswerLikeTheObserver(s, new SimulatedObserver(0.52, 0.05, 1));
+            Assert.That(File.ReadAllText(Path1), Is.EqualTo(TrialsCsv.Header + "\n" + TrialsCsv.FormatRow(s.Plan[0]) + "\n"), "the blank file replaced");
+        }
+
+        [Test]
+        public void AByteOrderMarkWrittenTwiceAndAnotherParticipantsRowWithALineBreakAreKept()
+        {
+            // An editor that adds a byte-order mark to a file that had one leaves U+FEFF as the first character read;
+            // another program's participant id may hold a quoted line break. Both are read as psychometric reads them.
+            var plan = Plan().Build("P1", "on");
+            string other = "\"P2\n(left hand)\",on,1,0.5,0.4,standard,0,1";
+            string mine = TrialsCsv.FormatRow(new Trial(1, "P1", "on", plan[0].Standard, plan[0].Comparison, plan[0].ComparisonFirst, plan[0].Catch) { Response = 0 });
+            File.WriteAllText(Path1, "\uFEFF" + TrialsCsv.Header + "\r\n" + other + "\r\n" + mine + "\r\n", new System.Text.UTF8Encoding(true));
+            Assert.That(TrialsCsv.Read(new StringReader(File.ReadAllText(Path1)), "trials.csv"), Has.Count.EqualTo(2));
+
+            var s = new DiscriminationSession("P1", "on", Path1, Plan());
+            Assert.That(s.ResumedCount, Is.EqualTo(1));
+            Assert.That(s.Plan[0].Response, Is.EqualTo(0), "the answer read as recorded");
+            Assert.That(s.CurrentIndex, Is.EqualTo(1));
+            Assert.That(s.FileText(), Is.EqualTo(TrialsCsv.Header + "\n" + other + "\n" + mine + "\n"));
+            AnswerLikeTheObserver(s, new SimulatedObserver(0.52, 0.05, 1));
+            var answers = TrialsCsv.Read(new StringReader(File.ReadAllText(Path1)), "trials.csv");
+            Assert.That(answers.Select(a => a.Participant), Is.EqualTo(new[] { "P2\n(left hand)", "P1", "P1" }));
+        }
+
         static void AnswerLikeTheObserver(DiscriminationSession s, SimulatedObserver observer)
         {
             s.NoteLift(PairSide.Left);

@@ -108,6 +108,11 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(model.DisplayText(), Is.EqualTo("Trial 1 / 7\n" + DiscriminationTaskModel.LiftText + " (right: done)"));
             Assert.That(model.NoteLift(true, false), Is.True);
             Assert.That(model.DisplayText(), Is.EqualTo("Trial 1 / 7\n" + DiscriminationTaskModel.AnswerText));
+
+            var leftFirst = new DiscriminationTaskModel();
+            leftFirst.Begin(true, Settings(), "P2", "", TrialsFile);
+            Assert.That(leftFirst.NoteLift(true, false), Is.True);
+            Assert.That(leftFirst.DisplayText(), Is.EqualTo("Trial 1 / 7\n" + DiscriminationTaskModel.LiftText + " (left: done)"));
         }
 
         [Test]
@@ -172,6 +177,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             model.Saved += () => saved++;
             Assert.That(model.Answer(PairSide.Left, false), Is.False);
             Assert.That(model.Error, Does.StartWith(DiscriminationTaskModel.NotSavedPrefix));
+            Assert.That(model.Error, Does.EndWith(" (the answer is kept and saved as soon as it can be)"));
             Assert.That(failed, Is.EqualTo(model.Error));
             Assert.That(model.DisplayText(), Is.EqualTo(model.Error));
             Assert.That(model.Session.AnsweredCount, Is.Zero, "not acknowledged");
@@ -194,6 +200,40 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(model.Update(), Is.False);
             Assert.That(model.Saver.Writes, Is.EqualTo(1), "a saved answer is not written again");
             Assert.That(model.Saver.Failures, Is.EqualTo(1));
+        }
+
+        [Test]
+        public void InAQueueSharedWithAnotherFileAFailedWriteOfThatFileHoldsTheAnswerButNotTheBegin()
+        {
+            // One writer for a study's files (SaveQueue): the questionnaire's file fails to write first. Order holds, so
+            // the task's answer waits behind it, shown as being saved; a Begin is held only by the task's own answer.
+            double now = 0;
+            bool diskFull = true, otherSaved = false;
+            var saver = new SaveQueue(background: false, retrySeconds: 2, clock: () => now);
+            saver.Enqueue(() => { if (diskFull) throw new IOException("the questionnaire's file: disk full"); }, () => otherSaved = true, e => { });
+            saver.Pump();
+            Assert.That(saver.LastError, Is.Not.Null);
+            var model = new DiscriminationTaskModel(saver: saver);
+            Assert.That(model.Begin(true, Settings(), "P1", "", TrialsFile), Is.True, "another file's unsaved write does not hold the task");
+            model.NoteLift(true, false);
+            model.NoteLift(false, true);
+            Assert.That(model.Answer(PairSide.Left, false), Is.True, "taken, and queued");
+            Assert.That(model.IsSaving, Is.True);
+            Assert.That(model.DisplayText(), Is.EqualTo("Trial 1 / 7\n" + DiscriminationTaskModel.SavingText));
+            Assert.That(File.Exists(TrialsFile), Is.False, "nothing is written after a failed write");
+
+            Assert.That(model.Begin(true, Settings(), "P2", "", TrialsFile), Is.False, "the answer is not saved yet");
+            Assert.That(model.Error, Is.EqualTo("the last answer is not saved yet: " + saver.LastError));
+            Assert.That(model.Session.Participant, Is.EqualTo("P1"));
+
+            diskFull = false;
+            now = 2;
+            Assert.That(model.Update(), Is.True);
+            Assert.That(otherSaved, Is.True);
+            Assert.That(model.Session.AnsweredCount, Is.EqualTo(1));
+            Assert.That(model.Error, Is.Null);
+            Assert.That(model.Begin(true, Settings(), "P2", "", TrialsFile), Is.True);
+            Assert.That(model.Session.Participant, Is.EqualTo("P2"));
         }
 
         [Test]
