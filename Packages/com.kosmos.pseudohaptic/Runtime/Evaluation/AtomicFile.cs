@@ -288,16 +288,35 @@ namespace Kosmos.PseudoHaptic.Evaluation
         static int OpenCloseOnExec => IsDarwin ? 0 : 0x80000;
         const int EINTR = 4, EINVAL = 22, EOPNOTSUPP_Linux = 95, ENOTSUP_Darwin = 45;
 
-        static bool IsUnix
+        /// <summary>The platforms whose syncs differ (<see cref="SyncStream"/>, <see cref="SyncDirectory"/>).</summary>
+        internal enum SyncPlatform
         {
-            get
-            {
-                var platform = Environment.OSVersion.Platform;
-                return platform == PlatformID.Unix || platform == PlatformID.MacOSX;
-            }
+            /// <summary>Linux and Android: libc's fsync, checked; folders synced.</summary>
+            Linux,
+            /// <summary>macOS: .NET's F_FULLFSYNC for files; folders through libc, opened without O_CLOEXEC; ENOTSUP a refusal.</summary>
+            MacOS,
+            /// <summary>Windows: .NET's FlushFileBuffers for files; folders not synced.</summary>
+            Windows,
         }
 
-        static bool IsDarwin => RuntimeInformation.IsOSPlatform(OSPlatform.OSX);
+        /// <summary>
+        /// The platform whose syncs are made instead of the running one: null but in the edit-mode tests, which set one on
+        /// Linux to run that platform's branch (AtomicFilePlatformTests); the kernel then answers as Linux's.
+        /// </summary>
+        internal static SyncPlatform? PlatformForTests { get; set; }
+
+        /// <summary>The platform whose syncs are made.</summary>
+        internal static SyncPlatform Platform => PlatformForTests ?? RunningPlatform();
+
+        static SyncPlatform RunningPlatform()
+        {
+            if (RuntimeInformation.IsOSPlatform(OSPlatform.OSX)) return SyncPlatform.MacOS;
+            var platform = Environment.OSVersion.Platform;
+            return platform == PlatformID.Unix || platform == PlatformID.MacOSX ? SyncPlatform.Linux : SyncPlatform.Windows;
+        }
+
+        static bool IsUnix => Platform != SyncPlatform.Windows;
+        static bool IsDarwin => Platform == SyncPlatform.MacOS;
 
         /// <summary>libc's open/fsync/close: plain DllImport (no marshalling beyond a string), which IL2CPP and Mono support.</summary>
         static class Libc
