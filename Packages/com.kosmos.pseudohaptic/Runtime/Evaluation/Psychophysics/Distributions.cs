@@ -140,12 +140,16 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
     }
 
-    /// <summary>The chi-square distribution's upper tail, P(X &gt; x) = Q(ν/2, x/2).</summary>
+    /// <summary>
+    /// The chi-square distribution's upper tail, P(X &gt; x) = Q(ν/2, x/2), for 0 &lt; ν ≤ 10⁶ (Friedman's test asks ν = k − 1):
+    /// ln Γ(ν/2) cancels as ν grows (5e-10 of the tail at ν = 10⁶, DistributionsContractTests) and from ν ≈ 3·10⁸ the series
+    /// needs more than its 100,000 terms.
+    /// </summary>
     public static class ChiSquare
     {
         public static double UpperTail(double x, double degreesOfFreedom)
         {
-            if (!(degreesOfFreedom > 0)) throw new ArgumentOutOfRangeException(nameof(degreesOfFreedom), degreesOfFreedom, "degrees of freedom must be positive");
+            if (!(degreesOfFreedom > 0 && degreesOfFreedom <= 1e6)) throw new ArgumentOutOfRangeException(nameof(degreesOfFreedom), degreesOfFreedom, "degrees of freedom must be positive and at most a million");
             if (double.IsNaN(x)) return double.NaN;
             if (x <= 0) return 1;
             return Gamma.RegularizedQ(0.5 * degreesOfFreedom, 0.5 * x);

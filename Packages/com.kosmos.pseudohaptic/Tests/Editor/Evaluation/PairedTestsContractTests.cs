@@ -130,6 +130,37 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void OneParticipantHasAMeanDifferenceAndNothingElse()
+        {
+            var c = PairedComparison.Compute(new[] { 2.0 }, new[] { 3.5 });
+            Assert.That(c.N, Is.EqualTo(1));
+            Assert.That(c.MeanDifference, Is.EqualTo(1.5));
+            Assert.That(double.IsNaN(c.T) && double.IsNaN(c.DifferenceLow) && double.IsNaN(c.Dz), Is.True, "the t test needs two differences");
+        }
+
+        [Test]
+        public void DifferencesThatAreAllZeroHaveNoRanksAndNoTies()
+        {
+            var c = PairedComparison.Compute(new[] { 1.0, 2.0, 3.0 }, new[] { 1.0, 2.0, 3.0 });
+            Assert.That(c.NonZero, Is.Zero);
+            Assert.That(c.HasTies, Is.False);
+            Assert.That(c.WilcoxonExact, Is.False);
+            Assert.That(double.IsNaN(c.W) && double.IsNaN(c.WP), Is.True);
+        }
+
+        [Test]
+        public void TheIntervalsWidthDoesNotChangeWhenEveryDifferenceIsShiftedFarFromZero()
+        {
+            // The spread of the differences is the same; only the mean moves (its rounding at 10⁸ costs 3e-10 of the width).
+            // A variance summed as Σv² − n·mean², the same number in exact arithmetic, loses every digit there.
+            var a = new[] { 0.0, 0.0, 0.0 };
+            var near = PairedComparison.Compute(a, new[] { 1.0, 2.0, 4.0 });
+            var far = PairedComparison.Compute(a, new[] { 1e8 + 1, 1e8 + 2, 1e8 + 4 }); // a mean of 100000002.33…, not a double
+            Assert.That(far.DifferenceHigh - far.DifferenceLow, Is.EqualTo(near.DifferenceHigh - near.DifferenceLow).Within(1e-6).Percent);
+            Assert.That(far.MeanDifference - 1e8, Is.EqualTo(near.MeanDifference).Within(1e-8), "to the double nearest 100000002.33…");
+        }
+
+        [Test]
         public void BadInputIsRefusedNamingIt()
         {
             Assert.That(Assert.Throws<ArgumentNullException>(() => PairedComparison.Compute(null, new[] { 1.0 })).ParamName, Is.EqualTo("a"));
