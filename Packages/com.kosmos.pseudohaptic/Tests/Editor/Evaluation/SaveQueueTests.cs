@@ -52,15 +52,17 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             var queue = new SaveQueue(background: true);
             using (var gate = new ManualResetEventSlim(false))
+            using (var started = new ManualResetEventSlim(false))
             {
                 int writer = -1, acknowledger = -1;
-                queue.Enqueue(() => { writer = Thread.CurrentThread.ManagedThreadId; gate.Wait(10000); },
+                queue.Enqueue(() => { writer = Thread.CurrentThread.ManagedThreadId; started.Set(); gate.Wait(10000); },
                     () => acknowledger = Thread.CurrentThread.ManagedThreadId, e => Assert.Fail(e));
                 var watch = System.Diagnostics.Stopwatch.StartNew();
                 for (int frame = 0; frame < 20; frame++) Assert.That(queue.Pump(), Is.Zero, "not acknowledged while the write is under way");
                 Assert.That(watch.ElapsedMilliseconds, Is.LessThan(1000), "a pump waited for the write");
                 Assert.That(acknowledger, Is.EqualTo(-1));
-                Assert.That(queue.Pending, Is.EqualTo(1));
+                Assert.That(started.Wait(10000), Is.True, "the write began");
+                Assert.That(queue.Pending, Is.EqualTo(1), "the write under way, taken off the queue");
                 gate.Set();
                 Assert.That(queue.Drain(10000), Is.True);
                 Assert.That(writer, Is.Not.EqualTo(Thread.CurrentThread.ManagedThreadId), "written on the main thread");
