@@ -14,33 +14,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     /// opened without O_CLOEXEC and its ENOTSUP taken as a refusal. The kernel answering is Linux's, so what is checked is
     /// which calls each branch makes, not the other platform's file system (Linux with strace; ignored elsewhere).
     /// </summary>
-    public class AtomicFilePlatformTests
+    public class AtomicFilePlatformTests : AtomicFileTracing
     {
-        const string Syscalls = "fsync,fdatasync,rename,renameat,renameat2,mkdir,mkdirat";
-        string _dir;
-
-        [SetUp]
-        public void SetUp()
-        {
-            _dir = Path.Combine(Path.GetTempPath(), "ph-platform-" + Guid.NewGuid().ToString("N").Substring(0, 8));
-            Directory.CreateDirectory(_dir);
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            AtomicFile.PlatformForTests = null;
-            if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
-        }
-
-        List<string> Traced(Action act, string inject = null) => SelfTrace.CallsUnder(act, _dir, Syscalls, _dir, inject);
-
-        static string TemporaryOf(List<string> calls)
-        {
-            string rename = calls.First(c => c.StartsWith("rename ", StringComparison.Ordinal));
-            return rename.Substring(7, rename.IndexOf(" -> ", StringComparison.Ordinal) - 7);
-        }
-
         [Test]
         public void TheTestsRunOnLinux()
         {
@@ -58,7 +33,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             {
                 AtomicFile.WriteAllText(target, "x");
                 AtomicFile.CreateDirectory(nested);
-            });
+            }, _dir);
             string temp = TemporaryOf(calls);
             Assert.That(calls, Is.EqualTo(new[] { "fsync " + temp, "rename " + temp + " -> " + target, "mkdir " + Path.Combine(_dir, "a"), "mkdir " + nested }));
             Assert.That(AtomicFile.DirectorySync, Is.EqualTo(AtomicFile.DirectorySyncKind.Unsupported));
@@ -93,7 +68,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             // AFileSyncThatFailsIsAnErrorNamingTheFileAndNothingIsLeft). On Windows and macOS .NET reports its own failures.
             AtomicFile.PlatformForTests = (AtomicFile.SyncPlatform)Enum.Parse(typeof(AtomicFile.SyncPlatform), platform);
             string target = Path.Combine(_dir, "trials.csv");
-            var calls = Traced(() => AtomicFile.WriteAllText(target, "x"), "fsync:error=EIO:when=1");
+            var calls = Traced(() => AtomicFile.WriteAllText(target, "x"), _dir, "fsync:error=EIO:when=1");
             Assert.That(calls[0], Does.EndWith(" = -1"), string.Join("\n", calls));
             Assert.That(calls.Count(c => c.StartsWith("fsync " + TemporaryOf(calls), StringComparison.Ordinal)), Is.EqualTo(1), "synced once, not again by libc");
             Assert.That(File.ReadAllText(target), Is.EqualTo("x"));
@@ -106,10 +81,10 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             // (AtomicFileSyscallTests.AFolderSyncThatFailsIsAnErrorNamingTheFolder). The folder's fsync is the second.
             AtomicFile.PlatformForTests = AtomicFile.SyncPlatform.MacOS;
             string target = Path.Combine(_dir, "trials.csv");
-            Traced(() => AtomicFile.WriteAllText(target, "x"), "fsync:error=45:when=2");
+            Traced(() => AtomicFile.WriteAllText(target, "x"), _dir, "fsync:error=45:when=2");
             Assert.That(AtomicFile.DirectorySync, Is.EqualTo(AtomicFile.DirectorySyncKind.Refused));
             IOException error = null;
-            Traced(() => error = Assert.Throws<IOException>(() => AtomicFile.WriteAllText(target, "y")), "fsync:error=EIO:when=2");
+            Traced(() => error = Assert.Throws<IOException>(() => AtomicFile.WriteAllText(target, "y")), _dir, "fsync:error=EIO:when=2");
             Assert.That(error.Message, Is.EqualTo(_dir + ": the folder could not be synced to the device (errno 5)"));
         }
     }

@@ -14,36 +14,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     /// its documented contract says. The command-line tool's DurabilityTests check the same order for a whole study session
     /// in a child process; these check the writer itself, in the process that runs it (Linux with strace; ignored elsewhere).
     /// </summary>
-    public class AtomicFileSyscallTests
+    public class AtomicFileSyscallTests : AtomicFileTracing
     {
-        const string Syscalls = "fsync,fdatasync,rename,renameat,renameat2,mkdir,mkdirat";
-        string _dir;
-
-        [SetUp]
-        public void SetUp()
-        {
-            _dir = Path.Combine(Path.GetTempPath(), "ph-syscalls-" + Guid.NewGuid().ToString("N").Substring(0, 8));
-            Directory.CreateDirectory(_dir);
-        }
-
-        [TearDown]
-        public void TearDown()
-        {
-            AtomicFile.Durable = true;
-            if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
-        }
-
-        List<string> Traced(Action act, string under, string inject = null) => SelfTrace.CallsUnder(act, _dir, Syscalls, under, inject);
-
-        /// <summary>The temporary file a traced write renamed from (the first rename's source).</summary>
-        static string TemporaryOf(List<string> calls)
-        {
-            string rename = calls.First(c => c.StartsWith("rename ", StringComparison.Ordinal));
-            string temp = rename.Substring(7, rename.IndexOf(" -> ", StringComparison.Ordinal) - 7);
-            Assert.That(AtomicFile.IsTemporaryName(Path.GetFileName(temp)), Is.True, temp);
-            return temp;
-        }
-
         [Test]
         public void AWriteSyncsTheFileThenRenamesItThenSyncsTheFolder([Values(false, true)] bool replacing)
         {
