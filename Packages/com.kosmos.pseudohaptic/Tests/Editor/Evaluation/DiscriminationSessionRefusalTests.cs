@@ -27,7 +27,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
 
         static ConstantStimuliPlan Plan() => new ConstantStimuliPlan { Standard = 0.5, Levels = new[] { 0.4, 0.5, 0.6 }, Repetitions = 2, CatchLevels = new[] { 1.0 }, CatchRepetitions = 1, Seed = 3 };
 
-        static string Row(Trial t, int response)
+        /// <summary>The trials file's row of <paramref name="t"/> answered <paramref name="response"/>, the trial itself left unanswered.</summary>
+        internal static string Row(Trial t, int response)
         {
             var copy = new Trial(t.Index, t.Participant, t.Condition, t.Standard, t.Comparison, t.ComparisonFirst, t.Catch) { Response = response };
             return TrialsCsv.FormatRow(copy);

@@ -135,12 +135,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             var s = new DiscriminationSession("P1", "on", Path1, (p, c) => new Staircase(p, c, 0.5, 0.7, 0.08, 2, 8, 6, 5, maxTrials: 3));
             Assert.That(s.TrialCount, Is.EqualTo(1));
             Assert.That(s.ProgressText, Is.EqualTo("1 (reversals 0 / 8)"));
-            foreach (int heavier in new[] { 1, 1, 0 })
-            {
-                s.NoteLift(PairSide.Left);
-                s.NoteLift(PairSide.Right);
-                Assert.That(s.Answer((heavier == 1) == s.Current.ComparisonFirst ? PairSide.Left : PairSide.Right), Is.True);
-            }
+            foreach (int heavier in new[] { 1, 1, 0 }) LiftBothAndAnswer(s, heavier);
             // Two "heavier" lower the level, the "lighter" after them raises it: one reversal; then the trial limit.
             Assert.That(s.IsFinished, Is.True);
             Assert.That(s.TrialCount, Is.EqualTo(3), "no trial shown after the last");
@@ -168,7 +163,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             // another program's participant id may hold a quoted line break. Both are read as psychometric reads them.
             var plan = Plan().Build("P1", "on");
             string other = "\"P2\n(left hand)\",on,1,0.5,0.4,standard,0,1";
-            string mine = TrialsCsv.FormatRow(new Trial(1, "P1", "on", plan[0].Standard, plan[0].Comparison, plan[0].ComparisonFirst, plan[0].Catch) { Response = 0 });
+            string mine = DiscriminationSessionRefusalTests.Row(plan[0], 0);
             File.WriteAllText(Path1, "\uFEFF" + TrialsCsv.Header + "\r\n" + other + "\r\n" + mine + "\r\n", new System.Text.UTF8Encoding(true));
             Assert.That(TrialsCsv.Read(new StringReader(File.ReadAllText(Path1)), "trials.csv"), Has.Count.EqualTo(2));
 
@@ -183,12 +178,14 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         static void AnswerLikeTheObserver(DiscriminationSession s, SimulatedObserver observer)
+            => LiftBothAndAnswer(s, observer.Answer(s.Current.Comparison));
+
+        /// <summary>Lifts both objects and answers 1 ("the comparison was heavier") or 0, on whichever side it stands.</summary>
+        static void LiftBothAndAnswer(DiscriminationSession s, int heavier)
         {
             s.NoteLift(PairSide.Left);
             s.NoteLift(PairSide.Right);
-            int heavier = observer.Answer(s.Current.Comparison);
-            bool comparisonLeft = s.Current.ComparisonFirst;
-            Assert.That(s.Answer((heavier == 1) == comparisonLeft ? PairSide.Left : PairSide.Right), Is.True);
+            Assert.That(s.Answer((heavier == 1) == s.Current.ComparisonFirst ? PairSide.Left : PairSide.Right), Is.True);
         }
     }
 }
