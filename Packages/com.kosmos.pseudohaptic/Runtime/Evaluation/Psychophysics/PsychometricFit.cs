@@ -53,9 +53,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// The fit is on the probit scale, η = a + b·z with z the levels standardized, by Newton's method with
     /// Levenberg damping and step halving (the log-likelihood is concave in (a, b) when γ = λ = 0, so the
     /// maximum found is the unique one); μ = mean − sd·a/b, σ = sd/b. Data that have no finite maximum (no
-    /// trials, a single level, all answers alike, levels perfectly separated by the answer) or a decreasing
-    /// fit are <see cref="Estimable"/> = false with a <see cref="Reason"/>; their numbers are NaN and are
-    /// never written.
+    /// trials, a single level, all answers alike, levels perfectly separated by the answer, or with lapses a
+    /// step between levels as likely as any σ) or a decreasing fit are <see cref="Estimable"/> = false with a
+    /// <see cref="Reason"/>; their numbers are NaN and are never written.
     /// </summary>
     public sealed class PsychometricFit
     {
@@ -141,7 +141,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             if (startMu.HasValue && startSigma.HasValue && startSigma.Value > 0 && IsFinite(startMu.Value))
                 starts.Add(new[] { -(startMu.Value - mean) / startSigma.Value, sd / startSigma.Value });
             starts.Add(new[] { 0.0, 1.0 });
-            double a = 0, b = 1, best = double.NegativeInfinity;
+            double a = 0, b = 1, best = double.NegativeInfinity, failed = double.NegativeInfinity;
             bool converged = false;
             int iterations = 0;
             for (int s = 0; s < starts.Count; s++)
@@ -161,20 +161,30 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     }
                 }
                 else ok = Maximize(z, n, k, lapse, ref sa, ref sb, out it);
-                if (!ok) continue;
+                if (!ok) { failed = Math.Max(failed, LogLik(z, n, k, lapse, sa, sb)); continue; }
                 double ll = LogLik(z, n, k, lapse, sa, sb);
                 if (!converged || ll > best) { a = sa; b = sb; best = ll; iterations = it; converged = true; }
                 if (lapse == 0) break; // concave: the first maximum is the maximum
             }
-            if (!converged) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
+            if (!converged)
+            {
+                // With lapses an ascent fails mostly by climbing towards a step (b past 1e8): say so when one is as likely.
+                bool step = lapse > 0 && BestStepLogLik(merged, lapse) >= failed - StepTolerance;
+                return new PsychometricFit(merged, lapse, trials, step ? StepReason : "the fit did not converge");
+            }
             // b is in units of the standardized levels, so 1e-9 means a σ a billion times their spread.
             if (Math.Abs(b) < 1e-9) return new PsychometricFit(merged, lapse, trials, "flat: the answers do not change with the comparison (σ infinite)");
             if (!(b > 0)) return new PsychometricFit(merged, lapse, trials, "decreasing: the comparison was judged heavier less often as it grew");
             double mu = mean - sd * a / b;
             double sigma = sd / b;
             if (!IsFinite(mu) || !IsFinite(sigma)) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
-
             double logLik = LogLik(z, n, k, lapse, a, b);
+            // With lapses the likelihood can be highest as σ → 0: a step between two levels (Ψ = γ below it, 1 − γ above)
+            // explains the answers as well as the ascent's point, which stopped where the gradient vanished, at a σ that
+            // says nothing. Without lapses such answers are separated, found above.
+            if (lapse > 0 && BestStepLogLik(merged, lapse) >= logLik - StepTolerance)
+                return new PsychometricFit(merged, lapse, trials, StepReason);
+
             double deviance = 0;
             for (int i = 0; i < m; i++)
             {
@@ -190,6 +200,44 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
+
+        /// <summary>A log-likelihood ratio below which a step is as likely as the fit (1.000001 : 1: no evidence of a σ).</summary>
+        const double StepTolerance = 1e-6;
+
+        const string StepReason = "a step: with this lapse a step between levels explains the answers as well as any σ (σ → 0)";
+
+        /// <summary>
+        /// The supremum of the log-likelihood as σ → 0: the likeliest step of height 1 − 2γ, γ at the levels below it and
+        /// 1 − γ above, over every place between <paramref name="levels"/> (ascending, distinct) and on each of them, where
+        /// Ψ can be anything from γ to 1 − γ (μ and σ shrinking together hold η there): its best, k/n within those bounds.
+        /// </summary>
+        internal static double BestStepLogLik(StimulusLevel[] levels, double lapse)
+        {
+            double low = Math.Log(lapse), high = Math.Log(1 - lapse);
+            double best = double.NegativeInfinity;
+            // Place j: between level j − 1 and level j (j = 0 … m), or on level j (j = 0 … m − 1).
+            for (int j = 0; j <= levels.Length; j++)
+            {
+                for (int on = 0; on < 2; on++)
+                {
+                    if (on == 1 && j == levels.Length) break;
+                    double ll = 0;
+                    for (int i = 0; i < levels.Length; i++)
+                    {
+                        int yes = levels[i].Heavier, no = levels[i].Trials - levels[i].Heavier;
+                        if (i < j) ll += yes * low + no * high;
+                        else if (i > j || on == 0) ll += yes * high + no * low;
+                        else if (yes + no > 0)
+                        {
+                            double p = Math.Min(Math.Max((double)yes / (yes + no), lapse), 1 - lapse);
+                            ll += (yes > 0 ? yes * Math.Log(p) : 0) + (no > 0 ? no * Math.Log(1 - p) : 0);
+                        }
+                    }
+                    if (ll > best) best = ll;
+                }
+            }
+            return best;
+        }
 
         static StimulusLevel[] Merge(IReadOnlyList<StimulusLevel> levels)
         {
@@ -248,8 +296,9 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return double.IsNaN(ll) ? double.NegativeInfinity : ll;
         }
 
-        /// <summary>Newton–Levenberg ascent of the log-likelihood in (a, b); true when it converged.</summary>
-        static bool Maximize(double[] z, int[] n, int[] k, double lapse, ref double a, ref double b, out int iterations)
+        /// <summary>Newton–Levenberg ascent of the log-likelihood in (a, b); true when it converged. Internal for the
+        /// tests, which start it far from the maximum where the likelihood with lapses is not concave.</summary>
+        internal static bool Maximize(double[] z, int[] n, int[] k, double lapse, ref double a, ref double b, out int iterations)
         {
             double ll = LogLik(z, n, k, lapse, a, b);
             if (double.IsNegativeInfinity(ll)) { a = 0; b = 1; ll = LogLik(z, n, k, lapse, a, b); }

@@ -1,0 +1,261 @@
+using System;
+using System.Collections.Generic;
+using System.Linq;
+using Kosmos.PseudoHaptic.Evaluation;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.Evaluation
+{
+    /// <summary>
+    /// The psychometric fit against maxima found independently in 50-digit arithmetic (Tools/check-psychometric-fit.py,
+    /// mpmath: a grid for the global maximum, Newton on the exact gradient to polish it), what it refuses and when it
+    /// says a maximum is not there, and the start a bootstrap gives it.
+    /// </summary>
+    public class PsychometricFitMaximumTests
+    {
+        static readonly double[] Levels = { 0.80, 0.85, 0.90, 0.95, 1.00, 1.05, 1.10, 1.15, 1.20 };
+
+        static StimulusLevel[] Data(int trials, params int[] heavier)
+            => Levels.Select((x, i) => new StimulusLevel(x, trials, heavier[i])).ToArray();
+
+        static StimulusLevel[] Graded => Data(10, 0, 1, 1, 3, 5, 6, 8, 10, 9);
+
+        static StimulusLevel[] Lapsing => Data(10, 3, 2, 1, 3, 6, 6, 8, 9, 7);
+
+        // Tools/check-psychometric-fit.py's output: lapse, μ, σ, log-likelihood, deviance; and the relative error allowed
+        // in μ and σ (1e-10, ten digits, but where the log-likelihood's rounding ends the ascent first, below).
+        static IEnumerable<TestCaseData> Maxima()
+        {
+            yield return new TestCaseData(Graded, 0.0, 1.010958649732023, 0.10498140472835802, -36.410271655473304, 3.7670534442140512, 1e-10)
+                .SetName("graded");
+            yield return new TestCaseData(Graded, 0.04, 1.0088627803206924, 0.084641696319211463, -36.397026263695287, 3.7405626606580187, 1e-10)
+                .SetName("graded, lapse 0.04");
+            yield return new TestCaseData(Lapsing, 0.2, 0.99964416951844726, 0.052460276059148951, -50.137869289912493, 3.6839978989756752, 1e-10)
+                .SetName("lapsing, lapse 0.2");
+            // The same proportions a thousand times over: the same maximum, with a curvature a thousand times as steep.
+            yield return new TestCaseData(Data(10000, 0, 1000, 1000, 3000, 5000, 6000, 8000, 10000, 9000), 0.0, 1.010958649732023, 0.10498140472835802, -36410.271655473304, 3767.0534442140512, 1e-10)
+                .SetName("graded, a thousand times");
+            // A participant who lapsed at the heaviest comparison (1 of 10 heavier): from the lapse-free maximum the ascent
+            // stops at a lesser one (μ 0.98, σ 0.16, −55.3); the fit takes its other start's.
+            yield return new TestCaseData(Data(10, 0, 0, 2, 7, 10, 7, 10, 8, 1), 0.1, 0.93124438337145558, 0.025306710569636963, -49.29656430922673, 47.640800126901241, 1e-10)
+                .SetName("an outlier, lapse 0.1");
+            // A simulated observer's 700 trials (SimulatedObserver(1.02, 0.09, seed 81), 100 repetitions of the plan's
+            // seven levels). The ascent stops where a step's gain (about 1e-14) is below the rounding of a log-likelihood
+            // of −164, with a gradient of 1.7e-6 left: σ is 2e-8 off, which a fixed gradient tolerance of 1e-6 would
+            // call "did not converge" (issue 31).
+            yield return new TestCaseData(new[] { new StimulusLevel(0.7, 100, 0), new StimulusLevel(0.8, 100, 1), new StimulusLevel(0.9, 100, 11),
+                    new StimulusLevel(1.0, 100, 43), new StimulusLevel(1.1, 100, 83), new StimulusLevel(1.2, 100, 98), new StimulusLevel(1.3, 100, 100) },
+                    0.0, 1.0137711191724664, 0.090764406617930104, -164.11923942490013, 0.28705661884630924, 1e-7)
+                .SetName("seven levels of a hundred");
+        }
+
+        [TestCaseSource(nameof(Maxima))]
+        public void TheFitIsTheMaximum(StimulusLevel[] data, double lapse, double mu, double sigma, double logLik, double deviance, double relative)
+        {
+            var fit = PsychometricFit.Fit(data, lapse);
+            Assert.That(fit.Estimable, Is.True, fit.Reason);
+            Assert.That(fit.Reason, Is.EqualTo("yes"));
+            Assert.That(fit.Mu, Is.EqualTo(mu).Within(relative * mu), "μ");
+            Assert.That(fit.Sigma, Is.EqualTo(sigma).Within(relative * sigma), "σ");
+            Assert.That(fit.LogLikelihood, Is.EqualTo(logLik).Within(1e-12 * -logLik), "log-likelihood");
+            Assert.That(fit.Deviance, Is.EqualTo(deviance).Within(Math.Max(1e-10, relative) * deviance), "deviance");
+            Assert.That(fit.Trials, Is.EqualTo(data.Sum(l => l.Trials)));
+            Assert.That(fit.Lapse, Is.EqualTo(lapse));
+        }
+
+        [Test]
+        public void PsiRunsFromTheLapseThroughAHalfAtThePseToOneMinusTheLapse()
+        {
+            var fit = PsychometricFit.Fit(Lapsing, 0.2);
+            Assert.That(fit.Psi(fit.Mu), Is.EqualTo(0.5).Within(1e-15));
+            Assert.That(fit.Psi(fit.Mu + fit.Sigma), Is.EqualTo(0.2 + 0.6 * 0.8413447460685429).Within(1e-15));
+            Assert.That(fit.Psi(-1e6), Is.EqualTo(0.2).Within(1e-15));
+            Assert.That(fit.Psi(1e6), Is.EqualTo(0.8).Within(1e-15));
+        }
+
+        [Test]
+        public void MissingLevelsAndLapsesOutsideZeroToAHalfAreRefused()
+        {
+            Assert.That(() => PsychometricFit.Fit((IReadOnlyList<StimulusLevel>)null), Throws.ArgumentNullException.With.Property("ParamName").EqualTo("levels"));
+            foreach (double lapse in new[] { -0.01, 0.5, double.NaN })
+            {
+                var e = Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricFit.Fit(Graded, lapse));
+                Assert.That(e.ParamName, Is.EqualTo("lapse"));
+                Assert.That(e.Message, Does.StartWith("lapse must be in [0, 0.5)"));
+            }
+        }
+
+        [Test]
+        public void ALevelWithoutTrialsIsNoLevel()
+        {
+            var fit = PsychometricFit.Fit(new[] { new StimulusLevel(0.9, 0, 0), new StimulusLevel(1.0, 4, 2) });
+            Assert.That(fit.Reason, Is.EqualTo("a single level"));
+            var withEmpty = PsychometricFit.Fit(Graded.Concat(new[] { new StimulusLevel(2.0, 0, 0) }).ToArray());
+            var plain = PsychometricFit.Fit(Graded);
+            Assert.That(withEmpty.Mu, Is.EqualTo(plain.Mu).Within(1e-12));
+            Assert.That(withEmpty.Sigma, Is.EqualTo(plain.Sigma).Within(1e-12));
+            Assert.That(withEmpty.Deviance, Is.EqualTo(plain.Deviance).Within(1e-12));
+        }
+
+        // Levels whose spread overflows (±1e300: its square is infinite) or underflows (1e-200 apart: its square is 0)
+        // cannot be standardized; the fit says so rather than dividing by 0 or infinity.
+        [TestCase(-1e300, 1e300)]
+        [TestCase(1e-200, 2e-200)]
+        public void LevelsWhoseSpreadDoublesCannotHoldAreOutOfRange(double low, double high)
+        {
+            var fit = PsychometricFit.Fit(new[] { new StimulusLevel(low, 2, 1), new StimulusLevel(high, 2, 1) });
+            Assert.That(fit.Estimable, Is.False);
+            Assert.That(fit.Reason, Is.EqualTo("levels out of range: their spread cannot be computed in double precision"));
+            Assert.That(double.IsNaN(fit.Mu) && double.IsNaN(fit.Sigma), Is.True);
+        }
+
+        // Answers near chance under a lapse of 0.49 (Ψ between 0.49 and 0.51), found among 200,000 random small data sets,
+        // and a step between two levels a billionth apart under a lapse of 0.2: the ascents climb towards the step until b
+        // passes 1e8 and give up. No maximum was found, and a step is as likely as where they stopped: a step, not "the
+        // fit did not converge".
+        [Test]
+        public void AnAscentThatGivesUpClimbingTowardsAStepIsAStep()
+        {
+            var nearChance = PsychometricFit.Fit(new[] { new StimulusLevel(0.5, 1, 1), new StimulusLevel(0.1, 3, 1), new StimulusLevel(0, 4, 2) }, 0.49);
+            var close = PsychometricFit.Fit(new[] { new StimulusLevel(0.0, 10, 2), new StimulusLevel(1.0, 10, 2), new StimulusLevel(1.000000001, 10, 8), new StimulusLevel(2.0, 10, 8) }, 0.2);
+            foreach (var fit in new[] { nearChance, close })
+            {
+                Assert.That(fit.Estimable, Is.False);
+                Assert.That(fit.Reason, Is.EqualTo("a step: with this lapse a step between levels explains the answers as well as any σ (σ → 0)"));
+                Assert.That(double.IsNaN(fit.Mu) && double.IsNaN(fit.Sigma) && double.IsNaN(fit.LogLikelihood), Is.True);
+            }
+        }
+
+        // A bootstrap refits each resample from the original fit's (μ, σ). Started at the maximum itself, Newton is
+        // there at once; from the standard start (the levels' mean, their spread) it needs several steps.
+        [TestCase(0.0)]
+        [TestCase(0.04)]
+        public void StartedAtItsMaximumTheFitStaysThereInAStep(double lapse)
+        {
+            var plain = PsychometricFit.Fit(Graded, lapse);
+            Assert.That(plain.Iterations, Is.GreaterThanOrEqualTo(3), "from the standard start");
+            var started = PsychometricFit.Fit(Graded, lapse, plain.Mu, plain.Sigma);
+            Assert.That(started.Mu, Is.EqualTo(plain.Mu).Within(1e-12));
+            Assert.That(started.Sigma, Is.EqualTo(plain.Sigma).Within(1e-12));
+            if (lapse == 0) Assert.That(started.Iterations, Is.LessThanOrEqualTo(2));
+        }
+
+        // A start without σ, with σ ≤ 0 or a μ that is not a number is no start, nor one where the likelihood is 0 (every
+        // level a hundred thousand σ below μ, and some of them answered heavier) or not a number (σ denormal): the fit is
+        // the plain one, step for step.
+        [TestCase(100.0, 0.001)]
+        [TestCase(2.0, 1e-310)] // a = −∞, b = +∞: η = −∞ + ∞ is not a number
+        [TestCase(1.0, null)]
+        [TestCase(null, 0.1)]
+        [TestCase(1.0, 0.0)]
+        [TestCase(1.0, -0.1)]
+        [TestCase(double.NaN, 0.1)]
+        [TestCase(double.PositiveInfinity, 0.1)]
+        public void AnIncompleteOrImpossibleStartIsIgnored(double? mu, double? sigma)
+        {
+            var plain = PsychometricFit.Fit(Graded, 0);
+            var started = PsychometricFit.Fit(Graded, 0, mu, sigma);
+            Assert.That(started.Mu, Is.EqualTo(plain.Mu));
+            Assert.That(started.Sigma, Is.EqualTo(plain.Sigma));
+            Assert.That(started.Iterations, Is.EqualTo(plain.Iterations));
+        }
+    
+        // The likelihood with lapses is not concave: far from the maximum its Hessian is indefinite and the ascent damps
+        // its Newton step until the matrix it solves is positive definite. From each start of a grid (σ from a fifth to
+        // sixty times the maximum's) it reaches the maximum of Tools/check-psychometric-fit.py (σ to 1e-7, where the
+        // rounding of the log-likelihood ends some of the ascents, as in "seven levels of a hundred" above).
+        [Test]
+        public void FromFarStartsTheAscentWithLapsesReachesTheMaximum()
+        {
+            var data = Lapsing;
+            double mean = 1.0, sd = Math.Sqrt(Levels.Sum(x => (x - 1.0) * (x - 1.0)) / Levels.Length);
+            var z = Levels.Select(x => (x - mean) / sd).ToArray();
+            var n = data.Select(l => l.Trials).ToArray();
+            var k = data.Select(l => l.Heavier).ToArray();
+            foreach (double mu in new[] { 0.7, 0.85, 1.0, 1.15, 1.3 })
+                foreach (double sigma in new[] { 0.01, 0.03, 0.1, 0.3, 1, 3 })
+                {
+                    if ((mu == 0.7 || mu == 1.3) && sigma == 0.01) continue; // every level on one flat side of the step
+                    double a = -(mu - mean) / sigma, b = sd / sigma;
+                    int iterations;
+                    Assert.That(PsychometricFit.Maximize(z, n, k, 0.2, ref a, ref b, out iterations), Is.True, "from " + mu + ", " + sigma);
+                    Assert.That(mean - sd * a / b, Is.EqualTo(0.99964416951844726).Within(1e-9), "μ from " + mu + ", " + sigma);
+                    Assert.That(sd / b, Is.EqualTo(0.052460276059148951).Within(1e-7 * 0.052460276059148951), "σ from " + mu + ", " + sigma);
+                }
+        }
+
+        // Started (as a bootstrap may start it) at a lesser maximum, a step between 0.85 and 0.90, the fit still returns
+        // the highest of its starts.
+        [Test]
+        public void StartedAtALesserMaximumTheFitReturnsTheHighest()
+        {
+            var fit = PsychometricFit.Fit(Lapsing, 0.2, 0.85, 0.003);
+            Assert.That(fit.Mu, Is.EqualTo(0.99964416951844726).Within(1e-9));
+            Assert.That(fit.LogLikelihood, Is.EqualTo(-50.137869289912493).Within(1e-12 * 50.14));
+        }
+
+        // Answers that a lapse of 0.2 explains best as a step between 1.00 and 1.05: below it every level at Ψ = 0.2, above
+        // it at 0.8 (13 of 50 heavier below, 29 of 40 above). The likelihood climbs towards it as σ → 0 and has no
+        // maximum; the ascent stops where its gradient vanishes (σ 0.0035 here before steps were looked for), a σ that
+        // says nothing. So too three levels at 20 %, 50 % and 80 % with a lapse of 0.2: a step on the middle one.
+        [Test]
+        public void WithLapsesAStepBetweenLevelsIsNotEstimable()
+        {
+            var between = PsychometricFit.Fit(Data(10, 9, 3, 0, 0, 1, 9, 8, 7, 5), 0.2);
+            var on = PsychometricFit.Fit(new[] { new StimulusLevel(0.8, 10, 2), new StimulusLevel(1.0, 10, 5), new StimulusLevel(1.2, 10, 8) }, 0.2);
+            foreach (var fit in new[] { between, on })
+            {
+                Assert.That(fit.Estimable, Is.False);
+                Assert.That(fit.Reason, Is.EqualTo("a step: with this lapse a step between levels explains the answers as well as any σ (σ → 0)"));
+                Assert.That(double.IsNaN(fit.Mu) && double.IsNaN(fit.Sigma), Is.True);
+            }
+            // Without the lapse the same answers have a finite maximum.
+            Assert.That(PsychometricFit.Fit(Data(10, 9, 3, 0, 0, 1, 9, 8, 7, 5)).Reason, Is.EqualTo("yes"));
+            Assert.That(PsychometricFit.Fit(new[] { new StimulusLevel(0.8, 10, 2), new StimulusLevel(1.0, 10, 5), new StimulusLevel(1.2, 10, 8) }).Reason, Is.EqualTo("yes"));
+        }
+
+        // The likeliest step, in closed form: between levels (γ below, 1 − γ above) or on one, where Ψ is that level's
+        // proportion held within [γ, 1 − γ].
+        [Test]
+        public void TheBestStepIsTheLikeliestPlaceBetweenOrOnALevel()
+        {
+            double l2 = Math.Log(0.2), l8 = Math.Log(0.8);
+            // Between 1.00 and 1.05: 24 answers at 0.2's side, 66 at 0.8's.
+            Assert.That(PsychometricFit.BestStepLogLik(Data(10, 9, 3, 0, 0, 1, 9, 8, 7, 5), 0.2), Is.EqualTo(24 * l2 + 66 * l8).Within(1e-12));
+            // On 1.0, at its 3 of 10: better than between 1.0 and 1.2 (7·ln 0.2 + 23·ln 0.8).
+            var three = new[] { new StimulusLevel(0.8, 10, 2), new StimulusLevel(1.0, 10, 3), new StimulusLevel(1.2, 10, 8) };
+            Assert.That(PsychometricFit.BestStepLogLik(three, 0.2), Is.EqualTo(4 * l2 + 16 * l8 + 3 * Math.Log(0.3) + 7 * Math.Log(0.7)).Within(1e-12));
+            // On 1.0 at 1 of 10, below γ: held at γ, as likely as the step between 1.0 and 1.2.
+            var one = new[] { new StimulusLevel(0.8, 10, 2), new StimulusLevel(1.0, 10, 1), new StimulusLevel(1.2, 10, 10) };
+            Assert.That(PsychometricFit.BestStepLogLik(one, 0.2), Is.EqualTo(3 * l2 + 17 * l8 + 10 * l8).Within(1e-12));
+            // On the last level, all heavier: held at 1 − γ; on the first, none heavier: held at γ.
+            Assert.That(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 0), new StimulusLevel(1.0, 4, 4) }, 0.2), Is.EqualTo(8 * l8).Within(1e-12));
+            // A level without trials adds nothing wherever the step is.
+            Assert.That(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 1), new StimulusLevel(0.9, 0, 0), new StimulusLevel(1.0, 4, 3) }, 0.2),
+                Is.EqualTo(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 1), new StimulusLevel(1.0, 4, 3) }, 0.2)));
+        }
+
+        // A level far below the others never answered heavier, and one far above always answered heavier, are where the fit
+        // puts Ψ = 0 and 1 (Φ underflows at 57 σ): they add nothing to the likelihood and move nothing.
+        [Test]
+        public void LevelsFarOutsideAnsweredAsExpectedMoveNothing()
+        {
+            var plain = PsychometricFit.Fit(Graded);
+            var wider = PsychometricFit.Fit(Graded.Concat(new[] { new StimulusLevel(-5.0, 10, 0), new StimulusLevel(7.0, 10, 10) }).ToArray());
+            Assert.That(wider.Estimable, Is.True, wider.Reason);
+            Assert.That(wider.Mu, Is.EqualTo(plain.Mu).Within(1e-12));
+            Assert.That(wider.Sigma, Is.EqualTo(plain.Sigma).Within(1e-12 * plain.Sigma));
+            Assert.That(wider.LogLikelihood, Is.EqualTo(plain.LogLikelihood).Within(1e-12));
+        }
+
+        // −0 and 0 are one level, and it is written 0.
+        [Test]
+        public void MinusZeroAndZeroAreOneLevelZero()
+        {
+            var fit = PsychometricFit.Fit(new[] { new StimulusLevel(-0.0, 2, 1), new StimulusLevel(0.0, 2, 0), new StimulusLevel(0.1, 2, 2) });
+            Assert.That(fit.Levels.Count, Is.EqualTo(2));
+            Assert.That(fit.Levels[0].Trials, Is.EqualTo(4));
+            Assert.That(1 / fit.Levels[0].Level, Is.EqualTo(double.PositiveInfinity), "+0, not −0");
+        }
+    }
+}
