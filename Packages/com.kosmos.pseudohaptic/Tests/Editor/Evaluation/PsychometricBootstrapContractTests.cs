@@ -32,7 +32,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(PsychometricBootstrap.Percentile(new[] { 4.5 }, 0.025), Is.EqualTo(4.5));
             Assert.That(PsychometricBootstrap.Percentile(new[] { 4.5 }, 0.975), Is.EqualTo(4.5));
             Assert.That(PsychometricBootstrap.Percentile(new[] { 1.0, 2.0 }, 0.5), Is.EqualTo(1.5));
-            Assert.That(Assert.Throws<ArgumentException>(() => PsychometricBootstrap.Percentile(new double[0], 0.5)).ParamName, Is.EqualTo("sorted"));
+            var none = Assert.Throws<ArgumentException>(() => PsychometricBootstrap.Percentile(new double[0], 0.5));
+            Assert.That(none.ParamName, Is.EqualTo("sorted"));
+            Assert.That(none.Message, Does.StartWith("no values"));
             Assert.That(Assert.Throws<ArgumentException>(() => PsychometricBootstrap.Percentile(null, 0.5)).ParamName, Is.EqualTo("sorted"));
         }
 
@@ -130,9 +132,15 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             var fit = SevenLevels(6);
             Assert.That(Assert.Throws<ArgumentNullException>(() => PsychometricBootstrap.Run(null, 10, 1)).ParamName, Is.EqualTo("fit"));
-            Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, -1, 1)).ParamName, Is.EqualTo("resamples"));
+            var negative = Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, -1, 1));
+            Assert.That(negative.ParamName, Is.EqualTo("resamples"));
+            Assert.That(negative.Message, Does.StartWith("must be ≥ 0"));
             foreach (double c in new[] { 0.0, 1.0, -0.5, 1.5, double.NaN })
-                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, 10, 1, c)).ParamName, Is.EqualTo("confidence"), "confidence " + c);
+            {
+                var e = Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, 10, 1, c));
+                Assert.That(e.ParamName, Is.EqualTo("confidence"), "confidence " + c);
+                Assert.That(e.Message, Does.StartWith("must be in (0, 1)"), "confidence " + c);
+            }
         }
 
         [TestCase(7, 12, 0.95, 0.3195113125495498, 0.8067396863412434)]
@@ -167,7 +175,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         public void WilsonsIntervalRefusesImpossibleCounts(int successes, int trials)
         {
             double lo, hi;
-            Assert.Throws<ArgumentOutOfRangeException>(() => WilsonInterval.Compute(successes, trials, 0.95, out lo, out hi));
+            var e = Assert.Throws<ArgumentOutOfRangeException>(() => WilsonInterval.Compute(successes, trials, 0.95, out lo, out hi));
+            Assert.That(e.ParamName, Is.EqualTo("trials"));
+            Assert.That(e.Message, Does.StartWith("need 0 ≤ successes ≤ trials, trials > 0"));
         }
 
         [Test]
@@ -212,9 +222,11 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         public void AnObserverWithoutSpreadOrWithTooMuchLapseIsRefused()
         {
             foreach (double sigma in new[] { 0.0, -0.1, double.NaN })
-                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SimulatedObserver(1, sigma, 1)).ParamName, Is.EqualTo("sigma"), "sigma " + sigma);
+                Assert.That(() => new SimulatedObserver(1, sigma, 1), Throws.TypeOf<ArgumentOutOfRangeException>()
+                    .With.Property("ParamName").EqualTo("sigma").And.Message.StartsWith("sigma must be positive"), "sigma " + sigma);
             foreach (double lapse in new[] { -0.01, 0.5, double.NaN })
-                Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SimulatedObserver(1, 0.1, 1, lapse)).ParamName, Is.EqualTo("lapse"), "lapse " + lapse);
+                Assert.That(() => new SimulatedObserver(1, 0.1, 1, lapse), Throws.TypeOf<ArgumentOutOfRangeException>()
+                    .With.Property("ParamName").EqualTo("lapse").And.Message.StartsWith("lapse must be in [0, 0.5)"), "lapse " + lapse);
             Assert.That(new SimulatedObserver(1, 0.1, 1, 0.0).Lapse, Is.EqualTo(0));
             Assert.That(new SimulatedObserver(1, 0.1, 1, 0.49).Lapse, Is.EqualTo(0.49));
         }

@@ -66,6 +66,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             var e = Assert.Throws<ArgumentOutOfRangeException>(() => new SeededRandom(1).NextInt(n));
             Assert.That(e.ParamName, Is.EqualTo("n"));
             Assert.That(e.ActualValue, Is.EqualTo(n));
+            Assert.That(e.Message, Does.StartWith("must be positive"));
         }
 
         [Test]
