@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reference maxima for PsychometricFitMaximumTests (Tests/Editor/Evaluation): the maximum-likelihood cumulative
-Gaussian Ψ(x) = γ + (1 − 2γ)·Φ((x − μ)/σ), γ fixed, of six data sets, found in 50-digit arithmetic (mpmath) by a
+Gaussian Ψ(x) = γ + (1 − 2γ)·Φ((x − μ)/σ), γ fixed, of seven data sets, found in 50-digit arithmetic (mpmath) by a
 coarse grid over (μ, ln σ) for the global maximum and Newton's method on the exact gradient to polish it; prints μ, σ,
 the log-likelihood and the deviance to 17 significant digits, the figures the tests hold the fit to.
 
@@ -19,6 +19,10 @@ SETS = {
     # A participant who lapsed at the heaviest comparison (1 of 10): the ascent from the lapse-free maximum stops at a
     # lesser maximum (μ 0.98, σ 0.16, log-likelihood −55.3); the fit's other start finds this one.
     "an outlier, lapse 0.1": (LEVELS, [10] * 9, [0, 0, 2, 7, 10, 7, 10, 8, 1], 0.1),
+    # Forty trials a level, the eighth level answered heavier 8 times in 40 against its neighbours' 40 and 38: under a
+    # lapse of 0.02 the likeliest curve is steep (σ 0.035) and that outlier improbable; the ascents from (0, 1) and from
+    # the lapse-free maximum both end at a shallow one (σ 0.24, log-likelihood −198.6), the grid start finds this one.
+    "an outlier of forty, lapse 0.02": (LEVELS, [40] * 9, [0, 14, 30, 39, 40, 40, 40, 8, 38], 0.02),
     # A simulated observer's 700 trials (SimulatedObserver(1.02, 0.09, seed 81), ConstantStimuliPlan, 100 repetitions):
     # its ascent ends with a gradient of about 1.7e-6, at the maximum to rounding.
     "seven levels of a hundred": ([0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3], [100] * 7, [0, 1, 11, 43, 83, 98, 100], 0),
@@ -82,5 +86,5 @@ def maximum(data):
 
 for name, data in SETS.items():
     mu, s = maximum(data)
-    print("%-27s mu %s  sigma %s  loglik %s  deviance %s" % (
+    print("%-32s mu %s  sigma %s  loglik %s  deviance %s" % (
         name, mp.nstr(mu, 17), mp.nstr(s, 17), mp.nstr(loglik(data, mu, s), 17), mp.nstr(deviance(data, mu, s), 17)))

@@ -136,10 +136,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
             for (int i = 0; i < m; i++) { z[i] = (merged[i].Level - mean) / sd; n[i] = merged[i].Trials; k[i] = merged[i].Heavier; }
 
             // Starts: the caller's (a bootstrap's original fit), the plain (0, 1), and with lapses also the
-            // lapse-free maximum; the highest converged maximum wins (with γ = λ = 0 there is only one).
+            // lapse-free maximum and the likeliest point of a grid; the highest converged maximum wins (with γ = λ = 0
+            // there is only one).
             var starts = new List<double[]>();
             if (startMu.HasValue && startSigma.HasValue && startSigma.Value > 0 && IsFinite(startMu.Value))
                 starts.Add(new[] { -(startMu.Value - mean) / startSigma.Value, sd / startSigma.Value });
+            if (lapse > 0) starts.Add(GridStart(z, n, k, lapse));
             starts.Add(new[] { 0.0, 1.0 });
             double a = 0, b = 1, best = double.NegativeInfinity, failed = double.NegativeInfinity;
             bool converged = false;
@@ -200,6 +202,31 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
+
+        /// <summary>
+        /// The likeliest (a, b) of a grid: μ at each level and halfway between neighbours, σ from 2 to 1/32 of the
+        /// levels' spread. With lapses the likelihood can have several maxima (an outlying level that the lapse explains,
+        /// or a steep rise the lapse-free fit smooths over), and the ascents from (0, 1) and from the lapse-free maximum
+        /// can both end at a lesser one.
+        /// </summary>
+        static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
+        {
+            double bestA = 0, bestB = 1, best = double.NegativeInfinity;
+            for (int i = 0; i < z.Length; i++)
+            {
+                for (int half = 0; half < 2; half++)
+                {
+                    if (half == 1 && i == z.Length - 1) break;
+                    double centre = half == 0 ? z[i] : 0.5 * (z[i] + z[i + 1]);
+                    for (double b = 0.5; b <= 32; b *= 2)
+                    {
+                        double ll = LogLik(z, n, k, lapse, -b * centre, b);
+                        if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
+                    }
+                }
+            }
+            return new[] { bestA, bestB };
+        }
 
         /// <summary>A log-likelihood ratio below which a step is as likely as the fit (1.000001 : 1: no evidence of a σ).</summary>
         const double StepTolerance = 1e-6;

@@ -36,9 +36,14 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             yield return new TestCaseData(Data(10000, 0, 1000, 1000, 3000, 5000, 6000, 8000, 10000, 9000), 0.0, 1.010958649732023, 0.10498140472835802, -36410.271655473304, 3767.0534442140512, 1e-10)
                 .SetName("graded, a thousand times");
             // A participant who lapsed at the heaviest comparison (1 of 10 heavier): from the lapse-free maximum the ascent
-            // stops at a lesser one (μ 0.98, σ 0.16, −55.3); the fit takes its other start's.
+            // stops at a lesser one (μ 0.98, σ 0.16, −55.3); the fit takes the better of its other starts'.
             yield return new TestCaseData(Data(10, 0, 0, 2, 7, 10, 7, 10, 8, 1), 0.1, 0.93124438337145558, 0.025306710569636963, -49.29656430922673, 47.640800126901241, 1e-10)
                 .SetName("an outlier, lapse 0.1");
+            // Forty trials a level, the eighth answered heavier 8 times in 40 against its neighbours' 40 and 38: under a lapse
+            // of 0.02 the likeliest curve is steep and that outlier improbable. The ascents from (0, 1) and from the
+            // lapse-free maximum both end at a shallow one (σ 0.24, −198.6); the grid's start finds this one.
+            yield return new TestCaseData(Data(40, 0, 14, 30, 39, 40, 40, 40, 8, 38), 0.02, 0.87080228558889682, 0.034662041916901691, -191.66726152804825, 221.28601908209391, 1e-10)
+                .SetName("an outlier of forty, lapse 0.02");
             // A simulated observer's 700 trials (SimulatedObserver(1.02, 0.09, seed 81), 100 repetitions of the plan's
             // seven levels). The ascent stops where a step's gain (about 1e-14) is below the rounding of a log-likelihood
             // of −164, with a gradient of 1.7e-6 left: σ is 2e-8 off, which a fixed gradient tolerance of 1e-6 would
