@@ -46,6 +46,17 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(e.Message, Does.StartWith("responses must be 0 or 1"));
         }
 
+        // −0 and 0 are one level, written 0 whichever came first.
+        [Test]
+        public void GroupingMakesMinusZeroAndZeroOneLevelZero()
+        {
+            var levels = StimulusLevel.Group(new[] { -0.0, 0.0, 0.1 }, new[] { 1, 0, 1 });
+            Assert.That(levels.Length, Is.EqualTo(2));
+            Assert.That(levels[0].Trials, Is.EqualTo(2));
+            Assert.That(levels[0].Heavier, Is.EqualTo(1));
+            Assert.That(1 / levels[0].Level, Is.EqualTo(double.PositiveInfinity), "+0, not −0");
+        }
+
         [Test]
         public void AnswersHeavierAtOrBelowEveryLighterOneAreAPerfectSeparationEvenWhereTheyMeet()
         {
