@@ -168,12 +168,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 if (!converged || ll > best) { a = sa; b = sb; best = ll; iterations = it; converged = true; }
                 if (lapse == 0) break; // concave: the first maximum is the maximum
             }
+            // With lapses the likelihood can be highest as σ → 0, at a step between two levels (Ψ = γ below it, 1 − γ
+            // above): the ascents then stop where the gradient vanishes, at a σ that says nothing, or give up climbing
+            // towards it (b past 1e8). Without lapses such answers are separated, found above.
+            double stepLogLik = lapse > 0 ? BestStepLogLik(merged, lapse) : double.NegativeInfinity;
             if (!converged)
-            {
-                // With lapses an ascent fails mostly by climbing towards a step (b past 1e8): say so when one is as likely.
-                bool step = lapse > 0 && BestStepLogLik(merged, lapse) >= failed - StepTolerance;
-                return new PsychometricFit(merged, lapse, trials, step ? StepReason : "the fit did not converge");
-            }
+                return new PsychometricFit(merged, lapse, trials, lapse > 0 && stepLogLik >= failed - StepTolerance ? StepReason : "the fit did not converge");
             // b is in units of the standardized levels, so 1e-9 means a σ a billion times their spread.
             if (Math.Abs(b) < 1e-9) return new PsychometricFit(merged, lapse, trials, "flat: the answers do not change with the comparison (σ infinite)");
             if (!(b > 0)) return new PsychometricFit(merged, lapse, trials, "decreasing: the comparison was judged heavier less often as it grew");
@@ -181,11 +181,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             double sigma = sd / b;
             if (!IsFinite(mu) || !IsFinite(sigma)) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
             double logLik = LogLik(z, n, k, lapse, a, b);
-            // With lapses the likelihood can be highest as σ → 0: a step between two levels (Ψ = γ below it, 1 − γ above)
-            // explains the answers as well as the ascent's point, which stopped where the gradient vanished, at a σ that
-            // says nothing. Without lapses such answers are separated, found above.
-            if (lapse > 0 && BestStepLogLik(merged, lapse) >= logLik - StepTolerance)
-                return new PsychometricFit(merged, lapse, trials, StepReason);
+            if (stepLogLik >= logLik - StepTolerance) return new PsychometricFit(merged, lapse, trials, StepReason);
 
             double deviance = 0;
             for (int i = 0; i < m; i++)
@@ -212,17 +208,13 @@ namespace Kosmos.PseudoHaptic.Evaluation
         static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
         {
             double bestA = 0, bestB = 1, best = double.NegativeInfinity;
-            for (int i = 0; i < z.Length; i++)
+            for (int c = 0; c < 2 * z.Length - 1; c++)
             {
-                for (int half = 0; half < 2; half++)
+                double centre = c % 2 == 0 ? z[c / 2] : 0.5 * (z[c / 2] + z[c / 2 + 1]);
+                for (double b = 0.5; b <= 32; b *= 2)
                 {
-                    if (half == 1 && i == z.Length - 1) break;
-                    double centre = half == 0 ? z[i] : 0.5 * (z[i] + z[i + 1]);
-                    for (double b = 0.5; b <= 32; b *= 2)
-                    {
-                        double ll = LogLik(z, n, k, lapse, -b * centre, b);
-                        if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
-                    }
+                    double ll = LogLik(z, n, k, lapse, -b * centre, b);
+                    if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
                 }
             }
             return new[] { bestA, bestB };
@@ -235,33 +227,29 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         /// <summary>
         /// The supremum of the log-likelihood as σ → 0: the likeliest step of height 1 − 2γ, γ at the levels below it and
-        /// 1 − γ above, over every place between <paramref name="levels"/> (ascending, distinct) and on each of them, where
-        /// Ψ can be anything from γ to 1 − γ (μ and σ shrinking together hold η there): its best, k/n within those bounds.
+        /// 1 − γ above (<paramref name="levels"/> ascending, distinct). The step sits on a level, where Ψ can be anything
+        /// from γ to 1 − γ (μ and σ shrinking together hold η there), best at its k/n held within those bounds; a step
+        /// between two levels is the one on the upper of them with Ψ = 1 − γ there (or on the last with γ), so never likelier.
         /// </summary>
         internal static double BestStepLogLik(StimulusLevel[] levels, double lapse)
         {
             double low = Math.Log(lapse), high = Math.Log(1 - lapse);
             double best = double.NegativeInfinity;
-            // Place j: between level j − 1 and level j (j = 0 … m), or on level j (j = 0 … m − 1).
-            for (int j = 0; j <= levels.Length; j++)
+            for (int j = 0; j < levels.Length; j++)
             {
-                for (int on = 0; on < 2; on++)
+                double ll = 0;
+                for (int i = 0; i < levels.Length; i++)
                 {
-                    if (on == 1 && j == levels.Length) break;
-                    double ll = 0;
-                    for (int i = 0; i < levels.Length; i++)
+                    int yes = levels[i].Heavier, no = levels[i].Trials - levels[i].Heavier;
+                    if (i < j) ll += yes * low + no * high;
+                    else if (i > j) ll += yes * high + no * low;
+                    else if (yes + no > 0)
                     {
-                        int yes = levels[i].Heavier, no = levels[i].Trials - levels[i].Heavier;
-                        if (i < j) ll += yes * low + no * high;
-                        else if (i > j || on == 0) ll += yes * high + no * low;
-                        else if (yes + no > 0)
-                        {
-                            double p = Math.Min(Math.Max((double)yes / (yes + no), lapse), 1 - lapse);
-                            ll += (yes > 0 ? yes * Math.Log(p) : 0) + (no > 0 ? no * Math.Log(1 - p) : 0);
-                        }
+                        double p = Math.Min(Math.Max((double)yes / (yes + no), lapse), 1 - lapse);
+                        ll += (yes > 0 ? yes * Math.Log(p) : 0) + (no > 0 ? no * Math.Log(1 - p) : 0);
                     }
-                    if (ll > best) best = ll;
                 }
+                if (ll > best) best = ll;
             }
             return best;
         }
