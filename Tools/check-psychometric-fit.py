@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Reference maxima for PsychometricFitMaximumTests (Tests/Editor/Evaluation): the maximum-likelihood cumulative
-Gaussian Ψ(x) = γ + (1 − 2γ)·Φ((x − μ)/σ), γ fixed, of seven data sets, found in 50-digit arithmetic (mpmath) by a
-coarse grid over (μ, ln σ) for the global maximum and Newton's method on the exact gradient to polish it; prints μ, σ,
-the log-likelihood and the deviance to 17 significant digits, the figures the tests hold the fit to.
+Gaussian Ψ(x) = γ + (1 − 2γ)·Φ((x − μ)/σ), γ fixed, of nine data sets, found in 50-digit arithmetic (mpmath) by a
+coarse grid over (μ, ln σ), wider than the levels, for the global maximum and Newton's method on the exact gradient to polish it; prints μ, σ,
+the log-likelihood and the deviance to 17 significant digits, the figures the tests hold the fit to. For a set whose
+answers fall it prints the falling curve's maximum, Ψ(x) = γ + (1 − 2γ)·Φ(−(x − μ)/σ), too or instead.
 
 Usage: python3 Tools/check-psychometric-fit.py"""
 import mpmath as mp
@@ -26,19 +27,25 @@ SETS = {
     # A simulated observer's 700 trials (SimulatedObserver(1.02, 0.09, seed 81), ConstantStimuliPlan, 100 repetitions):
     # its ascent ends with a gradient of about 1.7e-6, at the maximum to rounding.
     "seven levels of a hundred": ([0.7, 0.8, 0.9, 1.0, 1.1, 1.2, 1.3], [100] * 7, [0, 1, 11, 43, 83, 98, 100], 0),
+    # Twenty trials at eight levels, 13 of 20 heavier at the lightest, few in the middle, more again at the heaviest:
+    # under a lapse of 0.2 a rising curve has a maximum (the ascent from (0, 1) ends there) but a falling one is likelier.
+    "falling, lapse 0.2": (LEVELS[:8], [20] * 8, [13, 3, 4, 3, 4, 7, 10, 8], 0.2, [1, -1]),
+    # Five trials at four levels, 4, 5, 3 and 4 heavier, under a lapse of 0.1: a shallow fall, likelier than any rise
+    # (none has a maximum: the likeliest is flat, Ψ = 0.8 everywhere, −10.008) or step, which only a start that falls finds.
+    "shallow fall, lapse 0.1": (LEVELS[:4], [5] * 4, [4, 5, 3, 4], 0.1, [-1]),
 }
 
 
-def psi(x, mu, s, g):
-    return g + (1 - 2 * g) * mp.ncdf((x - mu) / s)
+def psi(x, mu, s, g, direction=1):
+    return g + (1 - 2 * g) * mp.ncdf(direction * (x - mu) / s)
 
 
-def loglik(data, mu, s):
-    xs, ns, ks, g = data
+def loglik(data, mu, s, direction=1):
+    xs, ns, ks, g = data[:4]
     total = mp.mpf(0)
     for x, n, k in zip(xs, ns, ks):
         x = mp.mpf(x)
-        p = psi(x, mu, s, g)
+        p = psi(x, mu, s, g, direction)
         if k > 0:
             total += k * mp.log(p)
         if n - k > 0:
@@ -46,11 +53,11 @@ def loglik(data, mu, s):
     return total
 
 
-def deviance(data, mu, s):
-    xs, ns, ks, g = data
+def deviance(data, mu, s, direction=1):
+    xs, ns, ks, g = data[:4]
     d = mp.mpf(0)
     for x, n, k in zip(xs, ns, ks):
-        p = psi(mp.mpf(x), mu, s, g)
+        p = psi(mp.mpf(x), mu, s, g, direction)
         if k > 0:
             d += k * mp.log(k / (n * p))
         if n - k > 0:
@@ -58,33 +65,45 @@ def deviance(data, mu, s):
     return 2 * d
 
 
-def maximum(data):
-    xs = data[0]
-    lo, hi = min(xs), max(xs)
-    best = None
-    for i in range(41):
-        mu = mp.mpf(lo) + (mp.mpf(hi) - lo) * i / 40
-        for j in range(41):
-            s = mp.exp(mp.log(0.005) + (mp.log(1.0) - mp.log(0.005)) * j / 40)
-            v = loglik(data, mu, s)
-            if best is None or v > best[0]:
-                best = (v, mu, s)
-    _, mu, s = best
-    # Newton on the gradient in (μ, ln σ).
-    f = lambda m, t: loglik(data, m, mp.exp(t))
+def polish(data, mu, s, direction):
+    """Newton on the gradient in (μ, ln σ) from (mu, s); None if it runs off (σ beyond 1e6) or onto a flat place."""
+    f = lambda m, t: loglik(data, m, mp.exp(t), direction)
     m, t = mp.mpf(mu), mp.log(s)
     for _ in range(100):
         g = [mp.diff(f, (m, t), (1, 0)), mp.diff(f, (m, t), (0, 1))]
         h = [[mp.diff(f, (m, t), (2, 0)), mp.diff(f, (m, t), (1, 1))],
              [mp.diff(f, (m, t), (1, 1)), mp.diff(f, (m, t), (0, 2))]]
-        step = mp.lu_solve(mp.matrix(h), mp.matrix(g))
+        try:
+            step = mp.lu_solve(mp.matrix(h), mp.matrix(g))
+        except ZeroDivisionError:  # a flat place (σ so large or small that the likelihood does not move)
+            return None
         m, t = m - step[0], t - step[1]
+        if t > mp.log(1e6):
+            return None
         if abs(step[0]) + abs(step[1]) < mp.mpf(10) ** -40:
             break
     return m, mp.exp(t)
 
 
+def maximum(data, direction=1):
+    xs = data[0]
+    lo, hi = min(xs), max(xs)
+    grid = []
+    # μ from a spread below the levels to a spread above them, σ from 0.005 to 2.
+    for i in range(121):
+        mu = mp.mpf(lo) + (mp.mpf(hi) - lo) * (i - 40) / 40
+        for j in range(41):
+            s = mp.exp(mp.log(0.005) + (mp.log(2.0) - mp.log(0.005)) * j / 40)
+            grid.append((loglik(data, mu, s, direction), mu, s))
+    grid.sort(key=lambda c: c[0], reverse=True)
+    # The three likeliest points of the grid polished; the likeliest maximum they reach.
+    found = [polish(data, mu, s, direction) for _, mu, s in grid[:3]]
+    return max((p for p in found if p is not None), key=lambda p: loglik(data, p[0], p[1], direction))
+
+
 for name, data in SETS.items():
-    mu, s = maximum(data)
-    print("%-32s mu %s  sigma %s  loglik %s  deviance %s" % (
-        name, mp.nstr(mu, 17), mp.nstr(s, 17), mp.nstr(loglik(data, mu, s), 17), mp.nstr(deviance(data, mu, s), 17)))
+    for direction in (data[4] if len(data) > 4 else [1]):
+        mu, s = maximum(data, direction)
+        print("%-32s mu %s  sigma %s  loglik %s  deviance %s" % (
+            name + (", falling curve" if direction < 0 else ""), mp.nstr(mu, 17), mp.nstr(s, 17),
+            mp.nstr(loglik(data, mu, s, direction), 17), mp.nstr(deviance(data, mu, s, direction), 17)))

@@ -110,7 +110,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
         public static PsychometricFit Fit(IReadOnlyList<StimulusLevel> levels, double lapse = 0)
             => Fit(levels, lapse, null, null);
 
-        internal static PsychometricFit Fit(IReadOnlyList<StimulusLevel> levels, double lapse, double? startMu, double? startSigma)
+        /// <summary>As <see cref="Fit(IReadOnlyList{StimulusLevel}, double)"/> from a start (a bootstrap's original fit), and with
+        /// the ascents' iterations capped at <paramref name="iterationCap"/> (below 500 only in the tests, which make every
+        /// ascent fail that way).</summary>
+        internal static PsychometricFit Fit(IReadOnlyList<StimulusLevel> levels, double lapse, double? startMu, double? startSigma, int iterationCap = MaxIterations)
         {
             if (levels == null) throw new ArgumentNullException(nameof(levels));
             if (!(lapse >= 0 && lapse < 0.5)) throw new ArgumentOutOfRangeException(nameof(lapse), lapse, "lapse must be in [0, 0.5)");
@@ -135,9 +138,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
             var k = new int[m];
             for (int i = 0; i < m; i++) { z[i] = (merged[i].Level - mean) / sd; n[i] = merged[i].Trials; k[i] = merged[i].Heavier; }
 
-            // Starts: the caller's (a bootstrap's original fit), the plain (0, 1), and with lapses also the
-            // lapse-free maximum and the likeliest point of a grid; the highest converged maximum wins (with γ = λ = 0
-            // there is only one).
+            // Starts: the caller's (a bootstrap's original fit), with lapses the likeliest point of a grid, and the plain
+            // (0, 1); the highest converged maximum wins (with γ = λ = 0 there is only one).
             var starts = new List<double[]>();
             if (startMu.HasValue && startSigma.HasValue && startSigma.Value > 0 && IsFinite(startMu.Value))
                 starts.Add(new[] { -(startMu.Value - mean) / startSigma.Value, sd / startSigma.Value });
@@ -150,43 +152,34 @@ namespace Kosmos.PseudoHaptic.Evaluation
             {
                 double sa = starts[s][0], sb = starts[s][1];
                 int it;
-                bool ok;
-                if (lapse > 0 && s == starts.Count - 1)
-                {
-                    ok = Maximize(z, n, k, 0, ref sa, ref sb, out it) && Maximize(z, n, k, lapse, ref sa, ref sb, out it);
-                    double ta = 0, tb = 1;
-                    int it2;
-                    if (Maximize(z, n, k, lapse, ref ta, ref tb, out it2))
-                    {
-                        double lt = LogLik(z, n, k, lapse, ta, tb);
-                        if (!ok || lt > LogLik(z, n, k, lapse, sa, sb)) { sa = ta; sb = tb; ok = true; it = it2; }
-                    }
-                }
-                else ok = Maximize(z, n, k, lapse, ref sa, ref sb, out it);
-                if (!ok) { failed = Math.Max(failed, LogLik(z, n, k, lapse, sa, sb)); continue; }
+                if (!Maximize(z, n, k, lapse, ref sa, ref sb, out it, iterationCap)) { failed = Math.Max(failed, LogLik(z, n, k, lapse, sa, sb)); continue; }
                 double ll = LogLik(z, n, k, lapse, sa, sb);
                 if (!converged || ll > best) { a = sa; b = sb; best = ll; iterations = it; converged = true; }
                 if (lapse == 0) break; // concave: the first maximum is the maximum
             }
-            // With lapses the likelihood can be highest as σ → 0, at a step between two levels (Ψ = γ below it, 1 − γ
-            // above): the ascents then stop where the gradient vanishes, at a σ that says nothing, or give up climbing
-            // towards it (b past 1e8). Without lapses such answers are separated, found above.
-            double stepLogLik = lapse > 0 ? BestStepLogLik(merged, lapse) : double.NegativeInfinity;
+            // With lapses the likelihood can be highest as σ → 0, at a step between two levels (Ψ = γ on one side of it,
+            // 1 − γ on the other): the ascents then stop where the gradient vanishes, at a σ that says nothing, or give up
+            // climbing towards it (b past 1e8). Without lapses such answers are separated, found above. The likeliest
+            // explanation wins: a step, rising ("a step") or falling ("decreasing"), when one is as likely as the best point
+            // found, else that point. A point where μ or σ would overflow has every η beyond ±40 (|a/b| < 4e10 otherwise,
+            // and sd < 1.4e154): Ψ is γ or 1 − γ at every level, a step, never likelier than the best one.
+            double rise = lapse > 0 ? BestStepLogLik(merged, lapse, true) : double.NegativeInfinity;
+            double fall = lapse > 0 ? BestStepLogLik(merged, lapse, false) : double.NegativeInfinity;
+            string stepReason = rise >= fall ? StepReason : DecreasingReason;
+            double step = Math.Max(rise, fall);
             if (!converged)
-                return new PsychometricFit(merged, lapse, trials, lapse > 0 && stepLogLik >= failed - StepTolerance ? StepReason : "the fit did not converge");
+                return new PsychometricFit(merged, lapse, trials, lapse > 0 && step >= failed - StepTolerance ? stepReason : "the fit did not converge");
+            double logLik = LogLik(z, n, k, lapse, a, b);
+            if (step >= logLik - StepTolerance) return new PsychometricFit(merged, lapse, trials, stepReason);
             // b is in units of the standardized levels, so 1e-9 means a σ a billion times their spread.
             if (Math.Abs(b) < 1e-9) return new PsychometricFit(merged, lapse, trials, "flat: the answers do not change with the comparison (σ infinite)");
-            if (!(b > 0)) return new PsychometricFit(merged, lapse, trials, "decreasing: the comparison was judged heavier less often as it grew");
+            if (!(b > 0)) return new PsychometricFit(merged, lapse, trials, DecreasingReason);
             double mu = mean - sd * a / b;
             double sigma = sd / b;
-            if (!IsFinite(mu) || !IsFinite(sigma)) return new PsychometricFit(merged, lapse, trials, "the fit did not converge");
-            double logLik = LogLik(z, n, k, lapse, a, b);
-            if (stepLogLik >= logLik - StepTolerance) return new PsychometricFit(merged, lapse, trials, StepReason);
 
             double deviance = 0;
             for (int i = 0; i < m; i++)
             {
-                if (n[i] == 0) continue;
                 double eta = a + b * z[i];
                 double p = lapse + (1 - 2 * lapse) * Normal.Cdf(eta);
                 double q = lapse + (1 - 2 * lapse) * Normal.UpperTail(eta);
@@ -199,19 +192,23 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
 
+        /// <summary>The grid start's slopes b: σ from 2 to 1/32 of the levels' spread, rising and falling.</summary>
+        static readonly double[] GridSlopes = { 0.5, 1, 2, 4, 8, 16, 32, -0.5, -1, -2, -4, -8, -16, -32 };
+
         /// <summary>
-        /// The likeliest (a, b) of a grid: μ at each level and halfway between neighbours, σ from 2 to 1/32 of the
-        /// levels' spread. With lapses the likelihood can have several maxima (an outlying level that the lapse explains,
-        /// or a steep rise the lapse-free fit smooths over), and the ascents from (0, 1) and from the lapse-free maximum
-        /// can both end at a lesser one.
+        /// The likeliest (a, b) of a grid: μ at each level and halfway between neighbours, b in <see cref="GridSlopes"/>.
+        /// With lapses the likelihood can have several maxima (an outlying level that the lapse explains, a steep rise a
+        /// shallow curve smooths over, a fall against a rise in answers that barely change), and the ascent from (0, 1)
+        /// can end at a lesser one.
         /// </summary>
+
         static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
         {
             double bestA = 0, bestB = 1, best = double.NegativeInfinity;
             for (int c = 0; c < 2 * z.Length - 1; c++)
             {
                 double centre = c % 2 == 0 ? z[c / 2] : 0.5 * (z[c / 2] + z[c / 2 + 1]);
-                for (double b = 0.5; b <= 32; b *= 2)
+                foreach (double b in GridSlopes)
                 {
                     double ll = LogLik(z, n, k, lapse, -b * centre, b);
                     if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
@@ -220,20 +217,27 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return new[] { bestA, bestB };
         }
 
+        /// <summary>The ascent's cap on iterations (the tests' longest take a few dozen).</summary>
+        internal const int MaxIterations = 500;
+
         /// <summary>A log-likelihood ratio below which a step is as likely as the fit (1.000001 : 1: no evidence of a σ).</summary>
         const double StepTolerance = 1e-6;
 
         const string StepReason = "a step: with this lapse a step between levels explains the answers as well as any σ (σ → 0)";
 
+        const string DecreasingReason = "decreasing: the comparison was judged heavier less often as it grew";
+
         /// <summary>
-        /// The supremum of the log-likelihood as σ → 0: the likeliest step of height 1 − 2γ, γ at the levels below it and
-        /// 1 − γ above (<paramref name="levels"/> ascending, distinct). The step sits on a level, where Ψ can be anything
-        /// from γ to 1 − γ (μ and σ shrinking together hold η there), best at its k/n held within those bounds; a step
-        /// between two levels is the one on the upper of them with Ψ = 1 − γ there (or on the last with γ), so never likelier.
+        /// The supremum of the log-likelihood as σ → 0 from above (<paramref name="rising"/>) or below: the likeliest step of
+        /// height 1 − 2γ, rising (γ at the levels below it, 1 − γ above) or falling (1 − γ below, γ above), with
+        /// <paramref name="levels"/> ascending and distinct. The step sits on a level, where Ψ can be anything from γ to
+        /// 1 − γ (μ and σ shrinking together hold η there), best at its k/n held within those bounds; a step between two
+        /// levels is the one on the upper of them with Ψ there as above it, so never likelier.
         /// </summary>
-        internal static double BestStepLogLik(StimulusLevel[] levels, double lapse)
+        internal static double BestStepLogLik(StimulusLevel[] levels, double lapse, bool rising)
         {
-            double low = Math.Log(lapse), high = Math.Log(1 - lapse);
+            // Ψ below the step is γ rising, 1 − γ falling; above it the other.
+            double low = Math.Log(rising ? lapse : 1 - lapse), high = Math.Log(rising ? 1 - lapse : lapse);
             double best = double.NegativeInfinity;
             for (int j = 0; j < levels.Length; j++)
             {
@@ -243,10 +247,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     int yes = levels[i].Heavier, no = levels[i].Trials - levels[i].Heavier;
                     if (i < j) ll += yes * low + no * high;
                     else if (i > j) ll += yes * high + no * low;
-                    else if (yes + no > 0)
+                    else
                     {
-                        double p = Math.Min(Math.Max((double)yes / (yes + no), lapse), 1 - lapse);
-                        ll += (yes > 0 ? yes * Math.Log(p) : 0) + (no > 0 ? no * Math.Log(1 - p) : 0);
+                        double p = Math.Min(Math.Max(levels[i].Proportion, lapse), 1 - lapse); // γ ≤ Ψ ≤ 1 − γ: both logs finite
+                        ll += yes * Math.Log(p) + no * Math.Log(1 - p);
                     }
                 }
                 if (ll > best) best = ll;
@@ -313,7 +317,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         /// <summary>Newton–Levenberg ascent of the log-likelihood in (a, b); true when it converged. Internal for the
         /// tests, which start it far from the maximum where the likelihood with lapses is not concave.</summary>
-        internal static bool Maximize(double[] z, int[] n, int[] k, double lapse, ref double a, ref double b, out int iterations)
+        internal static bool Maximize(double[] z, int[] n, int[] k, double lapse, ref double a, ref double b, out int iterations, int iterationCap = MaxIterations)
         {
             double ll = LogLik(z, n, k, lapse, a, b);
             if (double.IsNegativeInfinity(ll)) { a = 0; b = 1; ll = LogLik(z, n, k, lapse, a, b); }
@@ -324,24 +328,25 @@ namespace Kosmos.PseudoHaptic.Evaluation
             int total = 0;
             for (int i = 0; i < n.Length; i++) total += n[i];
             double atRounding = 1e-6 * Math.Max(1, total);
-            for (iterations = 1; iterations <= 500; iterations++)
+            for (iterations = 1; iterations <= iterationCap; iterations++)
             {
                 // Gradient and Hessian through η: ℓ_i(p) with p = γ + (1 − 2γ)Φ(η).
                 double ga = 0, gb = 0, haa = 0, hab = 0, hbb = 0;
                 double c = 1 - 2 * lapse;
                 for (int i = 0; i < z.Length; i++)
                 {
-                    if (n[i] == 0) continue;
                     double eta = a + b * z[i];
                     double p = lapse + c * Normal.Cdf(eta);
                     double q = lapse + c * Normal.UpperTail(eta);
                     double d1 = c * Normal.Pdf(eta);           // dp/dη
                     double d2 = -eta * d1;                      // d²p/dη²
                     double yes = k[i], no = n[i] - k[i];
-                    double lp = (yes > 0 ? yes / p : 0) - (no > 0 ? no / q : 0);
-                    double lpp = -(yes > 0 ? yes / (p * p) : 0) - (no > 0 ? no / (q * q) : 0);
+                    double lp = yes / p - no / q;
+                    double lpp = -yes / (p * p) - no / (q * q);
                     double g = lp * d1;
                     double h = lpp * d1 * d1 + lp * d2;
+                    // Only where Φ(η) or its complement has underflowed (|η| > 38, a level far outside or a far start): 0/0 at a
+                    // level without such answers, whose term is no·φ(η) < 1e-320, or k/Ψ overflowed against φ(η) → 0.
                     if (double.IsNaN(g) || double.IsNaN(h)) { g = 0; h = 0; }
                     ga += g; gb += g * z[i];
                     haa += h; hab += h * z[i]; hbb += h * z[i] * z[i];
@@ -365,9 +370,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     }
                     tau = tau == 0 ? 1e-6 * (Math.Abs(A) + Math.Abs(C) + 1) : tau * 10;
                 }
+                // Halve the step until it does not descend; at 2⁻⁶⁰ a finite step is below the last bit (an equal
+                // log-likelihood, accepted), so all sixty fail only for a step that is not a number, and the damping grows.
                 double scale = 1;
-                bool improved = false;
-                for (int half = 0; half < 60; half++)
+                for (int half = 0; half < 60; half++, scale *= 0.5)
                 {
                     double na = a + scale * da, nb = b + scale * db;
                     double nll = LogLik(z, n, k, lapse, na, nb);
@@ -377,15 +383,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         a = na; b = nb;
                         double gain = nll - ll;
                         ll = nll;
-                        improved = true;
                         if (moved < 1e-14 * (1 + Math.Abs(a) + Math.Abs(b)) && gain <= 1e-15 * (1 + Math.Abs(ll))) return gradNorm < atRounding;
                         break;
                     }
-                    scale *= 0.5;
                 }
-                damping = improved && scale == 1 ? tau * 0.1 : Math.Max(tau * 10, 1e-6);
+                damping = scale == 1 ? tau * 0.1 : Math.Max(tau * 10, 1e-6);
                 if (damping < 1e-12) damping = 0;
-                if (!improved) return gradNorm < atRounding; // no ascent direction left: at the maximum to rounding
                 if (Math.Abs(a) > 1e8 || Math.Abs(b) > 1e8) return false;
             }
             return false;

@@ -35,8 +35,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             // The same proportions a thousand times over: the same maximum, with a curvature a thousand times as steep.
             yield return new TestCaseData(Data(10000, 0, 1000, 1000, 3000, 5000, 6000, 8000, 10000, 9000), 0.0, 1.010958649732023, 0.10498140472835802, -36410.271655473304, 3767.0534442140512, 1e-10)
                 .SetName("graded, a thousand times");
-            // A participant who lapsed at the heaviest comparison (1 of 10 heavier): from the lapse-free maximum the ascent
-            // stops at a lesser one (μ 0.98, σ 0.16, −55.3); the fit takes the better of its other starts'.
+            // A participant who lapsed at the heaviest comparison (1 of 10 heavier): from the lapse-free maximum an ascent
+            // stops at a lesser one (μ 0.98, σ 0.16, −55.3); the fit's starts find this one.
             yield return new TestCaseData(Data(10, 0, 0, 2, 7, 10, 7, 10, 8, 1), 0.1, 0.93124438337145558, 0.025306710569636963, -49.29656430922673, 47.640800126901241, 1e-10)
                 .SetName("an outlier, lapse 0.1");
             // Forty trials a level, the eighth answered heavier 8 times in 40 against its neighbours' 40 and 38: under a lapse
@@ -226,18 +226,165 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             double l2 = Math.Log(0.2), l8 = Math.Log(0.8);
             // Between 1.00 and 1.05: 24 answers at 0.2's side, 66 at 0.8's.
-            Assert.That(PsychometricFit.BestStepLogLik(Data(10, 9, 3, 0, 0, 1, 9, 8, 7, 5), 0.2), Is.EqualTo(24 * l2 + 66 * l8).Within(1e-12));
+            Assert.That(PsychometricFit.BestStepLogLik(Data(10, 9, 3, 0, 0, 1, 9, 8, 7, 5), 0.2, true), Is.EqualTo(24 * l2 + 66 * l8).Within(1e-12));
             // On 1.0, at its 3 of 10: better than between 1.0 and 1.2 (7·ln 0.2 + 23·ln 0.8).
             var three = new[] { new StimulusLevel(0.8, 10, 2), new StimulusLevel(1.0, 10, 3), new StimulusLevel(1.2, 10, 8) };
-            Assert.That(PsychometricFit.BestStepLogLik(three, 0.2), Is.EqualTo(4 * l2 + 16 * l8 + 3 * Math.Log(0.3) + 7 * Math.Log(0.7)).Within(1e-12));
+            Assert.That(PsychometricFit.BestStepLogLik(three, 0.2, true), Is.EqualTo(4 * l2 + 16 * l8 + 3 * Math.Log(0.3) + 7 * Math.Log(0.7)).Within(1e-12));
             // On 1.0 at 1 of 10, below γ: held at γ, as likely as the step between 1.0 and 1.2.
             var one = new[] { new StimulusLevel(0.8, 10, 2), new StimulusLevel(1.0, 10, 1), new StimulusLevel(1.2, 10, 10) };
-            Assert.That(PsychometricFit.BestStepLogLik(one, 0.2), Is.EqualTo(3 * l2 + 17 * l8 + 10 * l8).Within(1e-12));
+            Assert.That(PsychometricFit.BestStepLogLik(one, 0.2, true), Is.EqualTo(3 * l2 + 17 * l8 + 10 * l8).Within(1e-12));
             // On the last level, all heavier: held at 1 − γ; on the first, none heavier: held at γ.
-            Assert.That(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 0), new StimulusLevel(1.0, 4, 4) }, 0.2), Is.EqualTo(8 * l8).Within(1e-12));
+            Assert.That(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 0), new StimulusLevel(1.0, 4, 4) }, 0.2, true), Is.EqualTo(8 * l8).Within(1e-12));
             // A level without trials adds nothing wherever the step is.
-            Assert.That(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 1), new StimulusLevel(0.9, 0, 0), new StimulusLevel(1.0, 4, 3) }, 0.2),
-                Is.EqualTo(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 1), new StimulusLevel(1.0, 4, 3) }, 0.2)));
+            Assert.That(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 1), new StimulusLevel(0.9, 0, 0), new StimulusLevel(1.0, 4, 3) }, 0.2, true),
+                Is.EqualTo(PsychometricFit.BestStepLogLik(new[] { new StimulusLevel(0.8, 4, 1), new StimulusLevel(1.0, 4, 3) }, 0.2, true)));
+        }
+
+        const string Decreasing = "decreasing: the comparison was judged heavier less often as it grew";
+
+        // Twenty trials at eight levels, 13 of 20 heavier at the lightest, few in the middle, more again at the heaviest,
+        // under a lapse of 0.2 (Tools/check-psychometric-fit.py, "falling, lapse 0.2"): a rising curve has a maximum
+        // (μ 1.72, σ 0.90, −100.787), where the ascent from (0, 1) ends, but a falling one is likelier (μ 0.803, σ 0.005,
+        // −98.2545): the answers fall. The grid's falling slopes find it (with rising ones alone the fit said "yes").
+        [Test]
+        public void WithLapsesAFallingCurveLikelierThanAnyRisingOneIsDecreasing()
+        {
+            var levels = Levels.Take(8).ToArray();
+            int[] heavier = { 13, 3, 4, 3, 4, 7, 10, 8 };
+            var n = levels.Select(x => 20).ToArray();
+            var fit = PsychometricFit.Fit(levels.Select((x, i) => new StimulusLevel(x, 20, heavier[i])).ToArray(), 0.2);
+            Assert.That(fit.Reason, Is.EqualTo(Decreasing));
+            Assert.That(double.IsNaN(fit.Mu) && double.IsNaN(fit.Sigma), Is.True);
+
+            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
+            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double a = 0, b = 1;
+            int iterations;
+            Assert.That(PsychometricFit.Maximize(z, n, heavier, 0.2, ref a, ref b, out iterations), Is.True);
+            Assert.That(mean - sd * a / b, Is.EqualTo(1.7171342359917322).Within(1e-9 * 1.72), "the rising maximum's μ");
+            Assert.That(sd / b, Is.EqualTo(0.8995551639710505).Within(1e-9 * 0.9), "the rising maximum's σ");
+        }
+
+        // 4, 5, 3 and 4 of 5 heavier at 0.80 to 0.95 under a lapse of 0.1 ("shallow fall, lapse 0.1"): a shallow fall (μ 1.105,
+        // σ 0.192, −9.88048) is likelier than every rise (none has a maximum; the likeliest is flat, Ψ = 0.8 everywhere,
+        // −10.008) and every step; only a start that falls finds it (with rising starts alone the fit said "a step").
+        [Test]
+        public void WithLapsesAShallowFallLikelierThanFlatIsDecreasing()
+        {
+            var levels = Levels.Take(4).ToArray();
+            int[] heavier = { 4, 5, 3, 4 };
+            var data = levels.Select((x, i) => new StimulusLevel(x, 5, heavier[i])).ToArray();
+            Assert.That(PsychometricFit.Fit(data, 0.1).Reason, Is.EqualTo(Decreasing));
+            double fallMax = -9.8804815985247132, flat = 16 * Math.Log(0.8) + 4 * Math.Log(0.2);
+            Assert.That(flat, Is.LessThan(fallMax - 0.1));
+            Assert.That(PsychometricFit.BestStepLogLik(data, 0.1, true), Is.LessThan(fallMax - 0.1));
+            Assert.That(PsychometricFit.BestStepLogLik(data, 0.1, false), Is.LessThan(fallMax - 0.1));
+
+            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
+            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double a = (1.1 - mean) / 0.2, b = -sd / 0.2; // falling through 1.1 with σ 0.2
+            int iterations;
+            Assert.That(PsychometricFit.Maximize(z, new[] { 5, 5, 5, 5 }, heavier, 0.1, ref a, ref b, out iterations), Is.True);
+            Assert.That(mean - sd * a / b, Is.EqualTo(1.1053376235475145).Within(1e-9), "the falling maximum's μ");
+            Assert.That(-sd / b, Is.EqualTo(0.19226203742447599).Within(1e-9 * 0.19), "the falling maximum's σ");
+        }
+
+        // 4, 1 and 2 of 20 heavier at 0.80, 0.85 and 0.90 under a lapse of 0.05: the likelihood climbs towards a falling
+        // step on 0.80 (Ψ = 0.2 there, 0.05 above it) and has no maximum. Decreasing, as the lapse-free fit says too.
+        [Test]
+        public void WithLapsesAFallingStepIsDecreasing()
+        {
+            var data = new[] { new StimulusLevel(0.80, 20, 4), new StimulusLevel(0.85, 20, 1), new StimulusLevel(0.90, 20, 2) };
+            Assert.That(PsychometricFit.Fit(data, 0.05).Reason, Is.EqualTo(Decreasing));
+            Assert.That(PsychometricFit.Fit(data).Reason, Is.EqualTo(Decreasing));
+            double fall = 4 * Math.Log(0.2) + 16 * Math.Log(0.8) + 3 * Math.Log(0.05) + 37 * Math.Log(0.95);
+            Assert.That(PsychometricFit.BestStepLogLik(data, 0.05, false), Is.EqualTo(fall).Within(1e-12));
+            // Rising, the best step is on 0.90 at 2 of 20, every level below it at γ: 5·ln 0.05 + 35·ln 0.95 + 2·ln 0.1 + 18·ln 0.9.
+            double rise = 5 * Math.Log(0.05) + 35 * Math.Log(0.95) + 2 * Math.Log(0.1) + 18 * Math.Log(0.9);
+            Assert.That(PsychometricFit.BestStepLogLik(data, 0.05, true), Is.EqualTo(rise).Within(1e-12));
+        }
+
+        // A falling step is a rising one with the answers turned over (k ↔ n − k), and with the levels mirrored: over 300
+        // random data sets (3 to 9 levels, 0 to 12 trials each, a lapse from 0.01 to 0.4).
+        [Test]
+        public void AFallingStepIsARisingOneTurnedOverOrMirrored()
+        {
+            var rng = new SeededRandom(35);
+            for (int t = 0; t < 300; t++)
+            {
+                int m = 3 + (int)(rng.NextDouble() * 7);
+                double lapse = 0.01 + 0.39 * rng.NextDouble();
+                var data = new StimulusLevel[m];
+                for (int i = 0; i < m; i++)
+                {
+                    int trials = (int)(rng.NextDouble() * 13);
+                    data[i] = new StimulusLevel(0.8 + 0.05 * i, trials, (int)(rng.NextDouble() * (trials + 1)));
+                }
+                var turned = data.Select(l => new StimulusLevel(l.Level, l.Trials, l.Trials - l.Heavier)).ToArray();
+                var mirrored = data.Reverse().Select(l => new StimulusLevel(-l.Level, l.Trials, l.Heavier)).ToArray();
+                double fall = PsychometricFit.BestStepLogLik(data, lapse, false);
+                Assert.That(PsychometricFit.BestStepLogLik(turned, lapse, true), Is.EqualTo(fall).Within(1e-9 * (1 + Math.Abs(fall))), "turned over, set " + t);
+                Assert.That(PsychometricFit.BestStepLogLik(mirrored, lapse, true), Is.EqualTo(fall).Within(1e-9 * (1 + Math.Abs(fall))), "mirrored, set " + t);
+            }
+        }
+
+        // Every ascent cut to two iterations (the graded answers need five without lapses) stops short of the maximum, and
+        // no step is as likely as where they stopped: the fit did not converge. The answers of a step, rising or falling,
+        // stay a step: it is at least as likely as any point an ascent can reach.
+        [TestCase(0.0)]
+        [TestCase(0.04)]
+        public void AscentsCutShortAreNoFit(double lapse)
+        {
+            var cut = PsychometricFit.Fit(Graded, lapse, null, null, 2);
+            Assert.That(cut.Estimable, Is.False);
+            Assert.That(cut.Reason, Is.EqualTo("the fit did not converge"));
+            Assert.That(double.IsNaN(cut.Mu) && double.IsNaN(cut.LogLikelihood), Is.True);
+            Assert.That(PsychometricFit.Fit(Graded, lapse, null, null, PsychometricFit.MaxIterations).Reason, Is.EqualTo("yes"));
+        }
+
+        [Test]
+        public void StepsCutShortStaySteps()
+        {
+            var rising = PsychometricFit.Fit(Data(10, 9, 3, 0, 0, 1, 9, 8, 7, 5), 0.2, null, null, 2);
+            Assert.That(rising.Reason, Is.EqualTo("a step: with this lapse a step between levels explains the answers as well as any σ (σ → 0)"));
+            var falling = PsychometricFit.Fit(new[] { new StimulusLevel(0.80, 20, 4), new StimulusLevel(0.85, 20, 1), new StimulusLevel(0.90, 20, 2) }, 0.05, null, null, 2);
+            Assert.That(falling.Reason, Is.EqualTo(Decreasing));
+        }
+
+        // Started at its maximum the ascent is done in its first iteration (cut to one, it still converges).
+        [TestCase(0.0)]
+        [TestCase(0.2)]
+        public void AtItsMaximumTheAscentNeedsOneIteration(double lapse)
+        {
+            var data = Lapsing;
+            double mean = 1.0, sd = Math.Sqrt(Levels.Sum(x => (x - 1.0) * (x - 1.0)) / Levels.Length);
+            var z = Levels.Select(x => (x - mean) / sd).ToArray();
+            var n = data.Select(l => l.Trials).ToArray();
+            var k = data.Select(l => l.Heavier).ToArray();
+            double a = 0, b = 1;
+            int iterations;
+            Assert.That(PsychometricFit.Maximize(z, n, k, lapse, ref a, ref b, out iterations), Is.True);
+            Assert.That(iterations, Is.GreaterThan(1));
+            double a1 = a, b1 = b;
+            Assert.That(PsychometricFit.Maximize(z, n, k, lapse, ref a, ref b, out iterations, 1), Is.True);
+            Assert.That(iterations, Is.EqualTo(1));
+            Assert.That(a, Is.EqualTo(a1).Within(1e-12));
+            Assert.That(b, Is.EqualTo(b1).Within(1e-12 * b1));
+        }
+
+        // Climbing towards a step (the "close" answers above, a step between 1 and 1.000000001 under a lapse of 0.2), the
+        // ascent gives up at its first step past b = 1e8 (1.8e9 here, in its 22nd iteration) rather than climbing on.
+        [Test]
+        public void TheAscentGivesUpPastASlopeOfAHundredMillion()
+        {
+            double[] levels = { 0.0, 1.0, 1.000000001, 2.0 };
+            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
+            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double a = 0, b = 1;
+            int iterations;
+            Assert.That(PsychometricFit.Maximize(z, new[] { 10, 10, 10, 10 }, new[] { 2, 2, 8, 8 }, 0.2, ref a, ref b, out iterations), Is.False);
+            Assert.That(b, Is.GreaterThan(1e8).And.LessThan(1e10));
+            Assert.That(iterations, Is.LessThan(30));
         }
 
         // A level far below the others never answered heavier, and one far above always answered heavier, are where the fit
