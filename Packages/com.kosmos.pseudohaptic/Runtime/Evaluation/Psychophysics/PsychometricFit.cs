@@ -54,8 +54,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// Levenberg damping and step halving (the log-likelihood is concave in (a, b) when γ = λ = 0, so the
     /// maximum found is the unique one); μ = mean − sd·a/b, σ = sd/b. Data that have no finite maximum (no
     /// trials, a single level, all answers alike, levels perfectly separated by the answer, or with lapses a
-    /// step between levels as likely as any σ) or a decreasing fit are <see cref="Estimable"/> = false with a
-    /// <see cref="Reason"/>; their numbers are NaN and are never written.
+    /// step between levels as likely as any σ) or a decreasing fit (with lapses also a falling step as likely as any
+    /// curve) are <see cref="Estimable"/> = false with a <see cref="Reason"/>; their numbers are NaN and are never written.
     /// </summary>
     public sealed class PsychometricFit
     {
@@ -201,7 +201,6 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// shallow curve smooths over, a fall against a rise in answers that barely change), and the ascent from (0, 1)
         /// can end at a lesser one.
         /// </summary>
-
         static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
         {
             double bestA = 0, bestB = 1, best = double.NegativeInfinity;
