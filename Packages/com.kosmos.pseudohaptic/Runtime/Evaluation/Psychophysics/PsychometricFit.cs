@@ -162,9 +162,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
             // climbing towards it (b past 1e8). Without lapses such answers are separated, found above. The likeliest
             // explanation wins: a step, rising ("a step") or falling ("decreasing"), when one is as likely as the best point
             // found, else that point. A point where μ or σ would overflow has every η beyond ±40 (|a/b| < 4e10 otherwise,
-            // and sd < 1.4e154): Ψ is γ or 1 − γ at every level, a step, never likelier than the best one.
-            double rise = lapse > 0 ? BestStepLogLik(merged, lapse, true) : double.NegativeInfinity;
-            double fall = lapse > 0 ? BestStepLogLik(merged, lapse, false) : double.NegativeInfinity;
+            // and sd < 1.4e154): Ψ is γ or 1 − γ at every level, a step, never likelier than the best one. Without lapses
+            // both steps are −∞ (every level but the step's own adds k·ln 0 or 0·ln 0, −∞ or NaN).
+            double rise = BestStepLogLik(merged, lapse, true);
+            double fall = BestStepLogLik(merged, lapse, false);
             string stepReason = rise >= fall ? StepReason : DecreasingReason;
             double step = Math.Max(rise, fall);
             if (!converged)
@@ -192,26 +193,29 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
 
-        /// <summary>The grid start's slopes b: σ from 2 to 1/32 of the levels' spread, rising and falling.</summary>
-        static readonly double[] GridSlopes = { 0.5, 1, 2, 4, 8, 16, 32, -0.5, -1, -2, -4, -8, -16, -32 };
+        /// <summary>The grid start's slopes |b|: σ from 2 to 1/32 of the levels' spread.</summary>
+        static readonly double[] GridSlopes = { 0.5, 1, 2, 4, 8, 16, 32 };
 
         /// <summary>
-        /// The likeliest (a, b) of a grid: μ at each level and halfway between neighbours, b in <see cref="GridSlopes"/>.
+        /// The likeliest (a, b) of a grid: μ at each level and halfway between neighbours, b = ±<see cref="GridSlopes"/>
+        /// (rising, then falling; the first of equals).
         /// With lapses the likelihood can have several maxima (an outlying level that the lapse explains, a steep rise a
         /// shallow curve smooths over, a fall against a rise in answers that barely change), and the ascent from (0, 1)
         /// can end at a lesser one.
         /// </summary>
-        static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
+        internal static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
         {
             double bestA = 0, bestB = 1, best = double.NegativeInfinity;
             for (int c = 0; c < 2 * z.Length - 1; c++)
             {
                 double centre = c % 2 == 0 ? z[c / 2] : 0.5 * (z[c / 2] + z[c / 2 + 1]);
-                foreach (double b in GridSlopes)
-                {
-                    double ll = LogLik(z, n, k, lapse, -b * centre, b);
-                    if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
-                }
+                for (int sign = 1; sign >= -1; sign -= 2)
+                    foreach (double slope in GridSlopes)
+                    {
+                        double b = sign * slope;
+                        double ll = LogLik(z, n, k, lapse, -b * centre, b);
+                        if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
+                    }
             }
             return new[] { bestA, bestB };
         }

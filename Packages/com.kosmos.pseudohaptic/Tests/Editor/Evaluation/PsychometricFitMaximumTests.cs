@@ -289,6 +289,41 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(-sd / b, Is.EqualTo(0.19226203742447599).Within(1e-9 * 0.19), "the falling maximum's σ");
         }
 
+        // The grid start is the likeliest point of its grid (μ at each level and halfway between neighbours, σ from 2 to 1/32
+        // of the levels' spread, rising or falling), found here from Ψ in the levels' own unit, for answers that rise, fall
+        // and zigzag at uneven levels (so that no two points of the grid mirror each other).
+        [Test]
+        public void TheGridStartIsTheLikeliestPointOfItsGrid()
+        {
+            double[] levels = { 0.70, 0.80, 0.85, 0.95, 1.00, 1.20 };
+            var n = levels.Select(x => 10).ToArray();
+            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
+            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            var centres = levels.Concat(levels.Skip(1).Select((x, i) => (x + levels[i]) / 2)).ToArray();
+            var cases = new[] { (new[] { 1, 3, 4, 9, 8, 10 }, 0.05, 1), (new[] { 9, 10, 6, 2, 3, 1 }, 0.1, -1), (new[] { 1, 9, 2, 8, 3, 9 }, 0.2, 1) };
+            foreach (var (k, lapse, direction) in cases)
+            {
+                double best = double.NegativeInfinity, bestMu = double.NaN, bestSigma = double.NaN, bestSign = 0;
+                foreach (double mu in centres)
+                    foreach (int sign in new[] { 1, -1 })
+                        for (double sigma = 2 * sd; sigma >= sd / 32; sigma /= 2)
+                        {
+                            double ll = 0;
+                            for (int i = 0; i < levels.Length; i++)
+                            {
+                                double psi = lapse + (1 - 2 * lapse) * Normal.Cdf(sign * (levels[i] - mu) / sigma);
+                                ll += k[i] * Math.Log(psi) + (n[i] - k[i]) * Math.Log(1 - psi);
+                            }
+                            if (ll > best) { best = ll; bestMu = mu; bestSigma = sigma; bestSign = sign; }
+                        }
+                var start = PsychometricFit.GridStart(z, n, k, lapse);
+                string data = string.Join(", ", k);
+                Assert.That(Math.Sign(start[1]), Is.EqualTo(bestSign).And.EqualTo(direction), data);
+                Assert.That(mean - sd * start[0] / start[1], Is.EqualTo(bestMu).Within(1e-12), "μ, " + data);
+                Assert.That(sd / Math.Abs(start[1]), Is.EqualTo(bestSigma).Within(1e-12 * bestSigma), "σ, " + data);
+            }
+        }
+
         // 4, 1 and 2 of 20 heavier at 0.80, 0.85 and 0.90 under a lapse of 0.05: the likelihood climbs towards a falling
         // step on 0.80 (Ψ = 0.2 there, 0.05 above it) and has no maximum. Decreasing, as the lapse-free fit says too.
         [Test]
