@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Reference maxima for PsychometricFitMaximumTests (Tests/Editor/Evaluation): the maximum-likelihood cumulative
 Gaussian Ψ(x) = γ + (1 − 2γ)·Φ((x − μ)/σ), γ fixed, of nine data sets, found in 50-digit arithmetic (mpmath) by a
-coarse grid over (μ, ln σ), wider than the levels, for the global maximum and Newton's method on the exact gradient to polish it; prints μ, σ,
-the log-likelihood and the deviance to 17 significant digits, the figures the tests hold the fit to. For a set whose
-answers fall it prints the falling curve's maximum, Ψ(x) = γ + (1 − 2γ)·Φ(−(x − μ)/σ), too or instead.
+coarse grid over (μ, ln σ), wider than the levels, for the global maximum and Newton's method on the exact gradient to
+polish its three likeliest points; prints μ, σ, the log-likelihood and the deviance to 17 significant digits, the
+figures the tests hold the fit to. For a set whose answers fall it prints the falling curve's maximum,
+Ψ(x) = γ + (1 − 2γ)·Φ(−(x − μ)/σ), too or instead (about a minute).
 
 Usage: python3 Tools/check-psychometric-fit.py"""
 import mpmath as mp

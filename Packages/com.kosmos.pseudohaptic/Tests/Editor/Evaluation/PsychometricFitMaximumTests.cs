@@ -245,7 +245,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         // Twenty trials at eight levels, 13 of 20 heavier at the lightest, few in the middle, more again at the heaviest,
         // under a lapse of 0.2 (Tools/check-psychometric-fit.py, "falling, lapse 0.2"): a rising curve has a maximum
         // (μ 1.72, σ 0.90, −100.787), where the ascent from (0, 1) ends, but a falling one is likelier (μ 0.803, σ 0.005,
-        // −98.2545): the answers fall. The grid's falling slopes find it (with rising ones alone the fit said "yes").
+        // −98.2545): the answers fall. The grid's falling slopes find it, and the falling step is nearly as likely (at
+        // `eac7763`, with neither, the fit said "yes").
         [Test]
         public void WithLapsesAFallingCurveLikelierThanAnyRisingOneIsDecreasing()
         {
