@@ -18,6 +18,16 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         static StimulusLevel[] Data(int trials, params int[] heavier)
             => Levels.Select((x, i) => new StimulusLevel(x, trials, heavier[i])).ToArray();
 
+        // The levels standardized as the fit standardizes equal trials: z = (x − mean)/sd, sd the population one.
+        static double[] Standardize(double[] levels, out double mean, out double sd)
+        {
+            double m = levels.Average();
+            mean = m;
+            sd = Math.Sqrt(levels.Sum(x => (x - m) * (x - m)) / levels.Length);
+            double s = sd;
+            return levels.Select(x => (x - m) / s).ToArray();
+        }
+
         static StimulusLevel[] Graded => Data(10, 0, 1, 1, 3, 5, 6, 8, 10, 9);
 
         static StimulusLevel[] Lapsing => Data(10, 3, 2, 1, 3, 6, 6, 8, 9, 7);
@@ -173,8 +183,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         public void FromFarStartsTheAscentWithLapsesReachesTheMaximum()
         {
             var data = Lapsing;
-            double mean = 1.0, sd = Math.Sqrt(Levels.Sum(x => (x - 1.0) * (x - 1.0)) / Levels.Length);
-            var z = Levels.Select(x => (x - mean) / sd).ToArray();
+            double mean, sd;
+            var z = Standardize(Levels, out mean, out sd);
             var n = data.Select(l => l.Trials).ToArray();
             var k = data.Select(l => l.Heavier).ToArray();
             foreach (double mu in new[] { 0.7, 0.85, 1.0, 1.15, 1.3 })
@@ -257,8 +267,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(fit.Reason, Is.EqualTo(Decreasing));
             Assert.That(double.IsNaN(fit.Mu) && double.IsNaN(fit.Sigma), Is.True);
 
-            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
-            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double mean, sd;
+            var z = Standardize(levels, out mean, out sd);
             double a = 0, b = 1;
             int iterations;
             Assert.That(PsychometricFit.Maximize(z, n, heavier, 0.2, ref a, ref b, out iterations), Is.True);
@@ -281,8 +291,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(PsychometricFit.BestStepLogLik(data, 0.1, true), Is.LessThan(fallMax - 0.1));
             Assert.That(PsychometricFit.BestStepLogLik(data, 0.1, false), Is.LessThan(fallMax - 0.1));
 
-            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
-            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double mean, sd;
+            var z = Standardize(levels, out mean, out sd);
             double a = (1.1 - mean) / 0.2, b = -sd / 0.2; // falling through 1.1 with σ 0.2
             int iterations;
             Assert.That(PsychometricFit.Maximize(z, new[] { 5, 5, 5, 5 }, heavier, 0.1, ref a, ref b, out iterations), Is.True);
@@ -298,8 +308,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             double[] levels = { 0.70, 0.80, 0.85, 0.95, 1.00, 1.20 };
             var n = levels.Select(x => 10).ToArray();
-            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
-            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double mean, sd;
+            var z = Standardize(levels, out mean, out sd);
             var centres = levels.Concat(levels.Skip(1).Select((x, i) => (x + levels[i]) / 2)).ToArray();
             var cases = new[] { (new[] { 1, 3, 4, 9, 8, 10 }, 0.05, 1), (new[] { 9, 10, 6, 2, 3, 1 }, 0.1, -1), (new[] { 1, 9, 2, 8, 3, 9 }, 0.2, 1) };
             foreach (var (k, lapse, direction) in cases)
@@ -393,8 +403,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         public void AtItsMaximumTheAscentNeedsOneIteration(double lapse)
         {
             var data = Lapsing;
-            double mean = 1.0, sd = Math.Sqrt(Levels.Sum(x => (x - 1.0) * (x - 1.0)) / Levels.Length);
-            var z = Levels.Select(x => (x - mean) / sd).ToArray();
+            double mean, sd;
+            var z = Standardize(Levels, out mean, out sd);
             var n = data.Select(l => l.Trials).ToArray();
             var k = data.Select(l => l.Heavier).ToArray();
             double a = 0, b = 1;
@@ -414,8 +424,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         public void TheAscentGivesUpPastASlopeOfAHundredMillion()
         {
             double[] levels = { 0.0, 1.0, 1.000000001, 2.0 };
-            double mean = levels.Average(), sd = Math.Sqrt(levels.Sum(x => (x - mean) * (x - mean)) / levels.Length);
-            var z = levels.Select(x => (x - mean) / sd).ToArray();
+            double mean, sd;
+            var z = Standardize(levels, out mean, out sd);
             double a = 0, b = 1;
             int iterations;
             Assert.That(PsychometricFit.Maximize(z, new[] { 10, 10, 10, 10 }, new[] { 2, 2, 8, 8 }, 0.2, ref a, ref b, out iterations), Is.False);
