@@ -460,7 +460,14 @@ namespace Kosmos.PseudoHaptic
             // where the height deceleration shapes the lift it carries.
             double slope = f.CarriedLift == f.Lift ? Math.Abs(1 - f.Gain) : Math.Max(1, Math.Abs(1 - f.Gain));
             double moved = f.WeightHand - _state.LastHand; // the hand's motion, not the base's
-            double explained = Math.Abs(moved) * slope, low = -explained, high = explained;
+            double explained = Math.Abs(moved) * slope;
+            double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);
+            // Nothing gliding and a change the hand's motion explains, or one this frame's step takes away (almost every frame):
+            // 0, what the lines below return. Within ±explained, |change| − explained is the size of the change beyond it
+            // (x − high above, low − x below: the same subtraction, so the same rounding), ≤ 0 inside. One test that is almost
+            // always true and waits for no clamp, so the frame runs on.
+            if (glide == 0 && !f.AcrossGap && Math.Abs(change) - explained <= step) return 0;
+            double low = -explained, high = explained;
             if (f.AcrossGap)
             {
                 // Across a gap the object goes as far as the hand went, never further: the offset may change only with the hand's
@@ -469,12 +476,8 @@ namespace Kosmos.PseudoHaptic
                 if (moved >= 0) { if (low < 0) low = 0; if (high > 2 * moved) high = 2 * moved; }
                 else { if (high > 0) high = 0; if (low < 2 * moved) low = 2 * moved; }
             }
-            // The change beyond [low, high] (x − clamp(x) is x − high above, x − low below, +0 between; the offsets are finite),
-            // without a branch: on a jittered hand whether the change is explained is a coin toss the CPU would mispredict.
+            // The change beyond [low, high] (x − clamp(x) is x − high above, x − low below, +0 between; the offsets are finite).
             double excess = change - Math.Min(Math.Max(change, low), high);
-            double step = _constants.Limits.GlideSpeed * Math.Min(dt, _constants.Limits.MaxFrameTime);
-            // Nothing gliding and no excess this frame's step does not take away (almost every frame): 0, what the lines below
-            // return. One test that is almost always true, so the frame runs on without waiting for the sums above.
             if (glide == 0 && excess <= step && excess >= -step) return 0;
             double g = glide - excess;
             g = g > step ? g - step : (g < -step ? g + step : 0);

@@ -83,10 +83,14 @@ namespace Kosmos.PseudoHaptic
 
         static bool Within(double x, double y, double z, double fx, double fy, double fz, double since, double lost, double maxSpeed)
         {
-            double dx = x - fx, dy = y - fy, dz = z - fz;
+            double dx = x - fx, dy = y - fy, dz = z - fz, d2 = dx * dx + dy * dy + dz * dz;
+            // Within the shortest window's reach is within every window's (the products are monotone): almost every pose,
+            // decided without the window.
+            double least = maxSpeed * SolverLimits.MinJumpWindow;
+            if (d2 <= least * least) return true;
             double window = Math.Max(SolverLimits.MinJumpWindow, Math.Min(since, SolverLimits.JumpWindow + lost));
             double reach = maxSpeed * window;
-            return dx * dx + dy * dy + dz * dz <= reach * reach;
+            return d2 <= reach * reach;
         }
     }
 }
