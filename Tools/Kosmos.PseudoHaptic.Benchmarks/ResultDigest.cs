@@ -10,14 +10,14 @@ namespace Kosmos.PseudoHaptic.Benchmarks;
 /// every line as it was: run it on the build before and after and compare. Input per seed: a hand lifting and lowering at
 /// random heights and speeds, rendered at 72, 90 or 120 Hz frames with 30, 60 or 90 Hz poses, 45 ms late, 0.5–3.5 mm
 /// jitter, and by seed one-pose glitches, losses of up to 2 s, a snap after one, low confidence on fast poses and spans of
-/// it, poses without timestamps; run at eight masses (0.02–8 kg) and four standard speeds. Cases: the four pipeline
+/// it, poses without timestamps; run at nine masses (1 g to 8 kg) and four standard speeds. Cases: the four pipeline
 /// profiles on the y solver and on the 3D solver (the hand carried sideways; every third seed with a second hand), every
 /// estimator of the accuracy page on the paper profile, the gain alone and with each other effect, and the paper-literal solver. The digests are
 /// of this machine's math library: compare builds on one machine.
 /// </summary>
 public static class ResultDigest
 {
-    static readonly double[] Masses = { 0.02, 0.045, 0.2, 0.5, 1.0, 1.5, 3.0, 8.0 };
+    static readonly double[] Masses = { 0.001, 0.01, 0.045, 0.2, 0.5, 1.0, 1.5, 3.0, 8.0 };
 
     public static void Run(int seeds, TextWriter output)
     {
