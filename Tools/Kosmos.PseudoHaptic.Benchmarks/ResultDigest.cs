@@ -23,7 +23,7 @@ public static class ResultDigest
     {
         var inputs = new TraceFrame[seeds][];
         for (int seed = 1; seed <= seeds; seed++) inputs[seed - 1] = Render(seed);
-        var all = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
+        using var all = IncrementalHash.CreateHash(HashAlgorithmName.SHA256);
         long values = 0;
         void Line(string name, Action<Action<double>> run)
         {
