@@ -138,12 +138,19 @@ namespace Kosmos.PseudoHaptic.Evaluation
             var k = new int[m];
             for (int i = 0; i < m; i++) { z[i] = (merged[i].Level - mean) / sd; n[i] = merged[i].Trials; k[i] = merged[i].Heavier; }
 
-            // Starts: the caller's (a bootstrap's original fit), with lapses the likeliest point of a grid, and the plain
-            // (0, 1); the highest converged maximum wins (with γ = λ = 0 there is only one).
+            // Starts: the caller's (a bootstrap's original fit); with lapses the likeliest point of a grid, the likeliest
+            // shallow curve and the likeliest peaks of a finer grid; and the plain (0, 1). The highest converged maximum
+            // wins (with γ = λ = 0 there is only one).
             var starts = new List<double[]>();
             if (startMu.HasValue && startSigma.HasValue && startSigma.Value > 0 && IsFinite(startMu.Value))
                 starts.Add(new[] { -(startMu.Value - mean) / startSigma.Value, sd / startSigma.Value });
-            if (lapse > 0) starts.Add(GridStart(z, n, k, lapse));
+            if (lapse > 0)
+            {
+                starts.Add(GridStart(z, n, k, lapse));
+                starts.Add(ShallowStart(z, n, k, lapse));
+                foreach (var peak in PeakStarts(z, n, k, lapse))
+                    if (!Contains(starts, peak)) starts.Add(peak); // the coarse grid's likeliest point is often one of the peaks
+            }
             starts.Add(new[] { 0.0, 1.0 });
             double a = 0, b = 1, best = double.NegativeInfinity, failed = double.NegativeInfinity;
             bool converged = false;
@@ -154,7 +161,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 int it;
                 if (!Maximize(z, n, k, lapse, ref sa, ref sb, out it, iterationCap)) { failed = Math.Max(failed, LogLik(z, n, k, lapse, sa, sb)); continue; }
                 double ll = LogLik(z, n, k, lapse, sa, sb);
-                if (!converged || ll > best) { a = sa; b = sb; best = ll; iterations = it; converged = true; }
+                // Likelier by more than the log-likelihood's rounding: two ascents that end on one maximum keep the first's.
+                if (!converged || ll > best + 1e-12 * Math.Abs(best)) { a = sa; b = sb; best = ll; iterations = it; converged = true; }
                 if (lapse == 0) break; // concave: the first maximum is the maximum
             }
             // With lapses the likelihood can be highest as σ → 0, at a step between two levels (Ψ = γ on one side of it,
@@ -193,6 +201,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         static bool IsFinite(double v) => !double.IsNaN(v) && !double.IsInfinity(v);
 
+        static bool Contains(List<double[]> starts, double[] start)
+        {
+            foreach (var s in starts) if (s[0] == start[0] && s[1] == start[1]) return true;
+            return false;
+        }
+
         /// <summary>The grid start's slopes |b|: σ from 2 to 1/32 of the levels' spread.</summary>
         static readonly double[] GridSlopes = { 0.5, 1, 2, 4, 8, 16, 32 };
 
@@ -217,6 +231,106 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
                     }
             }
+            return new[] { bestA, bestB };
+        }
+
+        /// <summary>The finer grid's slopes |b|: σ from 2 to 1/32 of the levels' spread in steps of √2 (the coarse grid's
+        /// <see cref="GridSlopes"/>, exactly, and one between each two).</summary>
+        static readonly double[] PeakSlopes = { 0.5, 0.5 * Math.Sqrt(2), 1, Math.Sqrt(2), 2, 2 * Math.Sqrt(2), 4, 4 * Math.Sqrt(2), 8, 8 * Math.Sqrt(2), 16, 16 * Math.Sqrt(2), 32 };
+
+        /// <summary>How many of the finer grid's peaks start an ascent.</summary>
+        internal const int PeakStartCount = 4;
+
+        /// <summary>
+        /// The <see cref="PeakStartCount"/> likeliest peaks of a finer grid (μ at each level and a quarter, half and three
+        /// quarters of the way to the next, b = ±<see cref="PeakSlopes"/>, the steepest only as a neighbour): points likelier
+        /// by <see cref="PeakMargin"/> than each neighbour one step away in μ, in slope or both, likeliest first (the first
+        /// of equals). Each peak is the top of a hill of the likelihood the grid saw, and its ascent climbs that hill: the
+        /// likeliest point of a grid can lie on the flank of a broad hill whose top is lower than a narrow one's (a steep
+        /// rise between two levels that a shallow curve also explains).
+        /// </summary>
+        internal static List<double[]> PeakStarts(double[] z, int[] n, int[] k, double lapse)
+        {
+            int centres = 4 * (z.Length - 1) + 1, slopes = PeakSlopes.Length;
+            var ll = new double[2, centres, slopes];
+            for (int s = 0; s < 2; s++)
+                for (int c = 0; c < centres; c++)
+                    for (int j = 0; j < slopes; j++)
+                    {
+                        double b = (s == 0 ? 1 : -1) * PeakSlopes[j];
+                        ll[s, c, j] = LogLik(z, n, k, lapse, -b * PeakCentre(z, c), b);
+                    }
+            var best = new double[PeakStartCount];
+            var found = new double[PeakStartCount][];
+            int count = 0;
+            for (int s = 0; s < 2; s++)
+                for (int c = 0; c < centres; c++)
+                    for (int j = 0; j < slopes - 1; j++) // a peak at the steepest slope is a step's hill (BestStepLogLik)
+                    {
+                        double v = ll[s, c, j];
+                        if (double.IsNegativeInfinity(v) || !IsPeak(ll, s, c, j)) continue;
+                        // Insert into the likeliest so far, after its equals.
+                        int at = count;
+                        while (at > 0 && v > best[at - 1]) at--;
+                        if (at >= PeakStartCount) continue;
+                        for (int i = Math.Min(count, PeakStartCount - 1); i > at; i--) { best[i] = best[i - 1]; found[i] = found[i - 1]; }
+                        double b = (s == 0 ? 1 : -1) * PeakSlopes[j];
+                        best[at] = v;
+                        found[at] = new[] { -b * PeakCentre(z, c), b };
+                        if (count < PeakStartCount) count++;
+                    }
+            var result = new List<double[]>(count);
+            for (int i = 0; i < count; i++) result.Add(found[i]);
+            return result;
+        }
+
+        /// <summary>The finer grid's centre c: level c/4, or a quarter, half or three quarters of the way to the next (the
+        /// halfway point computed as the coarse grid computes it, so that their common points are equal).</summary>
+        static double PeakCentre(double[] z, int c)
+        {
+            int i = c / 4, q = c % 4;
+            if (q == 0) return z[i];
+            if (q == 2) return 0.5 * (z[i] + z[i + 1]);
+            return z[i] + 0.25 * q * (z[i + 1] - z[i]);
+        }
+
+        /// <summary>How much likelier than each neighbour a peak is, at least: where a steep curve has saturated (Φ rounds to 0 or
+        /// 1 at every level but one) neighbours are equal to rounding, a step's plateau, not a hill (BestStepLogLik).</summary>
+        const double PeakMargin = 1e-9;
+
+        static bool IsPeak(double[,,] ll, int s, int c, int j)
+        {
+            double v = ll[s, c, j];
+            for (int dc = -1; dc <= 1; dc++)
+                for (int dj = -1; dj <= 1; dj++)
+                {
+                    int c2 = c + dc, j2 = j + dj;
+                    if ((dc == 0 && dj == 0) || c2 < 0 || c2 >= ll.GetLength(1) || j2 < 0 || j2 >= ll.GetLength(2)) continue;
+                    if (ll[s, c2, j2] >= v - PeakMargin) return false;
+                }
+            return true;
+        }
+
+        /// <summary>The values of η = a + b·z at the lowest and the highest level the shallow grid tries.</summary>
+        static readonly double[] ShallowEtas = { -4, -3, -2, -1.5, -1, -0.5, 0, 0.5, 1, 1.5, 2, 3, 4 };
+
+        /// <summary>
+        /// The likeliest (a, b) of a grid over what a curve does across the levels, η at the lowest and at the highest
+        /// (each from <see cref="ShallowEtas"/>, the two different; the first of equals): it holds the shallow curves centred
+        /// far outside the levels, which the grid of centres at the levels does not (answers that barely change across the
+        /// levels, a lapse on one of them).
+        /// </summary>
+        internal static double[] ShallowStart(double[] z, int[] n, int[] k, double lapse)
+        {
+            double lo = z[0], hi = z[z.Length - 1], bestA = 0, bestB = 1, best = double.NegativeInfinity;
+            foreach (double etaLo in ShallowEtas)
+                foreach (double etaHi in ShallowEtas)
+                {
+                    if (etaLo == etaHi) continue;
+                    double b = (etaHi - etaLo) / (hi - lo), a = etaLo - b * lo;
+                    double ll = LogLik(z, n, k, lapse, a, b);
+                    if (ll > best) { best = ll; bestA = a; bestB = b; }
+                }
             return new[] { bestA, bestB };
         }
 
@@ -303,15 +417,16 @@ namespace Kosmos.PseudoHaptic.Evaluation
             double ll = 0;
             for (int i = 0; i < z.Length; i++)
             {
-                double eta = a + b * z[i];
+                double lower, upper; // Φ(η) and its complement from one evaluation: the grids' starts evaluate this a thousand times
+                Normal.Both(a + b * z[i], out lower, out upper);
                 if (k[i] > 0)
                 {
-                    double p = lapse + (1 - 2 * lapse) * Normal.Cdf(eta);
+                    double p = lapse + (1 - 2 * lapse) * lower;
                     ll += k[i] * Math.Log(p);
                 }
                 if (n[i] - k[i] > 0)
                 {
-                    double q = lapse + (1 - 2 * lapse) * Normal.UpperTail(eta);
+                    double q = lapse + (1 - 2 * lapse) * upper;
                     ll += (n[i] - k[i]) * Math.Log(q);
                 }
             }
@@ -339,8 +454,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 for (int i = 0; i < z.Length; i++)
                 {
                     double eta = a + b * z[i];
-                    double p = lapse + c * Normal.Cdf(eta);
-                    double q = lapse + c * Normal.UpperTail(eta);
+                    double lower, upper;
+                    Normal.Both(eta, out lower, out upper);
+                    double p = lapse + c * lower;
+                    double q = lapse + c * upper;
                     double d1 = c * Normal.Pdf(eta);           // dp/dη
                     double d2 = -eta * d1;                      // d²p/dη²
                     double yes = k[i], no = n[i] - k[i];

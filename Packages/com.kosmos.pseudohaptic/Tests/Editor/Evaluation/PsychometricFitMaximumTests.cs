@@ -15,8 +15,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
     {
         static readonly double[] Levels = { 0.80, 0.85, 0.90, 0.95, 1.00, 1.05, 1.10, 1.15, 1.20 };
 
+        // The first heavier.Length levels.
         static StimulusLevel[] Data(int trials, params int[] heavier)
-            => Levels.Select((x, i) => new StimulusLevel(x, trials, heavier[i])).ToArray();
+            => Levels.Take(heavier.Length).Select((x, i) => new StimulusLevel(x, trials, heavier[i])).ToArray();
 
         // The levels standardized as the fit standardizes equal trials: z = (x − mean)/sd, sd the population one.
         static double[] Standardize(double[] levels, out double mean, out double sd)
@@ -62,6 +63,23 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                     new StimulusLevel(1.0, 100, 43), new StimulusLevel(1.1, 100, 83), new StimulusLevel(1.2, 100, 98), new StimulusLevel(1.3, 100, 100) },
                     0.0, 1.0137711191724664, 0.090764406617930104, -164.11923942490013, 0.28705661884630924, 1e-7)
                 .SetName("seven levels of a hundred");
+            // Four participants on whom the fit's single grid start was not enough (PsychometricFitStartsTests' seeds 4950,
+            // 6831, 2169 and 823, on these levels): the likeliest point of the grid lay on the flank of a lower hill.
+            // Six trials at eight levels, nearly all heavier: a shallow curve centred far below the levels (the ascents from
+            // the grid's likeliest point and (0, 1) ended at μ 0.73, σ 0.10, −18.69).
+            yield return new TestCaseData(Data(6, 5, 4, 6, 6, 6, 5, 5, 5), 0.04, -1.3038023666675285, 1.7134993300967359, -18.064723926178117, 6.8643398072358559, 1e-10)
+                .SetName("shallow, far below, lapse 0.04");
+            // 1 of 20 heavier at the lightest, then 14: a steep rise between the first two levels (the single grid start's
+            // ascent ended on a shallower one, −39.99).
+            yield return new TestCaseData(Data(20, 1, 14, 19, 17, 19, 20), 0.01, 0.83986637024232975, 0.026276429218284222, -39.653462025701066, 14.142159255462052, 1e-10)
+                .SetName("a steep rise, lapse 0.01");
+            // A jump between the fourth and the fifth level: steep, but a curve likelier than any step (it was called a step).
+            yield return new TestCaseData(Data(18, 2, 2, 2, 1, 15, 16, 17, 16, 18), 0.02, 0.98177631185646936, 0.017906530834926941, -57.322260025339988, 20.186280107046102, 1e-10)
+                .SetName("a jump, lapse 0.02");
+            // Few heavier anywhere: a shallow rise centred above the levels, likelier than any fall (−32.44; it was called
+            // decreasing).
+            yield return new TestCaseData(Data(9, 2, 0, 2, 0, 2, 3, 2, 1), 0.1, 1.7964617651608108, 0.58385183515500626, -32.292363387759451, 8.7096476888865723, 1e-10)
+                .SetName("few heavier, lapse 0.1");
         }
 
         [TestCaseSource(nameof(Maxima))]
@@ -70,7 +88,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             var fit = PsychometricFit.Fit(data, lapse);
             Assert.That(fit.Estimable, Is.True, fit.Reason);
             Assert.That(fit.Reason, Is.EqualTo("yes"));
-            Assert.That(fit.Mu, Is.EqualTo(mu).Within(relative * mu), "μ");
+            Assert.That(fit.Mu, Is.EqualTo(mu).Within(relative * Math.Abs(mu)), "μ");
             Assert.That(fit.Sigma, Is.EqualTo(sigma).Within(relative * sigma), "σ");
             Assert.That(fit.LogLikelihood, Is.EqualTo(logLik).Within(1e-12 * -logLik), "log-likelihood");
             Assert.That(fit.Deviance, Is.EqualTo(deviance).Within(Math.Max(1e-10, relative) * deviance), "deviance");
