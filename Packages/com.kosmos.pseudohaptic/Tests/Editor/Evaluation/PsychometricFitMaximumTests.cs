@@ -20,7 +20,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             => Levels.Take(heavier.Length).Select((x, i) => new StimulusLevel(x, trials, heavier[i])).ToArray();
 
         // The levels standardized as the fit standardizes equal trials: z = (x − mean)/sd, sd the population one.
-        static double[] Standardize(double[] levels, out double mean, out double sd)
+        internal static double[] Standardize(double[] levels, out double mean, out double sd)
         {
             double m = levels.Average();
             mean = m;

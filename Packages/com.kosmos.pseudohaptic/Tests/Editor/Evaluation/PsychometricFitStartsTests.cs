@@ -28,15 +28,6 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             return ll;
         }
 
-        static double[] Standardize(double[] levels, out double mean, out double sd)
-        {
-            double m = levels.Average();
-            mean = m;
-            sd = Math.Sqrt(levels.Sum(x => (x - m) * (x - m)) / levels.Length);
-            double s = sd;
-            return levels.Select(x => (x - m) / s).ToArray();
-        }
-
         // The peaks of the finer grid (μ at each level and a quarter, half and three quarters of the way to the next; σ from
         // 2 to 1/32 of the levels' spread in steps of √2, the steepest only as a neighbour; rising or falling): the four
         // likeliest points likelier by 1e-9 than every neighbour one step away in μ, σ or both, likeliest first.
@@ -45,7 +36,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             var n = Uneven.Select(x => 10).ToArray();
             double mean, sd;
-            var z = Standardize(Uneven, out mean, out sd);
+            var z = PsychometricFitMaximumTests.Standardize(Uneven, out mean, out sd);
             var centres = new List<double>();
             for (int i = 0; i < Uneven.Length; i++)
                 for (int q = 0; q < (i < Uneven.Length - 1 ? 4 : 1); q++)
@@ -95,7 +86,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             double[] etas = { -4, -3, -2, -1.5, -1, -0.5, 0, 0.5, 1, 1.5, 2, 3, 4 };
             var n = Uneven.Select(x => 6).ToArray();
             double mean, sd;
-            var z = Standardize(Uneven, out mean, out sd);
+            var z = PsychometricFitMaximumTests.Standardize(Uneven, out mean, out sd);
             foreach (var (k, lapse) in new[] { (new[] { 5, 4, 6, 6, 6, 5 }, 0.04), (new[] { 2, 0, 2, 1, 2, 3 }, 0.1), (new[] { 1, 3, 4, 5, 5, 6 }, 0.02) })
             {
                 double best = double.NegativeInfinity, bestLo = 0, bestHi = 0;
