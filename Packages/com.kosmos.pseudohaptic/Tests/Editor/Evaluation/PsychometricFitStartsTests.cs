@@ -111,7 +111,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             }
         }
 
-        // A simulated participant (the scratch search's generator): 4–9 evenly spaced levels, 3–32 trials each, a true
+        // A simulated participant: 4–9 evenly spaced levels, 3–32 trials each, a true
         // cumulative Gaussian with a lapse of 0 or up to 0.2, fitted under a lapse of 0.01 to 0.2.
         static StimulusLevel[] Participant(int seed, out double lapse, out double range, out double start)
         {
