@@ -329,7 +329,8 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             double mean, sd;
             var z = Standardize(levels, out mean, out sd);
             var centres = levels.Concat(levels.Skip(1).Select((x, i) => (x + levels[i]) / 2)).ToArray();
-            var cases = new[] { (new[] { 1, 3, 4, 9, 8, 10 }, 0.05, 1), (new[] { 9, 10, 6, 2, 3, 1 }, 0.1, -1), (new[] { 1, 9, 2, 8, 3, 9 }, 0.2, 1) };
+            var cases = new[] { (new[] { 1, 3, 4, 9, 8, 10 }, 0.05, 1), (new[] { 9, 10, 6, 2, 3, 1 }, 0.1, -1), (new[] { 1, 9, 2, 8, 3, 9 }, 0.2, 1),
+                (new[] { 0, 0, 1, 9, 10, 10 }, 0.05, 1) }; // the last a steep rise: its likeliest point has σ well below the spread
             foreach (var (k, lapse, direction) in cases)
             {
                 double best = double.NegativeInfinity, bestMu = double.NaN, bestSigma = double.NaN, bestSign = 0;

@@ -87,7 +87,11 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             var n = Uneven.Select(x => 6).ToArray();
             double mean, sd;
             var z = PsychometricFitMaximumTests.Standardize(Uneven, out mean, out sd);
-            foreach (var (k, lapse) in new[] { (new[] { 5, 4, 6, 6, 6, 5 }, 0.04), (new[] { 2, 0, 2, 1, 2, 3 }, 0.1), (new[] { 1, 3, 4, 5, 5, 6 }, 0.02) })
+            // Nearly all heavier, few heavier, a rise, a steeper rise, a fall, and the same answers everywhere (whose likeliest
+            // line would be flat: the two ends must differ).
+            var cases = new[] { (new[] { 5, 4, 6, 6, 6, 5 }, 0.04), (new[] { 2, 0, 2, 1, 2, 3 }, 0.1), (new[] { 1, 3, 4, 5, 5, 6 }, 0.02),
+                (new[] { 0, 0, 1, 3, 6, 6 }, 0.02), (new[] { 6, 6, 5, 3, 1, 0 }, 0.02), (new[] { 3, 3, 3, 3, 3, 3 }, 0.1), (new[] { 1, 1, 2, 2, 3, 3 }, 0.05) };
+            foreach (var (k, lapse) in cases)
             {
                 double best = double.NegativeInfinity, bestLo = 0, bestHi = 0;
                 foreach (double lo in etas)
@@ -108,6 +112,36 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 string data = "lapse " + lapse + ": " + string.Join(", ", k);
                 Assert.That(start[0] + start[1] * z[0], Is.EqualTo(bestLo).Within(1e-12), "η at the lowest level, " + data);
                 Assert.That(start[0] + start[1] * z[z.Length - 1], Is.EqualTo(bestHi).Within(1e-12), "η at the highest level, " + data);
+            }
+        }
+
+        // Ascents that end on one maximum keep the first's: a start at the maximum itself (a bootstrap's original fit, the first
+        // start) gives the fit its own ascent's point, bit for bit, though the later starts climb to the same maximum.
+        [Test]
+        public void AscentsEndingOnOneMaximumKeepTheFirst()
+        {
+            foreach (var (k, lapse) in new[] { (new[] { 0, 0, 2, 7, 10, 7, 10, 8, 1 }, 0.1), (new[] { 0, 1, 1, 3, 5, 6, 8, 10, 9 }, 0.04), (new[] { 3, 2, 1, 3, 6, 6, 8, 9, 7 }, 0.2) })
+            {
+                double[] levels = { 0.80, 0.85, 0.90, 0.95, 1.00, 1.05, 1.10, 1.15, 1.20 };
+                var data = levels.Select((x, i) => new StimulusLevel(x, 10, k[i])).ToArray();
+                var plain = PsychometricFit.Fit(data, lapse);
+                double mean, sd;
+                var z = PsychometricFitMaximumTests.Standardize(levels, out mean, out sd);
+                int matched = 0;
+                // Starts a little off the maximum: each ascent ends on it, at a point of its own to the last digits.
+                foreach (double off in new[] { 0.999, 1.001, 0.99, 1.01 })
+                {
+                    double mu = plain.Mu * off, sigma = plain.Sigma / off;
+                    double a = -(mu - mean) / sigma, b = sd / sigma;
+                    int iterations;
+                    Assert.That(PsychometricFit.Maximize(z, levels.Select(x => 10).ToArray(), k, lapse, ref a, ref b, out iterations), Is.True);
+                    var fit = PsychometricFit.Fit(data, lapse, mu, sigma);
+                    string where = "lapse " + lapse + ", start ×" + off + ": " + string.Join(", ", k);
+                    Assert.That(fit.Mu, Is.EqualTo(mean - sd * a / b), "μ, " + where);
+                    Assert.That(fit.Sigma, Is.EqualTo(sd / b), "σ, " + where);
+                    if (fit.Mu != plain.Mu || fit.Sigma != plain.Sigma) matched++;
+                }
+                Assert.That(matched, Is.GreaterThan(0), "no start ended at a point of its own: the test would see nothing, " + string.Join(", ", k));
             }
         }
 
