@@ -34,9 +34,9 @@ SETS = {
     # Five trials at four levels, 4, 5, 3 and 4 heavier, under a lapse of 0.1: a shallow fall, likelier than any rise
     # (none has a maximum: the likeliest is flat, Ψ = 0.8 everywhere, −10.008) or step, which only a start that falls finds.
     "shallow fall, lapse 0.1": (LEVELS[:4], [5] * 4, [4, 5, 3, 4], 0.1, [-1]),
-    # Four data sets on which a single grid start was not enough (seeds 4950, 6831, 2169 and 823 of the scratch search
-    # in quality.md, eighteenth session, moved onto these levels): the likeliest point of the grid lay on the flank of a
-    # hill lower than the highest one.
+    # Four data sets on which a single grid start was not enough (seeds 4950, 6831, 2169 and 823 of the search in
+    # PsychometricFitStartsTests, evaluation.md 8.3, moved onto these levels): the likeliest point of the grid lay on the
+    # flank of a hill lower than the highest one.
     # Six trials at eight levels, nearly all heavier, under a lapse of 0.04: a shallow curve centred far below the levels.
     "shallow, far below, lapse 0.04": (LEVELS[:8], [6] * 8, [5, 4, 6, 6, 6, 5, 5, 5], 0.04),
     # Twenty trials at six levels, 1 of 20 heavier at the lightest, then 14: a steep rise between the first two levels.
