@@ -19,6 +19,18 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         static StimulusLevel[] Data(int trials, params int[] heavier)
             => Levels.Take(heavier.Length).Select((x, i) => new StimulusLevel(x, trials, heavier[i])).ToArray();
 
+        // ℓ of Ψ(x) = γ + (1 − 2γ)·Φ(sign·(x − μ)/σ) in the levels' own unit, independently of the fit's standardized one.
+        internal static double LogLik(double[] levels, int[] n, int[] k, double lapse, double mu, double sigma, int sign)
+        {
+            double ll = 0;
+            for (int i = 0; i < levels.Length; i++)
+            {
+                double psi = lapse + (1 - 2 * lapse) * Normal.Cdf(sign * (levels[i] - mu) / sigma);
+                ll += k[i] * Math.Log(psi) + (n[i] - k[i]) * Math.Log(1 - psi);
+            }
+            return ll;
+        }
+
         // The levels standardized as the fit standardizes equal trials: z = (x − mean)/sd, sd the population one.
         internal static double[] Standardize(double[] levels, out double mean, out double sd)
         {
@@ -338,12 +350,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                     foreach (int sign in new[] { 1, -1 })
                         for (double sigma = 2 * sd; sigma >= sd / 32; sigma /= 2)
                         {
-                            double ll = 0;
-                            for (int i = 0; i < levels.Length; i++)
-                            {
-                                double psi = lapse + (1 - 2 * lapse) * Normal.Cdf(sign * (levels[i] - mu) / sigma);
-                                ll += k[i] * Math.Log(psi) + (n[i] - k[i]) * Math.Log(1 - psi);
-                            }
+                            double ll = LogLik(levels, n, k, lapse, mu, sigma, sign);
                             if (ll > best) { best = ll; bestMu = mu; bestSigma = sigma; bestSign = sign; }
                         }
                 var start = PsychometricFit.GridStart(z, n, k, lapse);

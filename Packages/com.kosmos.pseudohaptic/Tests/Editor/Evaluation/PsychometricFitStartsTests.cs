@@ -17,17 +17,6 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         // Uneven levels, so that no two points of a grid mirror each other.
         static readonly double[] Uneven = { 0.70, 0.80, 0.85, 0.95, 1.00, 1.20 };
 
-        static double LogLik(double[] levels, int[] n, int[] k, double lapse, double mu, double sigma, int sign)
-        {
-            double ll = 0;
-            for (int i = 0; i < levels.Length; i++)
-            {
-                double psi = lapse + (1 - 2 * lapse) * Normal.Cdf(sign * (levels[i] - mu) / sigma);
-                ll += k[i] * Math.Log(psi) + (n[i] - k[i]) * Math.Log(1 - psi);
-            }
-            return ll;
-        }
-
         // The peaks of the finer grid (μ at each level and a quarter, half and three quarters of the way to the next; σ from
         // 2 to 1/32 of the levels' spread in steps of √2, the steepest only as a neighbour; rising or falling): the four
         // likeliest points likelier by 1e-9 than every neighbour one step away in μ, σ or both, likeliest first.
@@ -51,7 +40,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                     {
                         var grid = new double[centres.Count, sigmas.Length];
                         for (int c = 0; c < centres.Count; c++)
-                            for (int j = 0; j < sigmas.Length; j++) grid[c, j] = LogLik(Uneven, n, k, lapse, centres[c], sigmas[j], sign);
+                            for (int j = 0; j < sigmas.Length; j++) grid[c, j] = PsychometricFitMaximumTests.LogLik(Uneven, n, k, lapse, centres[c], sigmas[j], sign);
                         for (int c = 0; c < centres.Count; c++)
                             for (int j = 0; j < sigmas.Length - 1; j++)
                             {
