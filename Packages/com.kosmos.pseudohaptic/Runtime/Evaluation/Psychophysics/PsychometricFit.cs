@@ -146,9 +146,10 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 starts.Add(new[] { -(startMu.Value - mean) / startSigma.Value, sd / startSigma.Value });
             if (lapse > 0)
             {
-                starts.Add(GridStart(z, n, k, lapse));
+                var grid = LikelihoodGrid(z, n, k, lapse);
+                starts.Add(GridStart(z, grid));
                 starts.Add(ShallowStart(z, n, k, lapse));
-                foreach (var peak in PeakStarts(z, n, k, lapse))
+                foreach (var peak in PeakStarts(z, grid))
                     if (!Contains(starts, peak)) starts.Add(peak); // the coarse grid's likeliest point is often one of the peaks
             }
             starts.Add(new[] { 0.0, 1.0 });
@@ -207,49 +208,39 @@ namespace Kosmos.PseudoHaptic.Evaluation
             return false;
         }
 
-        /// <summary>The grid start's slopes |b|: σ from 2 to 1/32 of the levels' spread.</summary>
-        static readonly double[] GridSlopes = { 0.5, 1, 2, 4, 8, 16, 32 };
-
         /// <summary>
-        /// The likeliest (a, b) of a grid: μ at each level and halfway between neighbours, b = ±<see cref="GridSlopes"/>
-        /// (rising, then falling; the first of equals).
+        /// The likeliest (a, b) of a coarse grid: μ at each level and halfway between neighbours, b = ±(0.5, 1, 2, … 32), σ
+        /// from 2 to 1/32 of the levels' spread (rising, then falling; the first of equals). Its points are the finer grid's
+        /// (<paramref name="grid"/>, from <see cref="LikelihoodGrid"/>) at every other centre and every other slope, read
+        /// from it rather than computed again.
         /// With lapses the likelihood can have several maxima (an outlying level that the lapse explains, a steep rise a
         /// shallow curve smooths over, a fall against a rise in answers that barely change), and the ascent from (0, 1)
         /// can end at a lesser one.
         /// </summary>
-        internal static double[] GridStart(double[] z, int[] n, int[] k, double lapse)
+        internal static double[] GridStart(double[] z, double[,,] grid)
         {
             double bestA = 0, bestB = 1, best = double.NegativeInfinity;
             for (int c = 0; c < 2 * z.Length - 1; c++)
-            {
-                double centre = c % 2 == 0 ? z[c / 2] : 0.5 * (z[c / 2] + z[c / 2 + 1]);
-                for (int sign = 1; sign >= -1; sign -= 2)
-                    foreach (double slope in GridSlopes)
+                for (int s = 0; s < 2; s++)
+                    for (int j = 0; j < PeakSlopes.Length; j += 2)
                     {
-                        double b = sign * slope;
-                        double ll = LogLik(z, n, k, lapse, -b * centre, b);
-                        if (ll > best) { best = ll; bestA = -b * centre; bestB = b; }
+                        double ll = grid[s, 2 * c, j];
+                        if (ll > best) { best = ll; bestB = (s == 0 ? 1 : -1) * PeakSlopes[j]; bestA = -bestB * PeakCentre(z, 2 * c); }
                     }
-            }
             return new[] { bestA, bestB };
         }
 
-        /// <summary>The finer grid's slopes |b|: σ from 2 to 1/32 of the levels' spread in steps of √2 (the coarse grid's
-        /// <see cref="GridSlopes"/>, exactly, and one between each two).</summary>
+        /// <summary>The finer grid's slopes |b|: σ from 2 to 1/32 of the levels' spread in steps of √2 (every other one a
+        /// power of two: the coarse grid's).</summary>
         static readonly double[] PeakSlopes = { 0.5, 0.5 * Math.Sqrt(2), 1, Math.Sqrt(2), 2, 2 * Math.Sqrt(2), 4, 4 * Math.Sqrt(2), 8, 8 * Math.Sqrt(2), 16, 16 * Math.Sqrt(2), 32 };
 
         /// <summary>How many of the finer grid's peaks start an ascent.</summary>
         internal const int PeakStartCount = 4;
 
-        /// <summary>
-        /// The <see cref="PeakStartCount"/> likeliest peaks of a finer grid (μ at each level and a quarter, half and three
-        /// quarters of the way to the next, b = ±<see cref="PeakSlopes"/>, the steepest only as a neighbour): points likelier
-        /// by <see cref="PeakMargin"/> than each neighbour one step away in μ, in slope or both, likeliest first (the first
-        /// of equals). Each peak is the top of a hill of the likelihood the grid saw, and its ascent climbs that hill: the
-        /// likeliest point of a grid can lie on the flank of a broad hill whose top is lower than a narrow one's (a steep
-        /// rise between two levels that a shallow curve also explains).
-        /// </summary>
-        internal static List<double[]> PeakStarts(double[] z, int[] n, int[] k, double lapse)
+        /// <summary>The log-likelihood on the finer grid, [rising 0 or falling 1, centre, slope]: μ at each level and a
+        /// quarter, half and three quarters of the way to the next (<see cref="PeakCentre"/>), b = ±<see cref="PeakSlopes"/>.
+        /// Computed once for both the coarse grid's start and the peaks.</summary>
+        internal static double[,,] LikelihoodGrid(double[] z, int[] n, int[] k, double lapse)
         {
             int centres = 4 * (z.Length - 1) + 1, slopes = PeakSlopes.Length;
             var ll = new double[2, centres, slopes];
@@ -260,6 +251,20 @@ namespace Kosmos.PseudoHaptic.Evaluation
                         double b = (s == 0 ? 1 : -1) * PeakSlopes[j];
                         ll[s, c, j] = LogLik(z, n, k, lapse, -b * PeakCentre(z, c), b);
                     }
+            return ll;
+        }
+
+        /// <summary>
+        /// The <see cref="PeakStartCount"/> likeliest peaks of the finer grid (<paramref name="ll"/>, from
+        /// <see cref="LikelihoodGrid"/>; the steepest slope only as a neighbour): points likelier
+        /// by <see cref="PeakMargin"/> than each neighbour one step away in μ, in slope or both, likeliest first (the first
+        /// of equals). Each peak is the top of a hill of the likelihood the grid saw, and its ascent climbs that hill: the
+        /// likeliest point of a grid can lie on the flank of a broad hill whose top is lower than a narrow one's (a steep
+        /// rise between two levels that a shallow curve also explains).
+        /// </summary>
+        internal static List<double[]> PeakStarts(double[] z, double[,,] ll)
+        {
+            int centres = ll.GetLength(1), slopes = ll.GetLength(2);
             var best = new double[PeakStartCount];
             var found = new double[PeakStartCount][];
             int count = 0;

@@ -353,7 +353,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                             double ll = LogLik(levels, n, k, lapse, mu, sigma, sign);
                             if (ll > best) { best = ll; bestMu = mu; bestSigma = sigma; bestSign = sign; }
                         }
-                var start = PsychometricFit.GridStart(z, n, k, lapse);
+                var start = PsychometricFit.GridStart(z, PsychometricFit.LikelihoodGrid(z, n, k, lapse));
                 string data = string.Join(", ", k);
                 Assert.That(Math.Sign(start[1]), Is.EqualTo(bestSign).And.EqualTo(direction), data);
                 Assert.That(mean - sd * start[0] / start[1], Is.EqualTo(bestMu).Within(1e-12), "μ, " + data);

@@ -55,7 +55,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                             }
                     }
                     var expected = peaks.OrderByDescending(p => p.Ll).Take(PsychometricFit.PeakStartCount).ToList();
-                    var starts = PsychometricFit.PeakStarts(z, n, k, lapse);
+                    var starts = PsychometricFit.PeakStarts(z, PsychometricFit.LikelihoodGrid(z, n, k, lapse));
                     string data = "lapse " + lapse + ": " + string.Join(", ", k);
                     Assert.That(starts.Count, Is.EqualTo(expected.Count), data);
                     for (int i = 0; i < starts.Count; i++)
