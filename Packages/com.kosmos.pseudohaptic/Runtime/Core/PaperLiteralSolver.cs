@@ -55,11 +55,16 @@ namespace Kosmos.PseudoHaptic
             ObjectY = Math.Max(objectY, Floor);
         }
 
+        /// <summary>A frame time shorter than this, s, is not a frame: Δy / dt over it would be absurd (a new pose under a
+        /// frame of a nanosecond reads as 10⁸ m/s), so nothing happens and the next frame measures the hand's move.</summary>
+        public const double ShortestFrame = 1e-4;
+
         /// <summary>One frame: the tracked hand height (not finite, beyond ±10⁵ m or untracked: no speed this frame) and
-        /// the frame time (not positive or not finite: nothing happens).</summary>
+        /// the frame time (shorter than <see cref="ShortestFrame"/> or not finite: nothing happens). The height returned is always finite and within
+        /// ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
         public double Step(double handY, bool tracked, double dt)
         {
-            if (!(dt > 0) || double.IsInfinity(dt)) return ObjectY;
+            if (!(dt >= ShortestFrame) || double.IsInfinity(dt)) return ObjectY;
             _clock += dt;
             double speed = 0;
             if (tracked && HandSample.IsUsableHeight(handY))
@@ -88,7 +93,9 @@ namespace Kosmos.PseudoHaptic
                 ? (vVirtual + vReal * vExperiment / vExperimentStandard) / 2        // Eq. 6
                 : vReal * Math.Pow((standardWeight / weight + vExperiment / vExperimentStandard) / 2, _cueStrength);
             double y = ObjectY + vFinal * dt;
-            if (double.IsFinite(y)) ObjectY = Math.Max(y, Floor);                  // y ≥ 0
+            // y ≥ 0; and only a height a pose could have (finite, within ±10⁵ m, as the pipeline keeps it): hands that jump
+            // tens of kilometres make v_final absurd, and the object stays where it is instead.
+            if (Math.Abs(y) <= WeightSolver.MaxCoordinate) ObjectY = Math.Max(y, Floor);
             return ObjectY;
         }
     }

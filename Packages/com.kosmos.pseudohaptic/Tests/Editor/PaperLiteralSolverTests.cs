@@ -208,6 +208,41 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(solver.Step(1.0, true, Dt), Is.EqualTo(1.0).Within(Exact));
         }
 
+        /// <summary>A frame shorter than 0.1 ms is not a frame: under a new pose its Δy / dt is absurd (0.45 m in 1e-9 s), and
+        /// the window would keep that speed for a second and throw the object hundreds of kilometres (545,955 m, found by
+        /// FsCheck: SolverProperties.GarbageNeverReachesTheObject in Tests/Kosmos.PseudoHaptic.Properties.Tests). Nothing
+        /// happens on it, and the next frame measures the move: the hold goes on bit for bit as if it had not come.</summary>
+        [TestCase(0.01, 1e-9)]
+        [TestCase(2.0, 1e-9)]
+        [TestCase(2.0, 0.99e-4)]
+        public void AFrameShorterThanATenthOfAMillisecondIsNotAFrame(double massKg, double instant)
+        {
+            const double frame = 1.0 / 90;
+            var with = new PaperLiteralSolver(massKg);
+            var without = new PaperLiteralSolver(massKg);
+            with.BeginHold(1.0, 1.0);
+            without.BeginHold(1.0, 1.0);
+            Assert.That(with.Step(1.0, true, frame), Is.EqualTo(without.Step(1.0, true, frame)));
+            Assert.That(with.Step(1.45, true, instant), Is.EqualTo(1.0), "the instant moves nothing");
+            for (int i = 0; i < 200; i++)
+                Assert.That(with.Step(1.45, true, frame), Is.EqualTo(without.Step(1.45, true, frame)), "frame " + i);
+            Assert.That(with.ObjectY, Is.GreaterThan(1.1), "the move was measured, by the frame after the instant");
+        }
+
+        /// <summary>A hand that jumps a hundred kilometres and back (tracked, each height usable) under a light object (the
+        /// literal gain has no cap: 10 g leads the hand 2.7 times) makes v_final absurd: only a height a pose could have is
+        /// taken (within ±10⁵ m, as the pipeline keeps it), so the object never leaves it.</summary>
+        [Test]
+        public void AnAbsurdSpeedNeverThrowsTheObjectBeyondAPosesReach()
+        {
+            var solver = new PaperLiteralSolver(0.01);
+            solver.BeginHold(1.0, 1.0);
+            double[] hands = { 1.0, -99999.0, 99999.0, -99999.0, 1.0 };
+            foreach (double dt in new[] { 1.0 / 90, 3600.0 })
+                for (int i = 0; i < 400; i++)
+                    Assert.That(Math.Abs(solver.Step(hands[i % hands.Length], true, dt)), Is.LessThanOrEqualTo(WeightSolver.MaxCoordinate), "frame " + i + ", dt " + dt);
+        }
+
         [TestCase(0.0)]
         [TestCase(-1.0)]
         [TestCase(double.NaN)]
