@@ -103,6 +103,11 @@ namespace Kosmos.PseudoHaptic
         /// the end of a lift does not keep the rise going.</summary>
         public const double TopStep = 0.002;
 
+        /// <summary>A rise that pauses before it has climbed this far, m, was a hand at rest a little above the rest band, not a
+        /// lift: its pace does not settle, and the next rise starts where it paused (a creep of a centimetre and a pause would
+        /// otherwise give a lift of half a metre after it the creep's pace, the heaviest gain).</summary>
+        public const double MinPacedRise = 0.03;
+
         /// <summary>Steady poses further apart than this, s, had a gap between them (a loss, and the settling after it). Not a
         /// whole number of frames at 30, 60, 72, 90 or 120 Hz, so no common frame clock sits on the boundary.</summary>
         public const double GapTime = 0.11;
@@ -127,8 +132,19 @@ namespace Kosmos.PseudoHaptic
             if (state.PaceSettled) return false;
             if (lift < state.RiseTop + TopStep)
             {
-                if (time - state.RiseTopTime > PauseTime) state.PaceSettled = true;
-                return false;
+                if (!(time - state.RiseTopTime > PauseTime)) return false;
+                if (state.RiseTop - state.RiseStartLift >= MinPacedRise)
+                {
+                    state.PaceSettled = true;
+                    return false;
+                }
+                // Paused before it rose MinPacedRise: not a lift but a hand at rest a little above the rest band (a creep, a
+                // hand resting where jitter no longer reaches the band). The next rise starts from here, as from the base.
+                state.RiseStartLift = lift;
+                state.RiseStartTime = time;
+                if (state.Pace == 0) return false;
+                state.Pace = 0;
+                return true;
             }
             if (time - seenTime > GapTime && lift > seenLift)
             {
