@@ -1,3 +1,4 @@
+using FsCheck.Fluent;
 using NUnit.Framework;
 
 namespace Kosmos.PseudoHaptic.Properties.Tests;
@@ -6,6 +7,37 @@ namespace Kosmos.PseudoHaptic.Properties.Tests;
 [TestFixture]
 public class SolverProperties
 {
+    /// <summary>
+    /// Issue 22's rule 1 (P12, ALGORITHM.md §2) on its own family of holds, generated: one lift of 0.15–0.6 m in 0.4–2 s from
+    /// rest, sometimes lowered again, clean and with one artifact more (a one-pose glitch of 2–20 cm at rest or in motion, a
+    /// loss of up to 1 s, a low-confidence burst of up to 0.6 s, a loss and a 2–8 cm snap), under every named profile the y
+    /// solver runs, at the standard weight and 0.5–5 kg: within 1 mm (the standard weight) or 10 mm 0.5 s after the artifact
+    /// and at the end. TrackingArtifactTests checks the same over 250 fixed seeds; here FsCheck draws the lift, the artifact
+    /// and the headset anew from its seed and shrinks what fails.
+    /// </summary>
+    [Test]
+    public void AnArtifactLeavesNothingOnALift() => Checks.Hold(ArtifactCase.OneLift(), LeavesNothing, 300);
+
+    /// <summary>
+    /// The same rule over paths of several moves (ArtifactCase.AnyPath: one to five moves anywhere from 0.5 to 1.6 m, with
+    /// pauses). A search, not a test of the rule as stated: over such paths it finds cases beyond 10 mm, each listed with its
+    /// cause in ALGORITHM.md (§2, "Beyond the rule's family") and quality.md ("Generated properties"). Run it with a seed and
+    /// more cases to see one, shrunk:
+    /// PSEUDOHAPTIC_PROPERTY_SEED=2 PSEUDOHAPTIC_PROPERTY_SCALE=10 dotnet test Tests/Kosmos.PseudoHaptic.Properties.Tests --filter Name~OnPathsOfSeveralMoves
+    /// </summary>
+    [Test, Explicit("a search: over paths of several moves the rule has known exceptions (ALGORITHM.md §2)")]
+    public void SearchAnArtifactLeavesNothingOnPathsOfSeveralMoves() => Checks.Hold(ArtifactCase.AnyPath(), LeavesNothing, 300);
+
+    /// <summary>Clean and with the artifact, the object is within the rule's bound 0.5 s after the artifact and at the end.
+    /// An artifact that hides a new lowest point of the hand is left out: the base is the lowest point the hold saw, and
+    /// one no usable pose showed cannot be remembered.</summary>
+    static void LeavesNothing(ArtifactCase c)
+    {
+        var path = c.Path(out double at, out double artifactEnd);
+        if (ArtifactCase.HidesALowestPoint(path, at, artifactEnd)) { Prop.Discard<bool>(); return; }
+        Expect.AtMost(c.Difference(path, at, artifactEnd, out double bound), bound, "clean and with the artifact, 0.5 s after it or at the end, m");
+    }
+
     /// <summary>
     /// P8 on garbage (ALGORITHM.md §3: bad frame data is absorbed quietly): whatever the frames hold, <c>Step</c> never
     /// throws and every height it returns is finite and within ±10⁵ m (a float transform holds it), on every profile the
