@@ -60,8 +60,8 @@ namespace Kosmos.PseudoHaptic
         public const double ShortestFrame = 1e-4;
 
         /// <summary>One frame: the tracked hand height (not finite, beyond ±10⁵ m or untracked: no speed this frame) and
-        /// the frame time (shorter than <see cref="ShortestFrame"/> or not finite: nothing happens). The height returned is always finite and within
-        /// ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
+        /// the frame time (shorter than <see cref="ShortestFrame"/> or not finite: nothing happens). The height returned is
+        /// always finite and within ±<see cref="WeightSolver.MaxCoordinate"/>.</summary>
         public double Step(double handY, bool tracked, double dt)
         {
             if (!(dt >= ShortestFrame) || double.IsInfinity(dt)) return ObjectY;
