@@ -57,8 +57,8 @@ public sealed class ArtifactCase
 
     /// <summary>
     /// Whether the artifact hides a new lowest point of the hand: the path goes lower while the artifact lasts (from a
-    /// latency before it to a settle time and a pose after it) than anywhere before it, and lower than anywhere in the
-    /// 0.3 s after. The hold remembers the lowest point it saw (the lift's base, ALGORITHM.md §4); one that no usable pose
+    /// latency, 45 ms, before it to 0.15 s after it, when the poses after it reach what the hold remembers) than anywhere
+    /// before it, and lower than anywhere in the 0.3 s after. The hold remembers the lowest point it saw (the lift's base, ALGORITHM.md §4); one that no usable pose
     /// showed cannot be remembered, and the rule does not ask it to be.
     /// </summary>
     public static bool HidesALowestPoint(HandPath path, double from, double to)
