@@ -69,7 +69,7 @@ namespace Kosmos.PseudoHaptic.Tests
         /// loss are off, each shown 45 ms late: on screen until about 0.16 s after the first pose back). The default settle
         /// time keeps the snap out of the steady hand, so the base, which follows the steady hand down, stays, and the object
         /// ends where the run without the blink ends (within 1 mm). At the former 0.11 s two of the snap's poses reached
-        /// it, and every one of these holds ended 8 to 47 mm low (found by FsCheck: ArtifactCensus,
+        /// it, and every one of these holds ended 7 to 47 mm low (found by FsCheck: ArtifactCensus,
         /// Tests/Kosmos.PseudoHaptic.Properties.Tests).
         /// </summary>
         [Test]
