@@ -139,11 +139,10 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         /// <summary>A hand that creeps up and pauses before its rise's top is 3 cm above where it left the 5 mm band is at rest
-        /// a little above the band, not lifting: the lift after it
-        /// reads its own pace, that of the same lift begun from the band (within 5 %), not the creep's (a creep of 1.2 cm at
-        /// 2 cm/s settled the pace at 2 cm/s, the heaviest gain, for a 0.4 m lift at 0.5 m/s: found by FsCheck,
-        /// SolverProperties.AnArtifactLeavesNothingOnAnyPath). A creep to 4 cm (its top 3.3 cm above the band's edge) settles
-        /// as any lift does.</summary>
+        /// a little above the band, not lifting: the lift after it reads its own pace, that of the same lift begun from the
+        /// band (within 5 %), not the creep's (a creep of 1.2 cm at 2 cm/s settled the pace at 2 cm/s, the heaviest gain, for
+        /// a 0.4 m lift at 0.5 m/s: found by FsCheck, SolverProperties.SearchAnArtifactLeavesNothingOnPathsOfSeveralMoves).
+        /// A creep to 4 cm (its top 3.3 cm above the band's edge) settles as any lift does.</summary>
         [TestCase(0.012, false)]
         [TestCase(0.030, false)]
         [TestCase(0.040, true)]
