@@ -11,7 +11,7 @@ namespace Kosmos.PseudoHaptic
     /// with every setting its <see cref="EffectDescriptor"/> declares, the safety limits, and the hand filter if any:
     /// <code>
     /// { "format": 1, "name": "paper",
-    ///   "effects": [ { "effect": "tracking-loss-hold", "settleTime": 0.11, "requireHighConfidence": true }, … ],
+    ///   "effects": [ { "effect": "tracking-loss-hold", "settleTime": 0.16, "requireHighConfidence": true }, … ],
     ///   "limits": { "maxGain": 3, … } }
     /// </code>
     /// Reading: a setting left out takes its default; an unknown effect, setting or key, a bad value, or a duplicate is an
