@@ -152,6 +152,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(h.Solver.State.PaceSettled, Is.EqualTo(settles), "after the creep's pause");
             if (settles) return;
             Assert.That(h.Pace, Is.EqualTo(0), "at rest: no pace");
+            Assert.That(h.Solver.State.PaceGain, Is.EqualTo(h.Solver.Gain).Within(1e-12 * h.Solver.Gain), "at rest the gain is Eq. 4–6's, not the creep's");
             h.Ramp(0.4, 0.5).Rest(0.5);
             var fromBand = new Hold().Rest(0.3).Ramp(0.4 - creep, 0.5).Rest(0.5);
             Assert.That(h.Pace, Is.EqualTo(fromBand.Pace).Within(0.05 * fromBand.Pace), "the lift's own pace, not the creep's 0.02 m/s");

@@ -125,9 +125,7 @@ namespace Kosmos.PseudoHaptic
                 state.RiseStartLift = state.RiseTop = lift;
                 state.RiseStartTime = state.RiseTopTime = time;
                 state.PaceSettled = false;
-                if (state.Pace == 0) return false;
-                state.Pace = 0;
-                return true;
+                return AtRest(ref state);
             }
             if (state.PaceSettled) return false;
             if (lift < state.RiseTop + TopStep)
@@ -142,9 +140,7 @@ namespace Kosmos.PseudoHaptic
                 // hand resting where jitter no longer reaches the band). The next rise starts from here, as from the base.
                 state.RiseStartLift = lift;
                 state.RiseStartTime = time;
-                if (state.Pace == 0) return false;
-                state.Pace = 0;
-                return true;
+                return AtRest(ref state);
             }
             if (time - seenTime > GapTime && lift > seenLift)
             {
@@ -166,6 +162,14 @@ namespace Kosmos.PseudoHaptic
             double mean = (lift - state.RiseStartLift) / (span > 1.0 / 60 ? span : 1.0 / 60);
             if (mean == state.Pace) return false;
             state.Pace = mean;
+            return true;
+        }
+
+        /// <summary>The hand is at rest: no rise, no pace. True when the pace changed.</summary>
+        static bool AtRest(ref HoldState state)
+        {
+            if (state.Pace == 0) return false;
+            state.Pace = 0;
             return true;
         }
 
