@@ -12,11 +12,6 @@ static class Expect
         if (!(actual <= bound)) throw new PropertyFailed($"{what}: {actual:R}, more than {bound:R}");
     }
 
-    public static void AtLeast(double actual, double bound, string what)
-    {
-        if (!(actual >= bound)) throw new PropertyFailed($"{what}: {actual:R}, less than {bound:R}");
-    }
-
     public static void That(bool condition, string what)
     {
         if (!condition) throw new PropertyFailed(what);
