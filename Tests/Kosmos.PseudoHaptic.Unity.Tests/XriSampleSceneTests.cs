@@ -37,6 +37,8 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Camera.main.GetComponentInParent<XROrigin>(), Is.SameAs(origin), "the scene's camera is the rig's");
             PseudoHapticGrabTransformer[] transformers = Object.FindObjectsByType<PseudoHapticGrabTransformer>(FindObjectsSortMode.InstanceID);
             Assert.That(transformers.Select(t => t.name), Is.EquivalentTo(new[] { "Box A", "Box B", "Box C" }));
+            Assert.That(transformers.Select(t => t.GetComponent<XRGrabInteractable>().selectMode), Is.All.EqualTo(InteractableSelectMode.Multiple),
+                "saved for two hands: XRI's default Single lets the second hand take a box from the first");
             Assert.That(Object.FindObjectsByType<XRInteractionManager>(FindObjectsSortMode.None), Has.Length.EqualTo(1));
         }
 

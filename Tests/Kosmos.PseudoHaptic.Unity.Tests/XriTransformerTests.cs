@@ -213,7 +213,10 @@ namespace Kosmos.PseudoHaptic.Tests
             Vector3 l0 = centre + new Vector3(-0.06f, 0, 0), r0 = centre + new Vector3(0.06f, 0, 0);
             Report(rig.Left, l0);
             Report(rig.Right, r0);
+            Assert.That(grab.selectMode, Is.EqualTo(InteractableSelectMode.Single), "XRI's default");
             Frames.Run(1);
+            // Single would let the second hand take the box from the first: the transformer links it (in its Start) Multiple.
+            Assert.That(grab.selectMode, Is.EqualTo(InteractableSelectMode.Multiple));
             grab.interactionManager.SelectEnter(rig.LeftHand, grab);
             grab.interactionManager.SelectEnter(rig.RightHand, grab);
             twin.Grab(1, rig.Left);
@@ -287,6 +290,40 @@ namespace Kosmos.PseudoHaptic.Tests
                 PseudoHapticWeight.HoldBegan -= Began;
                 PseudoHapticWeight.HoldEnded -= Ended;
             }
+        }
+
+        /// <summary>
+        /// Switching the transformer or the weight off mid-grab ends the weight's hold (their OnDisable); XRI keeps the
+        /// selection and calls no OnGrabCountChanged when they are switched on again, so the transformer itself takes the
+        /// selecting hands back on its next Dynamic phase: the box follows the hand again, rather than hanging where it was.
+        /// </summary>
+        [Test]
+        public void SwitchedOffAndOnMidGrabTheHoldResumes([Values(true, false)] bool theTransformer)
+        {
+            Rig rig = MakeRig();
+            var (weight, grab, transformer) = Grabbable(1f);
+            Vector3 start = rig.Offset.InverseTransformPoint(weight.transform.position + new Vector3(0, 0.05f, 0));
+            Report(rig.Right, start);
+            Frames.Run(1);
+            grab.interactionManager.SelectEnter(rig.RightHand, grab);
+            Frames.Run(10);
+            Assert.That(weight.IsHeld, Is.True);
+            Behaviour toggled = theTransformer ? transformer : (Behaviour)weight;
+            toggled.enabled = false;
+            Frames.Run(5);
+            Assert.That(weight.IsHeld, Is.False, "switched off: no hold");
+            toggled.enabled = true;
+            Frames.Run(1);
+            Assert.That(weight.IsHeld, Is.True, "held again");
+            Assert.That(transformer.Hands.Count, Is.EqualTo(1));
+            float y0 = weight.transform.position.y;
+            for (int i = 1; i <= 120; i++)
+            {
+                Report(rig.Right, start + new Vector3(0, 0.2f * Smooth(Mathf.Min(1, i / 60f)), 0));
+                Frames.Run(1);
+            }
+            // 1 kg lags the hand (up 8.4 cm of its 20 when the run ends); a box left hanging would not rise at all.
+            Assert.That(weight.transform.position.y - y0, Is.InRange(0.05f, 0.2f), "the box follows the hand's 0.2 m rise again");
         }
 
         [Test]

@@ -10,6 +10,7 @@ using UnityEngine.SceneManagement;
 using UnityEngine.XR.Interaction.Toolkit;
 #if KOSMOS_XRI_3
 using UnityEngine.InputSystem.XR;
+using UnityEngine.XR.Interaction.Toolkit.Interactables;
 using UnityEngine.XR.Interaction.Toolkit.Interactors;
 #endif
 
@@ -22,7 +23,7 @@ namespace Kosmos.PseudoHaptic.Editor
     /// direct interactor per controller, whose input actions are left for you to bind, with a warning: under XRI 2.x on an
     /// ActionBasedController, under XRI 3.x on an Input System TrackedPoseDriver, as each version's rigs pose controllers),
     /// an XR Interaction Manager, and a <see cref="PseudoHapticGrabTransformer"/> on every box (which brings its XR Grab
-    /// Interactable). Kept apart from <see cref="SampleScenes"/> (its own menu item); compiled only when XRI 2.5 or a later
+    /// Interactable, its Select Mode Multiple: both hands hold a box). Kept apart from <see cref="SampleScenes"/> (its own menu item); compiled only when XRI 2.5 or a later
     /// 2.x or 3.x is installed.
     /// </summary>
     public static class XriSampleScene
@@ -43,7 +44,11 @@ namespace Kosmos.PseudoHaptic.Editor
             var root = new GameObject("Pseudo-Haptic Sample (XRI)").transform;
             List<PseudoHapticWeight> boxes = SampleContent.Experiment1(root, SampleScenes.TwoHandedExperimentProfile());
             foreach (PseudoHapticWeight box in boxes)
+            {
                 if (box.GetComponent<PseudoHapticGrabTransformer>() == null) box.gameObject.AddComponent<PseudoHapticGrabTransformer>();
+                // What the transformer sets when it links, saved in the scene so that the inspector shows it: two hands.
+                box.GetComponent<XRGrabInteractable>().selectMode = InteractableSelectMode.Multiple;
+            }
             SampleScenes.Save(scene, SceneName);
         }
 

@@ -5,7 +5,8 @@
 // - XRInteractionManager (execution order -105) runs, per frame, the Dynamic phase in Update, Late in LateUpdate, Fixed
 //   in FixedUpdate and OnBeforeRender in Application.onBeforeRender, each calling ProcessInteractable on every registered
 //   interactable. SelectEnter/SelectExit/SelectCancel call OnSelectEntering, OnSelectEntered (interactor, then
-//   interactable) or the exiting pair, as the real manager does. What the double does not run: choosing targets from
+//   interactable) or the exiting pair, as the real manager does; SelectEnter on an interactable already selected first
+//   resolves it by its selectMode (ResolveExistingSelect: Single, the default, makes the current selectors exit). What the double does not run: choosing targets from
 //   input (valid targets, hover, select actions): a test selects through SelectEnter/SelectExit, as XRI's own tests do.
 // - Interactors and interactables register with the scene's manager in OnEnable (one is created when none exists, as
 //   XRI's FindCreateInteractionManager does) and unregister in OnDisable.
@@ -66,12 +67,24 @@ namespace UnityEngine.XR.Interaction.Toolkit
 
         public virtual void SelectEnter(IXRSelectInteractor interactor, IXRSelectInteractable interactable)
         {
-            if (interactable.interactorsSelecting.Contains(interactor)) return;
+            if (interactable.isSelected && !ResolveExistingSelect(interactor, interactable)) return;
             var args = new SelectEnterEventArgs { manager = this, interactorObject = interactor, interactableObject = interactable };
             var baseInteractor = interactor as XRBaseInteractor;
             var baseInteractable = interactable as XRBaseInteractable;
             baseInteractor?.SelectEntering(args);
             baseInteractable?.SelectEntering(args);
+        }
+
+        /// <summary>
+        /// Real: an interactor already selecting it does not select again; under Single every current selector exits
+        /// (not cancelled) before the new one enters; under Multiple they stay.
+        /// </summary>
+        protected virtual bool ResolveExistingSelect(IXRSelectInteractor interactor, IXRSelectInteractable interactable)
+        {
+            if (interactable.interactorsSelecting.Contains(interactor)) return false;
+            if (interactable.selectMode == InteractableSelectMode.Single)
+                for (int i = interactable.interactorsSelecting.Count - 1; i >= 0; i--) Exit(interactable.interactorsSelecting[i], interactable, false);
+            return true;
         }
 
         public virtual void SelectExit(IXRSelectInteractor interactor, IXRSelectInteractable interactable) => Exit(interactor, interactable, false);
@@ -110,6 +123,8 @@ namespace UnityEngine.XR.Interaction.Toolkit.Interactables
         public XRInteractionManager interactionManager { get => m_InteractionManager; set => m_InteractionManager = value; }
         public List<IXRSelectInteractor> interactorsSelecting => m_InteractorsSelecting;
         public bool isSelected => m_InteractorsSelecting.Count > 0;
+        [SerializeField] InteractableSelectMode m_SelectMode = InteractableSelectMode.Single;
+        public InteractableSelectMode selectMode { get => m_SelectMode; set => m_SelectMode = value; }
 
         protected virtual void Awake() { }
 

@@ -68,6 +68,14 @@ namespace UnityEngine.XR.Interaction.Toolkit.Interactables
     {
         List<IXRSelectInteractor> interactorsSelecting { get; }
         bool isSelected { get; }
+        InteractableSelectMode selectMode { get; }
+    }
+
+    /// <summary>Real: IXRSelectInteractable.cs. Single (XRBaseInteractable's default): a new selector takes the interactable, the others exit first.</summary>
+    public enum InteractableSelectMode
+    {
+        Single,
+        Multiple,
     }
 
 #if XRI_3

@@ -36,8 +36,9 @@ namespace Kosmos.PseudoHaptic.XRI
     /// interactor is tracked.
     /// The rig: the XR Origin's Camera Offset above the first hand (or <see cref="Rig"/>), so locomotion, snap turns and
     /// teleports carry the object rigidly. XRI owns the Rigidbody (kinematic while grabbed, restored and thrown on release).
-    /// On link it turns the interactable's attach ease-in and position/rotation smoothing off: they would add a lag the
-    /// solver does not know about. Use Instantaneous or Kinematic movement (Velocity Tracking is warned about).
+    /// On link it sets the interactable's Select Mode to Multiple (XRI's default, Single, makes a second interactor take the
+    /// object from the first rather than join it) and turns its attach ease-in and position/rotation smoothing off: they
+    /// would add a lag the solver does not know about. Use Instantaneous or Kinematic movement (Velocity Tracking is warned about).
     /// Compiled only when com.unity.xr.interaction.toolkit 2.5.0 or a later 2.x or 3.x is installed (KOSMOS_XRI; KOSMOS_XRI_3
     /// from 3.0.0 selects XRI 3's namespaces and the pose-driver reading). Process allocates nothing.
     /// </summary>
@@ -54,6 +55,7 @@ namespace Kosmos.PseudoHaptic.XRI
         readonly GrabbingHands<IXRSelectInteractor> _hands = new GrabbingHands<IXRSelectInteractor>();
         FrameClock _clock;
         bool _cancelling;
+        bool _rejoin; // the weight's hold ended while XRI kept the selection (this or the weight was switched off)
         IXRSelectInteractor[] _cancel = new IXRSelectInteractor[4];
 #if KOSMOS_XRI_3
         readonly Dictionary<IXRSelectInteractor, TrackedPoseDriver> _drivers = new Dictionary<IXRSelectInteractor, TrackedPoseDriver>();
@@ -78,6 +80,9 @@ namespace Kosmos.PseudoHaptic.XRI
             // Called once per list this transformer is in: idempotent.
             if (_weight == null) _weight = GetComponent<PseudoHapticWeight>();
             if (_weight == null) Debug.LogError("Pseudo-Haptic Grab Transformer on '" + name + "' found no PseudoHapticWeight.", this);
+            // XRI's default Single lets a second interactor take the object from the first (it exits before the other
+            // enters): the weight's two-hand hold needs both selecting at once.
+            grabInteractable.selectMode = InteractableSelectMode.Multiple;
             grabInteractable.attachEaseInTime = 0f;
             grabInteractable.smoothPosition = false;
             grabInteractable.smoothRotation = false;
@@ -92,7 +97,18 @@ namespace Kosmos.PseudoHaptic.XRI
 
         public override void Process(XRGrabInteractable grabInteractable, XRInteractionUpdateOrder.UpdatePhase updatePhase, ref Pose targetPose, ref Vector3 localScale)
         {
-            if (_weight == null || _hands.Count == 0 || !_weight.IsHeld) return;
+            if (_weight == null) return;
+            if (updatePhase == XRInteractionUpdateOrder.UpdatePhase.Dynamic)
+            {
+                // Switched off and on again mid-grab, XRI calls no OnGrabCountChanged: the selecting hands join here.
+                if (_hands.Count > 0 && !_weight.IsHeld) Forget(); // the weight was switched off: its hold ended
+                if (_rejoin && _weight.isActiveAndEnabled && grabInteractable.isSelected)
+                {
+                    _rejoin = false;
+                    Resync(grabInteractable);
+                }
+            }
+            if (_hands.Count == 0 || !_weight.IsHeld) return;
             if (updatePhase == XRInteractionUpdateOrder.UpdatePhase.Dynamic)
             {
                 float dt = _clock.Delta(Time.timeAsDouble); // 0 when called twice in a frame: the solver moves nothing
@@ -116,15 +132,27 @@ namespace Kosmos.PseudoHaptic.XRI
 
         public override void OnUnlink(XRGrabInteractable grabInteractable) => EndAll();
 
-        void OnDisable() => EndAll();
+        void OnDisable()
+        {
+            EndAll();
+            _rejoin = true;
+        }
 
         void EndAll()
+        {
+            Forget();
+            _rejoin = false;
+            if (_weight != null) _weight.EndHold();
+        }
+
+        /// <summary>The hands let go of here, taken back from the interactable's selection on the next Dynamic phase.</summary>
+        void Forget()
         {
             _hands.Clear();
 #if KOSMOS_XRI_3
             _drivers.Clear();
 #endif
-            if (_weight != null) _weight.EndHold();
+            _rejoin = true;
         }
 
         /// <summary>The weight's hands made the interactable's: those no longer selecting leave, new ones join (at their attach transforms).</summary>
