@@ -12,6 +12,7 @@ functions; the exact signed-rank distribution by counting subsets) and prints th
 differences. Needs only Python 3 and mpmath. Not part of the test suite.
 """
 import csv, math, random, sys
+from fractions import Fraction
 from collections import OrderedDict, defaultdict
 import mpmath as mp
 
@@ -129,7 +130,11 @@ def avg_ranks(values):
     return ranks, ties
 
 def paired(a, b):
-    d = [y - x for x, y in zip(a, b)]   # in doubles, as the tool computes them
+    """a, b: the scores as the file writes them (decimal strings)."""
+    d = [float(y) - float(x) for x, y in zip(a, b)]   # the t test in doubles, as the tool computes it
+    # The signed-rank test on the exact decimal differences: its ties and zeros are the data's (3.4 − 3.2 = 3.6 − 3.4),
+    # whatever a subtraction in doubles rounds them to.
+    exact = [Fraction(y) - Fraction(x) for x, y in zip(a, b)]
     n = len(d); out = {}
     if n >= 2:
         m = mp.fsum(d) / n
@@ -140,7 +145,7 @@ def paired(a, b):
             q = t_quantile975(n - 1)
             out.update(diff_lo=m - q * sd / mp.sqrt(n), diff_hi=m + q * sd / mp.sqrt(n))
     if n >= 1: out['mean_diff'] = mp.fsum(d) / n
-    nz = [v for v in d if v != 0]
+    nz = [v for v in exact if v != 0]
     N = len(nz)
     if N:
         ranks, ties = avg_ranks([abs(v) for v in nz])
@@ -189,14 +194,14 @@ def check_compare(scores_path, comparisons_path):
             q, c = row['questionnaire'].strip(), row['condition'].strip()
             if q not in qs: qs.append(q)
             if c not in conds: conds.append(c)
-            data[(q, c)][row['participant'].strip()] = float(row['score']) if row['score'].strip() else None
+            data[(q, c)][row['participant'].strip()] = row['score'].strip() if row['score'].strip() else None
     expected = {}
     for q in qs:
         cs = [c for c in conds if (q, c) in data]
         if len(cs) < 2: continue
         if len(cs) >= 3:
             people = sorted(set().union(*[data[(q, c)].keys() for c in cs]))
-            rows = [[data[(q, c)][p] for c in cs] for p in people if all(data[(q, c)].get(p) is not None for c in cs)]
+            rows = [[Fraction(data[(q, c)][p]) for c in cs] for p in people if all(data[(q, c)].get(p) is not None for c in cs)]
             fr = friedman(rows) if rows else None
             expected[(q, '*', '*')] = {'n': len(rows), **({'t': fr[0], 't_p': fr[1]} if fr else {})}
         pair_keys = []

@@ -200,6 +200,26 @@ public class EvaluationProperties
         }
     }, 300);
 
+    /// <summary>
+    /// Scores given to one decimal (means of ten items, as the questionnaires' are) compare as the same scores in tenths:
+    /// W, its p, z, r and the count of non-zero differences are those of the whole numbers, which the subtraction leaves
+    /// exact; t and its p to rounding (10⁻¹²).
+    /// </summary>
+    [Test]
+    public void ScoresInTenthsCompareAsTheSameScoresInWholeNumbers() => Checks.Hold(PairedScores(), s =>
+    {
+        double[] a = s.A.Select(v => (double)v).ToArray(), b = s.B.Select(v => (double)v).ToArray();
+        var whole = PairedComparison.Compute(a, b);
+        // Tenths of a scale from 1 to 7 with its shift: 0.1·(score + shift) as a parser reads "3.4".
+        double[] Tenths(int[] v) => v.Select(x => double.Parse((0.1m * (x + s.Shift)).ToString(System.Globalization.CultureInfo.InvariantCulture), System.Globalization.CultureInfo.InvariantCulture)).ToArray();
+        var tenths = PairedComparison.Compute(Tenths(s.A), Tenths(s.B));
+        Expect.That(tenths.NonZero == whole.NonZero, $"non-zero differences {tenths.NonZero} in tenths, {whole.NonZero} whole");
+        Expect.That(tenths.HasTies == whole.HasTies && tenths.WilcoxonExact == whole.WilcoxonExact, "ties and method in tenths as whole");
+        Same(tenths.W, whole.W, "W in tenths"); Same(tenths.WP, whole.WP, "p of W in tenths");
+        Same(tenths.Z, whole.Z, "z in tenths"); Same(tenths.R, whole.R, "r in tenths");
+        Same(tenths.T, whole.T, "t in tenths"); Same(tenths.TP, whole.TP, "p of t in tenths");
+    }, 300);
+
     /// <summary>Friedman's test ranks within each participant: listing the participants or the conditions in another
     /// order changes neither the statistic nor p.</summary>
     [Test]

@@ -11,7 +11,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// <list type="bullet">
     /// <item>Paired t: t = d̄ / (s_d/√n), ν = n − 1, two-sided p = 2·P(T_ν &gt; |t|); 95 % interval d̄ ± t(0.975, ν)·s_d/√n;
     /// d_z = d̄ / s_d.</item>
-    /// <item>Wilcoxon signed-rank: zero differences dropped (N non-zero left), |d| ranked with average ranks for ties,
+    /// <item>Wilcoxon signed-rank: zero differences dropped (N non-zero left), |d| ranked with average ranks for ties
+    /// (|d| within <see cref="TieResolution"/> of each other tied, within it of 0 zero: equal up to the subtraction's rounding),
     /// W = the sum of the ranks of the positive differences. Exact two-sided p (the distribution of W over the
     /// 2^N sign patterns) when N ≤ 25 and no |d| are tied: p = min(1, 2·min(P(W ≤ w), P(W ≥ w))). Otherwise the
     /// normal approximation Z = (W − N(N+1)/4 − ½·sign(W − N(N+1)/4)) / √(N(N+1)(2N+1)/24 − Σ(t³ − t)/48)
@@ -86,9 +87,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 }
             }
 
-            // Wilcoxon signed-rank.
+            // Wilcoxon signed-rank. Differences equal up to the subtraction's rounding are equal: scores given to a decimal
+            // come out of b − a a few units in the last place apart (3.4 − 3.2 and 3.6 − 3.4 differ in binary), and a tie
+            // or a zero is the data's, not the arithmetic's.
+            double resolution = TieResolution(a, b);
             var nonZero = new List<double>();
-            foreach (double v in d) if (v != 0) nonZero.Add(v);
+            foreach (double v in d) if (Math.Abs(v) > resolution) nonZero.Add(v);
             int m = nonZero.Count;
             double w = double.NaN, wp = double.NaN, z = double.NaN, r = double.NaN;
             bool ties = false, exact = false;
@@ -97,7 +101,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 var abs = new double[m];
                 for (int i = 0; i < m; i++) abs[i] = Math.Abs(nonZero[i]);
                 double tieSum;
-                double[] ranks = Ranks.Average(abs, out tieSum);
+                double[] ranks = Ranks.Average(abs, resolution, out tieSum);
                 ties = tieSum > 0;
                 w = 0;
                 for (int i = 0; i < m; i++) if (nonZero[i] > 0) w += ranks[i];
@@ -121,6 +125,17 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 }
             }
             return new PairedComparison(n, mean, lo, hi, t, tp, dz, w, wp, z, r, m, ties, exact);
+        }
+
+        /// <summary>
+        /// Differences closer than this are equal, and one this small is zero: 10⁻¹² of the largest |value|, thousands of
+        /// units in the last place of a difference (whose rounding is a few) and far below any difference a scale records.
+        /// </summary>
+        public static double TieResolution(IReadOnlyList<double> a, IReadOnlyList<double> b)
+        {
+            double scale = 0;
+            for (int i = 0; i < a.Count; i++) scale = Math.Max(scale, Math.Max(Math.Abs(a[i]), Math.Abs(b[i])));
+            return 1e-12 * scale;
         }
 
         /// <summary>min(1, 2·min(P(W ≤ w), P(W ≥ w))) under H0 for N = <paramref name="n"/> untied ranks.</summary>
@@ -153,7 +168,13 @@ namespace Kosmos.PseudoHaptic.Evaluation
     public static class Ranks
     {
         /// <summary>Ranks 1 … n of <paramref name="values"/>; <paramref name="tieSum"/> = Σ(t³ − t) over tie groups.</summary>
-        public static double[] Average(IReadOnlyList<double> values, out double tieSum)
+        public static double[] Average(IReadOnlyList<double> values, out double tieSum) => Average(values, 0, out tieSum);
+
+        /// <summary>
+        /// As <see cref="Average(IReadOnlyList{double}, out double)"/>, values within <paramref name="resolution"/> of the
+        /// smallest of their group tied (in ascending order, a group takes each next value within that distance of its first).
+        /// </summary>
+        public static double[] Average(IReadOnlyList<double> values, double resolution, out double tieSum)
         {
             int n = values.Count;
             var order = new int[n];
@@ -167,7 +188,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             while (start < n)
             {
                 int end = start;
-                while (end + 1 < n && keys[end + 1] == keys[start]) end++;
+                while (end + 1 < n && (keys[end + 1] == keys[start] || keys[end + 1] - keys[start] <= resolution)) end++;
                 double rank = (start + end) / 2.0 + 1;
                 for (int i = start; i <= end; i++) ranks[order[i]] = rank;
                 double t = end - start + 1;

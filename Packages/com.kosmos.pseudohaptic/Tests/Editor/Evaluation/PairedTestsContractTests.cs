@@ -171,6 +171,30 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void ScoresGivenToADecimalTieWhereTheirDifferencesAreEqual()
+        {
+            // The worked example's weight-detection scores (evaluation.md §8.5): the differences 1, 1.1, 0.7, 0.3, −0.2, 1,
+            // 0.7, 0.2 come out of b − a as 0.2999999999999998, −0.20000000000000018, 0.19999999999999973, …: the two 0.2s
+            // share ranks 1 and 2. W = 6.5 + 8 + 4.5 + 3 + 6.5 + 4.5 + 1.5 = 34.5; p from scipy.stats.wilcoxon(
+            // method='approx', correction=True) on the differences rounded to 10 decimals (R's wilcox.test on them agrees).
+            var a = new[] { 2.8, 2.6, 2.8, 3.2, 3.6, 2.8, 2.9, 3.2 };
+            var b = new[] { 3.8, 3.7, 3.5, 3.5, 3.4, 3.8, 3.6, 3.4 };
+            var c = PairedComparison.Compute(a, b);
+            Assert.That(c.W, Is.EqualTo(34.5));
+            Assert.That(c.HasTies, Is.True);
+            Assert.That(c.WilcoxonExact, Is.False, "tied: the normal approximation");
+            Assert.That(c.WP, Is.EqualTo(0.024529629606437342).Within(1e-12));
+            // Tied 0.3s that the exact test would otherwise take for three different sizes.
+            c = PairedComparison.Compute(new[] { 2.0, 3.0, 3.1, 3.7, 4.5, 2.8, 2.3, 3.4 }, new[] { 1.7, 3.6, 2.8, 4.2, 4.2, 2.4, 3.0, 3.2 });
+            Assert.That(c.HasTies, Is.True);
+            Assert.That(c.WilcoxonExact, Is.False);
+            // A difference that is zero but for the rounding of its scores is dropped: 0.1 + 0.2 against 0.3.
+            c = PairedComparison.Compute(new[] { 0.1 + 0.2, 1, 1 }, new[] { 0.3, 2, 3 });
+            Assert.That(c.NonZero, Is.EqualTo(2));
+            Assert.That(c.W, Is.EqualTo(3));
+        }
+
+        [Test]
         public void AverageRanksShareTheirSpanAndCountTheTies()
         {
             double ties;
@@ -180,6 +204,10 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             ranks = Ranks.Average(new[] { 2.0, 2.0, 1.0, 1.0 }, out ties);
             Assert.That(ranks, Is.EqualTo(new[] { 3.5, 3.5, 1.5, 1.5 }));
             Assert.That(ties, Is.EqualTo(12));
+            // Within a resolution: each next value within it of its group's first joins the group.
+            ranks = Ranks.Average(new[] { 0.30000000000000004, 0.2999999999999998, 0.5, 0.3 }, 1e-12, out ties);
+            Assert.That(ranks, Is.EqualTo(new[] { 2.0, 2.0, 4.0, 2.0 }));
+            Assert.That(ties, Is.EqualTo(24));
             ranks = Ranks.Average(new double[0], out ties);
             Assert.That(ranks, Is.Empty);
             Assert.That(ties, Is.EqualTo(0));
