@@ -77,7 +77,7 @@ namespace Kosmos.PseudoHaptic.Tests
             s.BeginHold(1.0, 1.0, 0.0);
             for (int i = 0; i < 10; i++) s.Step(HandSample.Lost, 1 / 90.0);
             pose = new HandSample(1.0, true, true, 0.2);
-            for (int i = 0; i < 30; i++) s.Step(pose, 1 / 90.0); // 0.33 s of one pose: settled after 0.11 s
+            for (int i = 0; i < 30; i++) s.Step(pose, 1 / 90.0); // 0.33 s of one pose: settled after the default 0.16 s
             int before = counts.Calls;
             for (int i = 0; i < 30; i++) s.Step(pose, 1 / 90.0);
             // Settled, the same pose again runs the pipeline only when the repeat time (0.1 s) has passed: 3 of 30 frames.
