@@ -68,7 +68,11 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The folder sessions are written under (absolute).</summary>
         public string Folder { get => _folder; set { _folder = value ?? ""; _sessionFolder = null; } }
 
-        /// <summary>The session's name (its folder); setting it starts a new session, numbered from 1. Empty: the local date and time at the first hold.</summary>
+        /// <summary>
+        /// The session's name (its folder); setting it starts a new session, numbered from 1, or, when its folder already
+        /// holds recordings (the same id after a restart or a power cut), from the last of them: the holds and the index
+        /// there are kept, the index goes on from its last row. Empty: the local date and time at the first hold.
+        /// </summary>
         public string SessionId
         {
             get => _sessionId;
@@ -83,7 +87,7 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>The folder this session writes into; null until its first hold begins.</summary>
         public string SessionFolder => _sessionFolder;
-        /// <summary>Holds begun in this session.</summary>
+        /// <summary>The number of the last hold begun in this session's folder (holds found there when it resumed included).</summary>
         public int HoldCount { get; private set; }
         /// <summary>Objects being held and recorded now.</summary>
         public int ActiveCount => _active.Count;
@@ -114,6 +118,7 @@ namespace Kosmos.PseudoHaptic
             if (at >= 0) Finish(at); // a begin without an end: keep what was recorded
             Hold hold = _spare.Count > 0 ? _spare.Pop() : new Hold(_capacity);
             hold.Key = key;
+            hold.Folder = SessionFolderPath(); // first: a resumed session numbers on from the holds already there
             hold.Number = ++HoldCount;
             hold.ObjectName = objectName;
             hold.StartedAt = startedAt;
@@ -181,7 +186,6 @@ namespace Kosmos.PseudoHaptic
 
         void Name(Hold hold)
         {
-            hold.Folder = SessionFolderPath();
             hold.Index = _index;
             hold.File = Path.Combine(hold.Folder, "hold-" + hold.Number.ToString("000", CultureInfo.InvariantCulture) + "-" + SafeName(hold.ObjectName) + ".csv");
         }
@@ -267,7 +271,47 @@ namespace Kosmos.PseudoHaptic
             if (_sessionFolder != null) return _sessionFolder;
             if (string.IsNullOrWhiteSpace(_sessionId)) _sessionId = DateTime.Now.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture);
             _sessionFolder = Path.Combine(_folder, SafeName(_sessionId));
+            Resume(_sessionFolder);
             return _sessionFolder;
+        }
+
+        /// <summary>
+        /// Once per session folder, on the main thread (a listing and one small read when its first hold begins): the index
+        /// already there is kept and goes on, and numbering goes on after the highest hold number in it or among the
+        /// hold files (one flushed at a pause and never indexed included), so that nothing recorded before is overwritten.
+        /// </summary>
+        void Resume(string folder)
+        {
+            _index = new StringBuilder();
+            HoldCount = 0;
+            try
+            {
+                if (!Directory.Exists(folder)) return;
+                string indexPath = Path.Combine(folder, "holds.csv");
+                if (File.Exists(indexPath))
+                {
+                    string text = File.ReadAllText(indexPath);
+                    _index.Append(text);
+                    if (text.Length > 0 && text[text.Length - 1] != '\n') _index.Append('\n');
+                    foreach (string line in text.Split('\n'))
+                    {
+                        int comma = line.IndexOf(',');
+                        if (comma > 0 && int.TryParse(line.Substring(0, comma), NumberStyles.None, CultureInfo.InvariantCulture, out int n))
+                            HoldCount = Math.Max(HoldCount, n);
+                    }
+                }
+                foreach (string file in Directory.GetFiles(folder, "hold-*.csv"))
+                {
+                    string name = Path.GetFileName(file);
+                    int end = name.IndexOf('-', 5);
+                    if (end > 5 && int.TryParse(name.Substring(5, end - 5), NumberStyles.None, CultureInfo.InvariantCulture, out int n))
+                        HoldCount = Math.Max(HoldCount, n);
+                }
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                Fail("Session recorder: the recordings already in " + folder + " could not be read (" + e.Message + "): later holds may replace them");
+            }
         }
 
         /// <summary>

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.IO;
+using System.Linq;
 using Kosmos.PseudoHaptic.Evaluation;
 using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
@@ -177,6 +178,48 @@ namespace Kosmos.PseudoHaptic.Tests
             log.SessionId = "S2";
             Lift(b, 0.1, 0.4); b.Hold.End(1);
             Assert.That(File.Exists(Path.Combine(_folder, "S2", "hold-001-b.csv")), Is.True, "a new session numbers from 1");
+        }
+
+        /// <summary>
+        /// The app restarted (a crash, a power cut) and the session resumed under the same id: what was recorded stays, byte
+        /// for byte; the index goes on from its last row and the numbering from the highest hold there, a hold flushed at a
+        /// pause and never indexed included.
+        /// </summary>
+        [Test]
+        public void ASessionResumedUnderItsIdKeepsItsHoldsAndNumbersOn()
+        {
+            SessionLog first = Log();
+            BoxScene.Box box = Wired(first, "box", 1);
+            Lift(box, 0.2, 0.6); box.Hold.End(1);
+            Lift(box, 0.2, 0.6); box.Hold.End(1);
+            string folder = Path.Combine(_folder, "P1");
+            byte[] hold1 = File.ReadAllBytes(Path.Combine(folder, "hold-001-box.csv")), hold2 = File.ReadAllBytes(Path.Combine(folder, "hold-002-box.csv"));
+            string[] index = File.ReadAllLines(Path.Combine(folder, "holds.csv"));
+            Assert.That(index, Has.Length.EqualTo(3));
+
+            SessionLog resumed = Log(); // the same id, after a restart
+            BoxScene.Box again = Wired(resumed, "box", 2);
+            Lift(again, 0.2, 0.6); again.Hold.End(1);
+            Assert.That(File.ReadAllBytes(Path.Combine(folder, "hold-001-box.csv")), Is.EqualTo(hold1));
+            Assert.That(File.ReadAllBytes(Path.Combine(folder, "hold-002-box.csv")), Is.EqualTo(hold2));
+            Assert.That(Read(Path.Combine(folder, "hold-003-box.csv"))[1].MassKg, Is.EqualTo(2), "the resumed session's hold");
+            string[] after = File.ReadAllLines(Path.Combine(folder, "holds.csv"));
+            Assert.That(after.Take(3), Is.EqualTo(index), "the index's rows kept as they were");
+            Assert.That(after, Has.Length.EqualTo(4));
+            Assert.That(after[3], Does.StartWith("3,box,hold-003-box.csv,"));
+            Assert.That(resumed.HoldCount, Is.EqualTo(3));
+
+            // A hold flushed at a pause, then the power went: its file is there, its index row never was.
+            SessionLog paused = Log();
+            BoxScene.Box held = Wired(paused, "box", 1);
+            Lift(held, 0.2, 0.6);
+            paused.FlushActive();
+            Assert.That(File.Exists(Path.Combine(folder, "hold-004-box.csv")), Is.True);
+            SessionLog afterPowerCut = Log();
+            BoxScene.Box last = Wired(afterPowerCut, "box", 1);
+            Lift(last, 0.2, 0.6); last.Hold.End(1);
+            Assert.That(File.Exists(Path.Combine(folder, "hold-005-box.csv")), Is.True, "numbered after the flushed hold, not over it");
+            Assert.That(File.ReadAllLines(Path.Combine(folder, "holds.csv")).Skip(1).Select(l => l.Split(',')[0]), Is.EqualTo(new[] { "1", "2", "3", "5" }));
         }
 
         [Test]
