@@ -85,10 +85,11 @@ static class StudyCharts
                 cy[i] = f.Psi(cx[i]);
             }
             Charts.Line(plot, cx, cy, std + "fit", colour);
-            // PSE: where the curve crosses 50 %; JND: from the PSE to where it reaches 75 %.
+            // PSE: where the curve crosses 50 %; JND: from the PSE to PSE + JND, where the curve without lapses reaches 75 %
+            // (the fitted curve there: 75 %, or 75 % − L/2 with lapses L, where the line ends on it).
             Charts.Line(plot, new[] { f.Pse, f.Pse }, new[] { 0.0, 0.5 }, $"{std}PSE {G(f.Pse)} kg", colour, dashed: true);
-            double at75 = f.Pse + f.Jnd;
-            Charts.Line(plot, new[] { f.Pse, at75, at75 }, new[] { 0.75, 0.75, 0.0 }, $"{std}JND {G(f.Jnd)} kg", Charts.Colour(s + 5), dashed: true);
+            double at75 = f.Pse + f.Jnd, onCurve = f.Lapse > 0 ? f.Psi(at75) : 0.75;
+            Charts.Line(plot, new[] { f.Pse, at75, at75 }, new[] { onCurve, onCurve, 0.0 }, $"{std}JND {G(f.Jnd)} kg", Charts.Colour(s + 5), dashed: true);
             if (r.Bootstrap.HasIntervals)
                 Charts.Line(plot, new[] { r.Bootstrap.PseLow, r.Bootstrap.PseHigh }, new[] { 0.5, 0.5 }, $"{std}PSE 95 % CI [{G(r.Bootstrap.PseLow)}, {G(r.Bootstrap.PseHigh)}] kg", Charts.Black);
         }
