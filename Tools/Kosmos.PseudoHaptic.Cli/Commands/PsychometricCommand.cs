@@ -7,7 +7,7 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// <c>pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S]</c> (issue 11):
+/// <c>pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S] [--without-catch]</c> (issue 11; --without-catch added in the twentieth session):
 /// the maximum-likelihood fit of a cumulative Gaussian to 2AFC answers per participant × condition × standard
 /// (<see cref="PsychometricFit"/>), PSE, JND, Weber fraction, 95 % bootstrap intervals and deviance.
 /// Writes DIR/fits.csv, DIR/report.md, a chart per participant × condition and DIR/summary.png. Malformed
@@ -32,7 +32,8 @@ public static class PsychometricCommand
         CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
         CliCommand.Value("--lapse", "L", "a fixed guess and lapse rate gamma = lambda, in [0, 0.5) (default 0)"),
         CliCommand.Value("--bootstrap", "N", $"parametric bootstrap resamples for the 95 % intervals, 0–{MaxResamples} (default {DefaultResamples})"),
-        CliCommand.Value("--seed", "S", $"the bootstrap's seed, a whole number (default {DefaultSeed})"));
+        CliCommand.Value("--seed", "S", $"the bootstrap's seed, a whole number (default {DefaultSeed})"),
+        CliCommand.Flag("--without-catch", "leave out the rows whose catch column is 1 (attention checks, not levels of the function; one missed catch trial can double a JND without --lapse)"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("psychometric").ToArray());
 
@@ -47,7 +48,8 @@ public static class PsychometricCommand
         OutputFolder.Check("--out", outDir, Owns, createParents: false, inputs);
 
         // Read and check everything, compute, render; only then does the folder appear, whole.
-        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        bool withoutCatch = o.Flag("--without-catch");
+        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters, withoutCatch, out int catchLeftOut);
         var progress = Progress.Writer;
         var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed, (done, all) => progress.Write($"\rpsychometric: fit and bootstrap {done}/{all}{(done == all ? "\n" : "")}"));
         var files = new List<(string Name, byte[] Bytes)>();
@@ -61,14 +63,14 @@ public static class PsychometricCommand
             charts.Add((name, group.Key.Participant, group.Key.Condition));
         }
         if (rows.Count > 0) files.Add(("summary.png", StudyCharts.PsychometricSummary(rows)));
-        files.Add(("report.md", utf8.GetBytes(Report(trialsPath, answers.Count, rows, lapse, resamples, seed, charts, rows.Count > 0))));
+        files.Add(("report.md", utf8.GetBytes(Report(trialsPath, answers.Count, withoutCatch ? catchLeftOut : -1, rows, lapse, resamples, seed, charts, rows.Count > 0))));
 
         OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>
         {
             foreach (var (name, bytes) in files) File.WriteAllBytes(Path.Combine(temp, name), bytes);
         });
 
-        Console.Out.WriteLine($"{Messages.OneLine(Path.Combine(outDir, "fits.csv"))}: {rows.Count} fits of {answers.Count} trials, {rows.Count(r => !r.Fit.Estimable)} not estimable; {files.Count} files");
+        Console.Out.WriteLine($"{Messages.OneLine(Path.Combine(outDir, "fits.csv"))}: {rows.Count} fits of {answers.Count} trials{(withoutCatch ? $" ({catchLeftOut} catch trials left out)" : "")}, {rows.Count(r => !r.Fit.Estimable)} not estimable; {files.Count} files");
         foreach (var r in rows)
         {
             string what = r.Fit.Estimable
@@ -155,11 +157,12 @@ public static class PsychometricCommand
         return s.Length > 40 ? s[..40] : s;
     }
 
-    static string Report(string trialsPath, int trials, IReadOnlyList<PsychometricRow> rows, double lapse, int resamples, long seed, List<(string File, string Participant, string Condition)> charts, bool summary)
+    /// <param name="catchLeftOut">Catch trials left out (--without-catch), or −1 when catch trials are fitted like the rest.</param>
+    static string Report(string trialsPath, int trials, int catchLeftOut, IReadOnlyList<PsychometricRow> rows, double lapse, int resamples, long seed, List<(string File, string Participant, string Condition)> charts, bool summary)
     {
         var md = new StringBuilder();
         md.Append("# Psychometric fits\n\n");
-        md.Append($"Source: `{Messages.OneLine(Path.GetFileName(trialsPath))}`, {trials} trials, {rows.Count} fits (participant × condition × standard).\n\n");
+        md.Append($"Source: `{Messages.OneLine(Path.GetFileName(trialsPath))}`, {trials} trials{(catchLeftOut >= 0 ? $" ({catchLeftOut} catch trials left out, --without-catch)" : "")}, {rows.Count} fits (participant × condition × standard).\n\n");
         md.Append("Ψ(x) = γ + (1 − γ − λ)·Φ((x − μ)/σ), fitted by maximum likelihood to the binary answers (1 = comparison judged heavier), ");
         md.Append($"γ = λ = {NumberText.Format(lapse)}{(lapse == 0 ? " (no lapses)" : " (fixed, --lapse)")}. PSE = μ; JND = σ·Φ⁻¹(0.75) ≈ 0.6745·σ; Weber fraction = JND / standard; ");
         md.Append("deviance = the binomial deviance over the comparison levels against the saturated model. ");

@@ -21,7 +21,7 @@ public static class TuneCommand
         {
             "pseudohaptic tune --trials Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/trials.csv --participant P1 --condition pseudo-haptic --out out/user-P1.json",
         },
-        CliCommand.Value("--trials", "T.csv", "the discrimination kit's trials file as the headset writes it: participant,condition,trial,standard,comparison,first,catch,response (standard and comparison in kg, rendered at cue strength 1)", required: true),
+        CliCommand.Value("--trials", "T.csv", "the discrimination kit's trials file as the headset writes it: participant,condition,trial,standard,comparison,first,catch,response (standard and comparison in kg, rendered at cue strength 1); catch trials (catch = 1) are left out of the fit", required: true),
         CliCommand.Value("--participant", "P", "whose answers to fit", required: true),
         CliCommand.Value("--out", "USER.json", "where the user's file goes: participant, cueStrength, weber, the fit and the model; replaced whole or not at all", required: true),
         CliCommand.Value("--condition", "C", "the condition to fit (default: the participant's only one; required when they have several)"),
@@ -109,7 +109,8 @@ public static class TuneCommand
         double confidence = ConfidenceOption(o.Get("--confidence"));
         var target = OutputFile.Check("--out", output, new NamedPath("--trials", trialsPath));
 
-        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
+        // Catch trials are attention checks, not levels of the person's function: one missed would raise their cue strength.
+        var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters, leaveOutCatch: true, out _);
         var (standard, fit, fittedJndKg, tuning, trials, chosen) = Tune(answers, participant, condition, masses, Messages.OneLine(trialsPath), confidence);
         condition = chosen;
         double weber = fittedJndKg / standard;

@@ -69,7 +69,7 @@ public static class TuningEvidence
     public static List<Row> Run(long batch = 0, int repetitions = Repetitions, double? confidence = null)
     {
         var frames = ReferenceLift.Frames();
-        var answers = TrialsCsv.Read(new StringReader(TrialsFile(batch, repetitions)), "trials.csv");
+        var answers = TrialsCsv.Read(new StringReader(TrialsFile(batch, repetitions)), "trials.csv", int.MaxValue, long.MaxValue, leaveOutCatch: true, out _); // as tune reads
         var boxes = CueStrengthTuning.ExperimentOneBoxes;
         var rows = new List<Row>();
         for (int k = 0; k < Webers.Length; k++)

@@ -10,7 +10,8 @@ namespace Kosmos.PseudoHaptic.Evaluation
     /// The trials file written in the headset and read by <c>pseudohaptic psychometric</c>:
     /// <c>participant,condition,trial,standard,comparison,first,catch,response</c> (first = "comparison" or
     /// "standard"; catch = 1 or 0; response = 1 or 0). psychometric needs only participant, standard,
-    /// comparison and response (condition optional); the other columns are for the experimenter.
+    /// comparison and response (condition optional); the other columns are for the experimenter, catch also for
+    /// leaving catch trials out of a fit (<c>psychometric --without-catch</c>, and <c>tune</c> always).
     /// </summary>
     public static class TrialsCsv
     {
@@ -48,10 +49,21 @@ namespace Kosmos.PseudoHaptic.Evaluation
         /// <see cref="EvaluationFormatException"/> naming the line.
         /// </summary>
         public static List<TrialAnswer> Read(TextReader reader, string sourceName, int maxRows = int.MaxValue, long maxCharacters = long.MaxValue)
+            => Read(reader, sourceName, maxRows, maxCharacters, leaveOutCatch: false, out _);
+
+        /// <summary>
+        /// As <see cref="Read(TextReader, string, int, long)"/>; with <paramref name="leaveOutCatch"/> the rows whose
+        /// <c>catch</c> column is 1 (attention checks at levels no attentive participant misses, not levels of the
+        /// psychometric function) are read, checked and left out, counted in <paramref name="leftOut"/>; a catch value
+        /// other than 0 or 1 is refused naming the line; a file without the column has no catch trials.
+        /// </summary>
+        public static List<TrialAnswer> Read(TextReader reader, string sourceName, int maxRows, long maxCharacters, bool leaveOutCatch, out int leftOut)
         {
-            var present = new bool[1];
             var answers = new List<TrialAnswer>();
-            foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, RequiredColumns, new[] { "condition" }, present))
+            leftOut = 0;
+            string[] optional = leaveOutCatch ? new[] { "condition", "catch" } : new[] { "condition" }; // otherwise catch is ignored, as any other column
+            var present = new bool[optional.Length];
+            foreach (var row in CsvTable.Stream(reader, sourceName, maxRows, maxCharacters, RequiredColumns, optional, present))
             {
                 string participant = row[0].Trim();
                 if (participant.Length == 0) throw new EvaluationFormatException(sourceName, row.Line, "participant is empty");
@@ -60,6 +72,17 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 string response = row[3].Trim();
                 if (response != "0" && response != "1")
                     throw new EvaluationFormatException(sourceName, row.Line, "response '" + row[3] + "' must be 1 (comparison judged heavier) or 0");
+                if (leaveOutCatch && row[5] != null)
+                {
+                    string isCatch = row[5].Trim();
+                    if (isCatch != "0" && isCatch != "1")
+                        throw new EvaluationFormatException(sourceName, row.Line, "catch '" + row[5] + "' must be 1 (a catch trial) or 0");
+                    if (isCatch == "1")
+                    {
+                        leftOut++;
+                        continue;
+                    }
+                }
                 answers.Add(new TrialAnswer(participant, (row[4] ?? "").Trim(), standard, comparison, response == "1" ? 1 : 0, row.Line));
             }
             return answers;

@@ -1,5 +1,6 @@
 using System;
 using System.IO;
+using System.Linq;
 using Kosmos.PseudoHaptic.Evaluation;
 using NUnit.Framework;
 
@@ -95,6 +96,23 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 Assert.That(answers[i].Response, Is.EqualTo(trials[i].Response));
                 Assert.That(answers[i].Line, Is.EqualTo(i + 2), "the header is line 1");
             }
+        }
+
+        [Test]
+        public void CatchTrialsAreLeftOutOnlyWhenAskedAndTheirMarkIsChecked()
+        {
+            const string text = "participant,standard,comparison,catch,response\nP1,0.5,0.6,0,1\nP1,0.5,1,1,0\nP1,0.5,0.4, 0 ,0\n";
+            Assert.That(TrialsCsv.Read(new StringReader(text), "t.csv"), Has.Count.EqualTo(3), "by default catch is a column like any other");
+            var kept = TrialsCsv.Read(new StringReader(text), "t.csv", int.MaxValue, long.MaxValue, leaveOutCatch: true, out int leftOut);
+            Assert.That(leftOut, Is.EqualTo(1));
+            Assert.That(kept.Select(a => a.Line), Is.EqualTo(new[] { 2, 4 }), "the others keep their lines");
+            var none = TrialsCsv.Read(new StringReader("participant,standard,comparison,response\nP1,0.5,0.6,1\n"), "t.csv", int.MaxValue, long.MaxValue, true, out leftOut);
+            Assert.That(none, Has.Count.EqualTo(1));
+            Assert.That(leftOut, Is.Zero, "a file without the column has no catch trials");
+            const string bad = "participant,standard,comparison,catch,response\nP1,0.5,0.6,yes,1\n";
+            Assert.That(TrialsCsv.Read(new StringReader(bad), "t.csv"), Has.Count.EqualTo(1), "not read, not checked");
+            var e = Assert.Throws<EvaluationFormatException>(() => TrialsCsv.Read(new StringReader(bad), "t.csv", int.MaxValue, long.MaxValue, true, out _));
+            Assert.That(e.Message, Is.EqualTo("t.csv:2: catch 'yes' must be 1 (a catch trial) or 0"));
         }
 
         [Test]
