@@ -48,8 +48,11 @@ namespace Kosmos.PseudoHaptic
             FieldTransfer.Copy(d, ref s.MaxTrials, ref _maxTrials);
         }
 
-        /// <summary>The plan these settings give (the same for the same seed).</summary>
+        /// <summary>The plan these settings give at the study's seed.</summary>
         public ConstantStimuliPlan Plan() => Settings.Plan();
+
+        /// <summary>The plan a participant runs in a condition: its order drawn from the study's seed and both names (the same for the same three).</summary>
+        public ConstantStimuliPlan PlanFor(string participant, string condition) => Settings.PlanFor(participant, condition);
 
         /// <summary>The staircase these settings give for a participant and condition (the same for the same seed).</summary>
         public Staircase MakeStaircase(string participant, string condition) => Settings.MakeStaircase(participant, condition);

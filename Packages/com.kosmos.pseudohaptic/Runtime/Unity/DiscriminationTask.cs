@@ -44,7 +44,7 @@ namespace Kosmos.PseudoHaptic
         [SerializeField] float[] _catchKg = new float[0];
         [Tooltip("Repetitions of each catch comparison.")]
         [SerializeField] int _catchRepetitions = 0;
-        [Tooltip("The plan's seed: the same seed gives the same order, so a session can resume.")]
+        [Tooltip("The study's seed: each participant and condition runs in its own order drawn from it and their names; the same three give the same order, so a session can resume.")]
         [SerializeField] int _seed = 1;
         [Header("Staircase")]
         [Tooltip("The comparison's first mass, kg.")]

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 using System.Collections.Generic;
 using System.IO;
 using Kosmos.PseudoHaptic.Evaluation;
@@ -39,8 +40,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void SettingsGiveThePlanOrTheStaircaseTheyName()
         {
-            var plan = Settings().Plan().Build("P1", "on");
+            var plan = Settings().PlanFor("P1", "on").Build("P1", "on");
             Assert.That(plan.Count, Is.EqualTo(3 * 2 + 1));
+            Assert.That(Settings().PlanFor("P1", "on").Seed, Is.EqualTo(DiscriminationSettings.SessionSeed(Settings().Seed, "P1", "on")));
             var session = Settings().CreateSession("P1", "on", TrialsFile);
             Assert.That(session.Staircase, Is.Null);
             Assert.That(session.Plan.Count, Is.EqualTo(plan.Count));
@@ -57,6 +59,36 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(three.Staircase.Start, Is.EqualTo(0.7));
             Assert.That(three.Staircase.MaxTrials, Is.EqualTo(40));
             Assert.That(three.Staircase.MinLevel, Is.EqualTo(0.001));
+        }
+
+        /// <summary>
+        /// One study seed, an order per participant and condition: the same trials (levels, repetitions, counterbalancing)
+        /// in another order for each, and the same order again for the same participant and condition (a resume rebuilds it).
+        /// </summary>
+        [Test]
+        public void EachParticipantAndConditionRunsInItsOwnOrderFromTheStudySeed()
+        {
+            var settings = Settings();
+            settings.ComparisonKg = new[] { 0.35, 0.4, 0.45, 0.55, 0.6, 0.65 };
+            settings.Repetitions = 8;
+            settings.CatchRepetitions = 2; // even counts: the sides are counterbalanced exactly, not drawn
+            string Order(string participant, string condition) => string.Join(" ", settings.PlanFor(participant, condition).Build(participant, condition)
+                .Select(t => t.Comparison.ToString("R", System.Globalization.CultureInfo.InvariantCulture) + (t.ComparisonFirst ? "c" : "s")));
+            string Multiset(string participant, string condition) => string.Join(" ", Order(participant, condition).Split(' ').OrderBy(x => x, StringComparer.Ordinal));
+            var orders = new HashSet<string>();
+            for (int p = 1; p <= 200; p++)
+                foreach (string condition in new[] { "visual", "pseudo-haptic" })
+                {
+                    Assert.That(Order("P" + p, condition), Is.EqualTo(Order("P" + p, condition)), "rebuilt, the same order");
+                    Assert.That(Multiset("P" + p, condition), Is.EqualTo(Multiset("P1", "visual")), "the same trials");
+                    orders.Add(Order("P" + p, condition));
+                }
+            Assert.That(orders, Has.Count.EqualTo(400), "400 sessions, 400 orders");
+            Assert.That(DiscriminationSettings.SessionSeed(1, "P1", "0"), Is.Not.EqualTo(DiscriminationSettings.SessionSeed(1, "P", "10")), "names are not run together");
+            Assert.That(DiscriminationSettings.SessionSeed(1, "P1", ""), Is.Not.EqualTo(DiscriminationSettings.SessionSeed(2, "P1", "")), "another study seed, another order");
+            // Pinned: the same on every runtime (FNV-1a, no string.GetHashCode): a file begun on one device resumes on another.
+            // The value from the definition, computed apart (Python: FNV-1a 64 over "P1" then "on", each closed by its length, XOR 1 × 0x9E3779B97F4A7C15).
+            Assert.That(DiscriminationSettings.SessionSeed(1, "P1", "on"), Is.EqualTo(2516963643970286428L));
         }
 
         [Test]
