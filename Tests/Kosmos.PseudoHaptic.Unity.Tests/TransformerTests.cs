@@ -73,6 +73,44 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(ended, Is.EqualTo(1), "and ended once");
         }
 
+        /// <summary>The hand moves in real time: the same lift through the Interaction SDK moves the box the same way at any Time.timeScale.</summary>
+        [Test]
+        public void TheGamesTimeScaleDoesNotChangeALift()
+        {
+            float[] Lift(float scale)
+            {
+                Time.timeScale = scale;
+                try
+                {
+                    var (grabbable, _, weight) = Object(2f);
+                    Vector3 start = weight.transform.position + new Vector3(0, 0.05f, 0);
+                    var hand = new FakeHand { Wrist = start };
+                    var interactor = new FakeHandGrabInteractor(grabbable, 3, hand);
+                    interactor.Grab();
+                    var path = new float[110];
+                    for (int i = 0; i < path.Length; i++)
+                    {
+                        Frames.Run(1);
+                        float u = Mathf.Clamp01(i / 80f);
+                        hand.Wrist = start + new Vector3(0, 0.25f * u * u * (3 - 2 * u), 0);
+                        interactor.Move();
+                        path[i] = weight.transform.position.y;
+                    }
+                    UnityEngine.Object.DestroyImmediate(weight.gameObject);
+                    UnityDouble.Frames.ResetClock();
+                    return path;
+                }
+                finally
+                {
+                    Time.timeScale = 1;
+                }
+            }
+            float[] normal = Lift(1f);
+            Assert.That(normal[normal.Length - 1] - normal[0], Is.GreaterThan(0.05f), "the box rose");
+            Assert.That(Lift(0.5f), Is.EqualTo(normal).Within(1e-5f), "slow motion");
+            Assert.That(Lift(0f), Is.EqualTo(normal).Within(1e-5f), "paused");
+        }
+
         /// <summary>Issue 26 with the Interaction SDK: the rig (its tracking space) teleports and turns mid-lift; in its frame the path is the standing-still one.</summary>
         [Test]
         public void ATeleportMidLiftCarriesTheObjectRigidlyThroughTheTransformersRig()

@@ -202,6 +202,45 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(grab.GetComponent<Rigidbody>().isKinematic, Is.True, "XRI holds the body kinematic (Instantaneous movement)");
         }
 
+        /// <summary>The hand moves in real time: the same lift through XRI moves the box the same way at any Time.timeScale.</summary>
+        [Test]
+        public void TheGamesTimeScaleDoesNotChangeALift()
+        {
+            float[] Lift(float scale, float x)
+            {
+                Time.timeScale = scale;
+                try
+                {
+                    Rig rig = MakeRig();
+                    rig.Origin.position = new Vector3(x, 0, 0);
+                    PseudoHapticWeight weight = Box("Box", 2f, new Vector3(x, 0, 0));
+                    weight.gameObject.AddComponent<PseudoHapticGrabTransformer>();
+                    var grab = weight.GetComponent<XRGrabInteractable>();
+                    Vector3 start = rig.Offset.InverseTransformPoint(weight.transform.position + new Vector3(0, 0.05f, 0));
+                    Report(rig.Right, start);
+                    Frames.Run(1);
+                    grab.interactionManager.SelectEnter(rig.RightHand, grab);
+                    var path = new float[110];
+                    for (int i = 0; i < path.Length; i++)
+                    {
+                        Report(rig.Right, start + new Vector3(0, 0.25f * Smooth(Mathf.Min(1f, i / 80f)), 0));
+                        Frames.Run(1);
+                        path[i] = weight.transform.position.y;
+                    }
+                    grab.interactionManager.SelectExit(rig.RightHand, grab);
+                    return path;
+                }
+                finally
+                {
+                    Time.timeScale = 1;
+                }
+            }
+            float[] normal = Lift(1f, 0);
+            Assert.That(normal[normal.Length - 1] - normal[0], Is.GreaterThan(0.05f), "the box rose");
+            Assert.That(Lift(0.5f, 2), Is.EqualTo(normal).Within(1e-5f), "slow motion");
+            Assert.That(Lift(0f, 4), Is.EqualTo(normal).Within(1e-5f), "paused");
+        }
+
         [Test]
         public void ATwoHandLiftIsTheWeightsTwoHandHold()
         {

@@ -148,13 +148,19 @@ namespace UnityEngine
 
     public class Time
     {
-        static double s_time, s_fixedTime;
-        static float s_deltaTime, s_fixedDeltaTime = 0.02f;
+        static double s_time, s_fixedTime, s_unscaledTime;
+        static float s_deltaTime, s_unscaledDeltaTime, s_fixedDeltaTime = 0.02f, s_timeScale = 1;
         static bool s_inFixedStep;
 
-        /// <summary>The frame's duration; inside FixedUpdate, the fixed step (as Unity).</summary>
+        /// <summary>The frame's duration in game time (the real one × <see cref="timeScale"/>); inside FixedUpdate, the fixed step (as Unity).</summary>
         public static float deltaTime => s_inFixedStep ? s_fixedDeltaTime : s_deltaTime;
-        public static float unscaledDeltaTime => s_deltaTime;
+        /// <summary>The frame's real duration, whatever <see cref="timeScale"/> is.</summary>
+        public static float unscaledDeltaTime => s_unscaledDeltaTime;
+        /// <summary>Real time since the start (the sum of <see cref="unscaledDeltaTime"/>).</summary>
+        public static double unscaledTimeAsDouble => s_unscaledTime;
+        public static float unscaledTime => (float)s_unscaledTime;
+        /// <summary>How fast game time runs against real time (Unity: 0 pauses it; deltaTime, time and the fixed steps follow it, the unscaled ones do not).</summary>
+        public static float timeScale { get => s_timeScale; set => s_timeScale = value; }
         public static float time => (float)(s_inFixedStep ? s_fixedTime : s_time);
         public static double timeAsDouble => s_inFixedStep ? s_fixedTime : s_time;
         public static float fixedTime => (float)s_fixedTime;
@@ -165,8 +171,10 @@ namespace UnityEngine
 
         internal static void BeginFrame(float dt)
         {
-            s_deltaTime = dt;
-            s_time += dt;
+            s_unscaledDeltaTime = dt;
+            s_unscaledTime += dt;
+            s_deltaTime = dt * s_timeScale;
+            s_time += s_deltaTime;
             frameCount++;
         }
 
@@ -180,8 +188,9 @@ namespace UnityEngine
 
         internal static void Reset()
         {
-            s_time = s_fixedTime = 0;
-            s_deltaTime = 0;
+            s_time = s_fixedTime = s_unscaledTime = 0;
+            s_deltaTime = s_unscaledDeltaTime = 0;
+            s_timeScale = 1;
             s_fixedDeltaTime = 0.02f;
             s_inFixedStep = false;
             frameCount = 0;

@@ -92,7 +92,7 @@ namespace Kosmos.PseudoHaptic.Interaction
             _holding = false;
             if (_grabbable == null || _weight == null || _grabs.Count == 0) return;
             if (_rig != null && _weight.Hold.HandCount == 0) _weight.Rig = _rig; // the hold is solved in the rig's frame
-            _clock.Start(Time.timeAsDouble);
+            _clock.Start(Time.unscaledTimeAsDouble);
             for (int i = 0; i < _grabs.Count; i++) _weight.BeginHold(_grabs.IdAt(i), HandPose(i, out _, out _), double.NaN, RigidbodyControl.External);
             _holding = _weight.IsHeld;
         }
@@ -100,7 +100,7 @@ namespace Kosmos.PseudoHaptic.Interaction
         public void UpdateTransform()
         {
             if (!_holding || _grabs.Count == 0) return;
-            float dt = _clock.Delta(Time.timeAsDouble); // 0 when called twice in a frame: the solver moves nothing
+            float dt = _clock.Delta(Time.unscaledTimeAsDouble); // 0 when called twice in a frame: the solver moves nothing
             // x/z: the mean of the grabbing hands and the offset taken when they changed (HeldObject.GrabTarget), or the solver's.
             for (int i = 0; i < _grabs.Count; i++)
             {

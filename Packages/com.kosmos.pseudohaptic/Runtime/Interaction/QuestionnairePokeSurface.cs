@@ -63,7 +63,7 @@ namespace Kosmos.PseudoHaptic.Interaction
         void HandlePointerEvent(PointerEvent evt)
         {
             if (evt.Type != PointerEventType.Select || _panel == null) return;
-            _panel.PokeAt(evt.Pose.position, Time.timeAsDouble);
+            _panel.PokeAt(evt.Pose.position, Time.unscaledTimeAsDouble);
         }
     }
 }

@@ -104,9 +104,9 @@ namespace Kosmos.PseudoHaptic
             bool tracked = hand == null || hand.IsTracked;
             if (_collider != null && _collider.enabled != tracked) _collider.enabled = tracked;
 
-            if (_follow == null && _findUnder != null && Time.timeAsDouble >= _nextSearch)
+            if (_follow == null && _findUnder != null && Time.unscaledTimeAsDouble >= _nextSearch)
             {
-                _nextSearch = Time.timeAsDouble + SearchInterval;
+                _nextSearch = Time.unscaledTimeAsDouble + SearchInterval;
                 _follow = FindBone(_findUnder, _boneNameEnding);
             }
             if (tracked && _follow != null) transform.position = _follow.position;

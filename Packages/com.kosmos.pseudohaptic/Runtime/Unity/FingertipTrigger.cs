@@ -12,7 +12,7 @@ namespace Kosmos.PseudoHaptic
     {
         readonly ContactSet _fingertips = new ContactSet();
 
-        /// <summary>A fingertip's contact begins at <paramref name="now"/> (Time.timeAsDouble).</summary>
+        /// <summary>A fingertip's contact begins at <paramref name="now"/> (Time.unscaledTimeAsDouble).</summary>
         protected abstract void Touched(double now);
 
         /// <summary>A fingertip's contact lasts at <paramref name="now"/>.</summary>
@@ -22,12 +22,12 @@ namespace Kosmos.PseudoHaptic
         {
             if (other.GetComponent<FingertipPoker>() == null) return;
             _fingertips.Add(other.GetInstanceID());
-            Touched(Time.timeAsDouble);
+            Touched(Time.unscaledTimeAsDouble);
         }
 
         protected void OnTriggerStay(Collider other)
         {
-            if (_fingertips.Contains(other.GetInstanceID())) Stayed(Time.timeAsDouble);
+            if (_fingertips.Contains(other.GetInstanceID())) Stayed(Time.unscaledTimeAsDouble);
         }
 
         protected void OnTriggerExit(Collider other) => _fingertips.Remove(other.GetInstanceID());

@@ -99,7 +99,7 @@ namespace Kosmos.PseudoHaptic
             Release();
         }
 
-        void LateUpdate() => Tick(Time.deltaTime);
+        void LateUpdate() => Tick(Time.unscaledDeltaTime);
 
         /// <summary>One frame of the grab; LateUpdate calls it, tests may too.</summary>
         public void Tick(float dt)

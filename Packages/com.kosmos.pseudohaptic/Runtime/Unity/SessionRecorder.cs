@@ -105,7 +105,7 @@ namespace Kosmos.PseudoHaptic
         void OnHoldBegan(PseudoHapticWeight w)
         {
             HandSample hand = w.LastHand;
-            if (SessionLog.IsListed(w, _objects)) Log.Began(w, w.name, w.Solver, in hand, Time.timeAsDouble);
+            if (SessionLog.IsListed(w, _objects)) Log.Began(w, w.name, w.Solver, in hand, Time.unscaledTimeAsDouble);
         }
 
         void OnHoldStepped(PseudoHapticWeight w)

@@ -78,7 +78,7 @@ namespace Kosmos.PseudoHaptic
             if (_beginOnStart) Begin();
         }
 
-        void Update() => Tick(Time.deltaTime);
+        void Update() => Tick(Time.unscaledDeltaTime);
 
         /// <summary>Starts (or restarts) a calibration.</summary>
         [ContextMenu("Begin calibration")]

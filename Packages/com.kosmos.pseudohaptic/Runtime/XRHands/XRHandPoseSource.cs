@@ -58,9 +58,9 @@ namespace Kosmos.PseudoHaptic.XRHands
         {
             get
             {
-                if ((_subsystem == null || !_subsystem.running) && Time.timeAsDouble >= _nextSearch)
+                if ((_subsystem == null || !_subsystem.running) && Time.unscaledTimeAsDouble >= _nextSearch)
                 {
-                    _nextSearch = Time.timeAsDouble + 0.5;
+                    _nextSearch = Time.unscaledTimeAsDouble + 0.5;
                     SubsystemManager.GetSubsystems(s_subsystems);
                     _subsystem = s_subsystems.Count > 0 ? s_subsystems[0] : null;
                 }

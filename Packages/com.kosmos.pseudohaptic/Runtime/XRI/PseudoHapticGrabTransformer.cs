@@ -111,7 +111,7 @@ namespace Kosmos.PseudoHaptic.XRI
             if (_hands.Count == 0 || !_weight.IsHeld) return;
             if (updatePhase == XRInteractionUpdateOrder.UpdatePhase.Dynamic)
             {
-                float dt = _clock.Delta(Time.timeAsDouble); // 0 when called twice in a frame: the solver moves nothing
+                float dt = _clock.Delta(Time.unscaledTimeAsDouble); // 0 when called twice in a frame: the solver moves nothing
                 for (int i = 0; i < _hands.Count; i++)
                 {
                     Vector3 hand = HandPosition(_hands.SourceAt(i), grabInteractable, out bool tracked);
@@ -176,7 +176,7 @@ namespace Kosmos.PseudoHaptic.XRI
                     _hands.Remove(id); // not taken (a third hand, a broken-away hold, a bad setting): tried again at the next change
                     continue;
                 }
-                if (first) _clock.Start(Time.timeAsDouble);
+                if (first) _clock.Start(Time.unscaledTimeAsDouble);
             }
         }
 

@@ -214,6 +214,47 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(visual.localPosition.y, Is.EqualTo(0f).Within(1e-6f), "back on the tracked hand");
         }
 
+        /// <summary>
+        /// The player's hand moves in real time whatever the game's clock does (slow motion, a pause menu at timeScale 0):
+        /// the same real lift moves the box the same way, frame by frame, at any <c>Time.timeScale</c>. On the game's
+        /// clock a hand at half speed read as twice as fast (the lightest gain), and at 0 nothing moved.
+        /// </summary>
+        [UnityTest]
+        public IEnumerator TheGamesTimeScaleDoesNotChangeALift()
+        {
+            float[] scales = { 1f, 0.5f, 0f };
+            var paths = new float[scales.Length][];
+            Time.captureDeltaTime = FrameTime;
+            try
+            {
+                for (int k = 0; k < scales.Length; k++)
+                {
+                    Time.timeScale = scales[k];
+                    PseudoHapticWeight box = Box("2 kg at " + scales[k], 2f, new Vector3(0.3f * k, 0, 0));
+                    Vector3 start = box.transform.position + new Vector3(0, 0.05f, 0);
+                    var hand = new ScriptedHand(start) { IsPinching = true };
+                    Track(new GameObject("hand " + k)).AddComponent<PinchGrab>().InjectHand(hand);
+                    paths[k] = new float[110];
+                    for (int i = 0; i < paths[k].Length; i++)
+                    {
+                        yield return null;
+                        hand.Track(start + new Vector3(0, 0.25f * (float)ScriptedHand.MinimumJerk(Mathf.Min(1f, i / 80f)), 0), Time.unscaledDeltaTime);
+                        paths[k][i] = box.transform.localPosition.y;
+                    }
+                    hand.IsPinching = false;
+                    for (int i = 0; i < 9; i++) yield return null;
+                }
+            }
+            finally
+            {
+                Time.timeScale = 1;
+                Time.captureDeltaTime = 0;
+            }
+            Assert.That(paths[0][paths[0].Length - 1], Is.GreaterThan(0.05f), "the box rose");
+            for (int k = 1; k < scales.Length; k++)
+                Assert.That(paths[k], Is.EqualTo(paths[0]).Within(1e-5f), "timeScale " + scales[k]);
+        }
+
         /// <summary>In the player loop: the grab runs in LateUpdate and the hand moves between frames.</summary>
         [UnityTest]
         public IEnumerator InThePlayerLoopHeavierBoxesEndLower()
