@@ -127,6 +127,12 @@ namespace Kosmos.PseudoHaptic.Evaluation
         }
 
         /// <summary>A field as CSV writes it: quoted when it holds a comma, quote, line break or edge space.</summary>
+        /// <summary>
+        /// The lines of <paramref name="text"/> as the reader numbers them (line n at index n − 1): a line ends at "\r\n",
+        /// "\n" or a lone "\r" (a file saved with old Mac line ends), its end not included.
+        /// </summary>
+        public static string[] Lines(string text) => (text ?? "").Replace("\r\n", "\n").Replace('\r', '\n').Split('\n');
+
         public static string Escape(string field)
         {
             if (string.IsNullOrEmpty(field)) return "";

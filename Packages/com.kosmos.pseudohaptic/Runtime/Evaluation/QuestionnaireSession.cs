@@ -291,7 +291,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             ResponsesCsv.Parse(text, ResponsesPath, Catalog);
 
             if (text.Length > 0 && text[0] == '\uFEFF') text = text.Substring(1);
-            string[] lines = text.Split('\n');
+            string[] lines = CsvTable.Lines(text); // numbered as the reader numbers them
             var table = CsvTable.Parse(text, ResponsesPath, ResponsesCsv.Columns);
 
             int headerAt = 0;

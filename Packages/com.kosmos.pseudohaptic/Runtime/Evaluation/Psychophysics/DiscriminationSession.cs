@@ -241,7 +241,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
             TrialsCsv.Read(new StringReader(text), TrialsPath);
             var present = new bool[0];
             var columns = TrialsCsv.Header.Split(',');
-            string[] lines = (text.Length > 0 && text[0] == '\uFEFF' ? text.Substring(1) : text).Split('\n');
+            string[] lines = CsvTable.Lines(text.Length > 0 && text[0] == '\uFEFF' ? text.Substring(1) : text); // numbered as the reader numbers them
             foreach (var row in CsvTable.Stream(new StringReader(text), TrialsPath, int.MaxValue, long.MaxValue, columns, new string[0], present))
             {
                 var verbatim = new StringBuilder(lines[row.Line - 1].TrimEnd('\r'));

@@ -73,6 +73,20 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(finished.IsFinished, Is.True);
         }
 
+        /// <summary>A file saved with lone "\r" line ends (an editor's old Mac setting, no final line end) resumes as the reader numbers its lines; it threw IndexOutOfRangeException.</summary>
+        [Test]
+        public void AFileWithLoneCarriageReturnsResumes()
+        {
+            var observer = new SimulatedObserver(0.52, 0.05, 1);
+            var first = new DiscriminationSession("P1", "on", Path1, Plan());
+            for (int i = 0; i < 3; i++) AnswerLikeTheObserver(first, observer);
+            File.WriteAllText(Path1, File.ReadAllText(Path1).TrimEnd('\n').Replace('\n', '\r'));
+            var resumed = new DiscriminationSession("P1", "on", Path1, Plan());
+            Assert.That(resumed.ResumedCount, Is.EqualTo(3));
+            while (!resumed.IsFinished) AnswerLikeTheObserver(resumed, observer);
+            Assert.That(TrialsCsv.Read(new StringReader(File.ReadAllText(Path1)), "trials.csv").Count, Is.EqualTo(7));
+        }
+
         [Test]
         public void AFileOfAnotherPlanIsRefusedAndLeftAlone()
         {

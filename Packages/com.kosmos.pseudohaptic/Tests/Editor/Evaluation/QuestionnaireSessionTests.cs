@@ -222,6 +222,17 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(FileAsScoreReadsIt().Count, Is.EqualTo(4));
         }
 
+        /// <summary>Lone "\r" line ends and no final line end: the file resumes as score reads it (it threw IndexOutOfRangeException).</summary>
+        [Test]
+        public void AFileWithLoneCarriageReturnsResumes()
+        {
+            File.WriteAllText(path, "participant,questionnaire,item,response\rP2,immersion,1,4\rP1,weight-detection,1,2");
+            var s = Session();
+            Assert.That(s.ResumedCount, Is.EqualTo(1));
+            s.Answer(5);
+            Assert.That(DataLines(), Is.EqualTo(new[] { "P2,immersion,1,4", "P1,weight-detection,1,2", "P1,weight-detection,2,5" }));
+        }
+
         [Test]
         public void AParticipantIdWithACommaIsQuotedAndResumes()
         {
