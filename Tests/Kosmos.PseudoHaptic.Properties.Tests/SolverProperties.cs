@@ -21,7 +21,7 @@ public class SolverProperties
     /// <summary>
     /// The same rule over paths of several moves (ArtifactCase.AnyPath: one to five moves anywhere from 0.5 to 1.6 m, with
     /// pauses). A search, not a test of the rule as stated: over such paths it finds cases beyond 10 mm, each listed with its
-    /// cause in ALGORITHM.md (§2, "Beyond the rule's family") and quality.md ("Generated properties"). Run it with a seed and
+    /// cause in ALGORITHM.md (§2, "Rule 1 over generated holds") and quality.md ("Generated properties"). Run it with a seed and
     /// more cases to see one, shrunk:
     /// PSEUDOHAPTIC_PROPERTY_SEED=2 PSEUDOHAPTIC_PROPERTY_SCALE=10 dotnet test Tests/Kosmos.PseudoHaptic.Properties.Tests --filter Name~OnPathsOfSeveralMoves
     /// </summary>

@@ -80,7 +80,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="TrackingLossHold"/>: how long the current loss has lasted, s (0 while tracked).</summary>
         public double LostFor;
 
-        /// <summary><see cref="FasterMovesFurther"/>: the lift's pace, m/s (the fastest mean speed of its rise so far),
+        /// <summary><see cref="FasterMovesFurther"/>: the lift's pace, m/s (the mean speed of its rise from where it began to its highest point so far),
         /// 0 while the hand rests at the base.</summary>
         public double Pace;
 

@@ -39,7 +39,7 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>
         /// <see cref="Paper"/> in three dimensions and with both hands (for <see cref="WeightSolver3D"/>): height
-        /// deceleration (first among the object-motion effects, so the speed cap, the lowering guard and the offset
+        /// deceleration (in the lift stage, before the position effects, so the speed cap, the lowering guard and the offset
         /// correction act on its result), lateral inertia and two hands, at their defaults.
         /// </summary>
         public static readonly WeightProfile Xyz = BuildXyz();

@@ -7,7 +7,8 @@ namespace Kosmos.PseudoHaptic
     /// the same weight, ... the movement of the two fast-moving virtual objects was greater". A gain that is constant
     /// in speed cannot keep that rule, and in it the user's standard speed v_std would cancel. For an object heavier
     /// than the standard (G &lt; 1) the gain on the lift is
-    /// <code>G_p = G^r,  r = clamp(1/√x, <see cref="FastExponent"/>, <see cref="SlowExponent"/>),  x = κ · p / v_std</code>
+    /// <code>G_p = G^r,  r = clamp(x^(−s), <see cref="FastExponent"/>, <see cref="SlowExponent"/>),  x = κ · p / v_std</code>
+    /// (s = <see cref="Sensitivity"/>, 0.06 by default)
     /// where p is the lift's pace: the mean speed of its rise from the base to its highest point so far, which settles
     /// once the rise pauses for <see cref="PauseTime"/> and starts over when the hand is back at the base. κ =
     /// <see cref="StandardLiftRatio"/> makes a lift at the user's standard speed read x = 1, where G_p = G (Eq. 4–6);
@@ -39,7 +40,7 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>
         /// Mean speed of a standard lift's 10–90 % span (how <see cref="StandardSpeedCalibration"/> measures v_std) over
-        /// its pace as this effect measures it (the fastest mean speed from leaving a 5 mm band at the base), for a
+        /// its pace as this effect measures it (the mean speed from leaving a 5 mm band at the base to the top), for a
         /// minimum-jerk lift: a lift at the user's standard speed reads x = 1 (`FasterMovesFurtherTests`).
         /// </summary>
         public const double StandardLiftRatio = 1.29;

@@ -4,7 +4,7 @@ using Kosmos.PseudoHaptic.Simulation;
 using Kosmos.PseudoHaptic.Tests.Stability;
 using NUnit.Framework;
 
-namespace Kosmos.PseudoHaptic.Tests
+namespace Kosmos.PseudoHaptic.Tests.Stability
 {
     /// <summary>
     /// Issue 32's "Done when", first bullet: the light-object, implausible-pose and repeated-pose cases as properties over

@@ -3,7 +3,7 @@ using System.Collections.Generic;
 using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 
-namespace Kosmos.PseudoHaptic.Tests
+namespace Kosmos.PseudoHaptic.Tests.Stability
 {
     /// <summary>
     /// Issue 32, "Objects lighter than the standard amplify what is not motion": the cases the issue lists, each as found.

@@ -1,7 +1,7 @@
 using System;
 using NUnit.Framework;
 
-namespace Kosmos.PseudoHaptic.Tests
+namespace Kosmos.PseudoHaptic.Tests.Stability
 {
     /// <summary>
     /// The step rules read, for each frame, the frames within 100 ms of it from <see cref="NearFrames.Ranges"/>; these

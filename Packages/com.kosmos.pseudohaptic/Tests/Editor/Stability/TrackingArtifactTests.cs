@@ -2,7 +2,7 @@ using System;
 using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 
-namespace Kosmos.PseudoHaptic.Tests
+namespace Kosmos.PseudoHaptic.Tests.Stability
 {
     /// <summary>
     /// P12 and issue 22's rules 1 and 5: the offset between hand and object has one source, the weight applied to the hand's

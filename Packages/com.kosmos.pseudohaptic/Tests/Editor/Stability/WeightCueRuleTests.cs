@@ -2,7 +2,7 @@ using System;
 using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
 
-namespace Kosmos.PseudoHaptic.Tests
+namespace Kosmos.PseudoHaptic.Tests.Stability
 {
     /// <summary>
     /// Issue 22's rules 2–4 as properties over hundreds of seeds, every hold degraded as a Quest degrades it
