@@ -11,11 +11,16 @@ public static class BenchmarkCosts
 {
     public const string EstimatorColumn = "Estimator";
 
+    /// <summary>The report files <see cref="Read"/> reads from <paramref name="path"/> (none when it is null or missing).</summary>
+    public static string[] ReportFiles(string? path)
+        => path == null ? Array.Empty<string>()
+            : Directory.Exists(path) ? Directory.GetFiles(path, "*-report.csv").OrderBy(f => f, StringComparer.Ordinal).ToArray()
+            : File.Exists(path) ? new[] { path } : Array.Empty<string>();
+
     /// <summary>Estimator key → ns per update, from one report file or every *-report.csv in a directory.</summary>
     public static Dictionary<string, double> Read(string path)
     {
-        var files = Directory.Exists(path) ? Directory.GetFiles(path, "*-report.csv").OrderBy(f => f, StringComparer.Ordinal).ToArray()
-            : File.Exists(path) ? new[] { path }
+        var files = Directory.Exists(path) || File.Exists(path) ? ReportFiles(path)
             : throw new CliException($"--costs {Files.Messages.Path(path)}: does not exist");
         var costs = new Dictionary<string, double>(StringComparer.Ordinal);
         foreach (var file in files)

@@ -21,6 +21,13 @@ public static class ParetoChart
     sealed record Point(string Key, double Ns, double RmsMm, double Low, double High, string Label, int Group);
 
     public static void Save(string path, AccuracyReport report, IReadOnlyDictionary<string, double> costs, bool svg)
+        => Charts.Save(Build(report, costs), path, Width, Height, svg);
+
+    /// <summary>The chart as SVG text (accuracy --svg writes it through its own output file, beside the PNG).</summary>
+    public static string Svg(AccuracyReport report, IReadOnlyDictionary<string, double> costs)
+        => Charts.Svg(Build(report, costs), Width, Height);
+
+    static ScottPlot.Plot Build(AccuracyReport report, IReadOnlyDictionary<string, double> costs)
     {
         var groups = new[]
         {
@@ -155,7 +162,6 @@ public static class ParetoChart
             var at = plot.GetCoordinates(new ScottPlot.Pixel((float)place.X, (float)place.Y));
             Charts.Note(plot, at.X, at.Y, text);
         }
-
-        Charts.Save(plot, path, Width, Height, svg);
+        return plot;
     }
 }

@@ -58,13 +58,20 @@ public static class AccuracyCommand
         string? costsPath = o.Get("--costs"), chartPath = o.Get("--chart");
         if (chartPath != null && costsPath == null) throw new CliException("option --chart needs --costs (BenchmarkDotNet's results folder or report CSV)");
         if (svg && chartPath == null) throw new CliException($"option --svg needs --chart (the SVG is written beside the PNG)");
+        if (svg && chartPath == "-") throw new CliException($"option --svg needs --chart to be a file (the SVG is written beside the PNG), not standard output");
         // Outputs are checked before anything is read: never an input, never a folder, never a missing folder.
         string? trace = o.Get("--trace"), mocapOption = o.Get("--mocap"), csv = o.Get("--csv"), markdown = o.Get("--markdown");
-        var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapOption == "none" ? null : mocapOption), new NamedPath("--costs", costsPath) };
+        // Every file read is an input an output must not replace: the motion capture found by default, and the reports in a
+        // --costs folder, too.
+        string? mocapInput = mocapOption == null ? FindMocap() : mocapOption == "none" ? null : mocapOption;
+        var inputs = new[] { new NamedPath("--trace", trace), new NamedPath("--mocap", mocapInput), new NamedPath("--costs", costsPath) }
+            .Concat(BenchmarkCosts.ReportFiles(costsPath).Select(f => new NamedPath("--costs", f))).ToArray();
         var csvOut = csv != null ? OutputFile.Check("--csv", csv, inputs) : null;
         var chartOut = chartPath != null ? OutputFile.Check("--chart", chartPath, inputs) : null;
+        string? svgPath = svg ? Path.ChangeExtension(chartPath!, ".svg") : null;
+        var svgOut = svgPath != null ? OutputFile.Check("--svg", svgPath, inputs) : null;
         var markdownOut = markdown != null ? OutputFile.Check("--markdown", markdown, inputs) : null;
-        var outputs = new[] { ("--csv", csv), ("--chart", chartPath), ("--markdown", markdown) }.Where(x => x.Item2 != null && x.Item2 != "-").ToList();
+        var outputs = new[] { ("--csv", csv), ("--chart", chartPath), ("--markdown", markdown), ("--svg", svgPath) }.Where(x => x.Item2 != null && x.Item2 != "-").ToList();
         for (int i = 0; i < outputs.Count; i++)
             for (int j = 0; j < i; j++)
             {
@@ -121,13 +128,13 @@ public static class AccuracyCommand
         markdownOut?.Write(w => AccuracyMarkdown.Write(w, report, golfBall!, costs, inputsRecord));
         if (chartOut != null && costs != null)
         {
-            // The PNG is written atomically; the SVG (--svg) is written beside the final path.
+            // The PNG (with its inputs record) and the SVG beside it (--svg), each through its own output file.
             chartOut.WriteWith(temp =>
             {
                 ParetoChart.Save(temp, report, costs, false);
                 File.WriteAllBytes(temp, PngText.With(File.ReadAllBytes(temp), AccuracyInputs.Marker, inputsRecord.Line));
             });
-            if (svg) ParetoChart.Save(chartPath!, report, costs, true);
+            svgOut?.Write(w => w.Write(ParetoChart.Svg(report, costs)));
         }
         var written = new[] { csv, markdown, chartPath }.Where(p => p != null).Select(p => Messages.Path(p!)).ToList();
         say.WriteLine();

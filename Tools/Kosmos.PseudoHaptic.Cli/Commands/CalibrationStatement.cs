@@ -16,7 +16,7 @@ public static class CalibrationStatement
         double fast = ReferenceLift.EndLag(profile, massKg, FastUser, cueStrength);
         string Mm(double lag) => NumberText.Fixed(Math.Abs(lag) * 1000, 1) + " mm";
         string Side(double lag) => lag >= 0 ? "behind" : "ahead";
-        return $"v_std {standardSpeed.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture)} m/s: a {NumberText.Format(ReferenceLift.Rise)} m lift of {NumberText.Format(massKg)} kg in {NumberText.Format(ReferenceLift.DefaultSeconds)} s ends {Mm(at)} {Side(at)} under {profile.Name}"
+        return $"v_std {standardSpeed.ToString("0.###", System.Globalization.CultureInfo.InvariantCulture)} m/s: a {NumberText.Format(ReferenceLift.Rise)} m lift of {NumberText.Format(massKg)} kg in {NumberText.Format(ReferenceLift.DefaultSeconds)} s ends {Mm(at)} {Side(at)} under {Files.Messages.OneLine(profile.Name)}"
                + (cueStrength != 1 ? $" at cue strength {NumberText.Fixed(cueStrength, 3)}" : "")
                + $"; at {NumberText.Format(SlowUser)} or {NumberText.Format(FastUser)} m/s {Mm(slow)} or {Mm(fast)} {Side(fast)}"
                + $" (the standard speed moves it {NumberText.Fixed(Math.Abs(fast - slow) * 1000, 1)} mm over that range)";

@@ -66,7 +66,7 @@ public static class CompareCommand
         return 0;
     }
 
-    static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");
+    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("comparisons.csv", "report.md", "chart*.png");
 
     static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "-";
 

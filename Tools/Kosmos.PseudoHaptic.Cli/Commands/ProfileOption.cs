@@ -28,8 +28,7 @@ public static class ProfileOption
         if (NamedProfiles.Names.Contains(name)) return NamedProfiles.Get(name);
         if (!IsPath(name))
             throw new CliException($"option {option}: unknown profile '{Messages.OneLine(name)}'; expected {string.Join(", ", NamedProfiles.Names)} or a profile file FILE.json");
-        string text;
-        using (var reader = InputFile.OpenText(option, name)) text = reader.ReadToEnd();
+        string text = InputFile.ReadSmallText(option, name);
         try { return ProfileJson.Read(text, Messages.OneLine(name)); }
         catch (ProfileFormatException e) { throw new CliException($"option {option}: {Messages.OneLine(e.Message)}"); }
         catch (ArgumentException e) { throw new CliException($"option {option}: {Messages.OneLine(name)}: {Messages.OneLine(e.Message)}"); }

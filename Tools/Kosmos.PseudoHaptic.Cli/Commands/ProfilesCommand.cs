@@ -57,7 +57,7 @@ public static class ProfilesCommand
         {
             var profile = ProfileOption.Resolve(show, option: "--show");
             text = json ? ProfileJson.Write(profile) : Show(profile);
-            what = $"profile {profile.Name}, {profile.Effects.Count} effects{(json ? " as JSON" : "")}";
+            what = $"profile {Messages.OneLine(profile.Name)}, {profile.Effects.Count} effects{(json ? " as JSON" : "")}";
         }
         target.Write(w => w.Write(text));
         (target.IsStandardOutput ? Console.Error : Console.Out).WriteLine($"profiles: {what} -> {Messages.OneLine(output)}");
@@ -88,7 +88,7 @@ public static class ProfilesCommand
     public static string Show(WeightProfile profile)
     {
         var sb = new StringBuilder();
-        sb.Append("Profile ").Append(profile.Name).Append(": ").Append(profile.Effects.Count).Append(" effects").Append(profile.HandFilter != null ? ", hand filter " + profile.HandFilter.Name : "").Append('\n');
+        sb.Append("Profile ").Append(Messages.OneLine(profile.Name)).Append(": ").Append(profile.Effects.Count).Append(" effects").Append(profile.HandFilter != null ? ", hand filter " + profile.HandFilter.Name : "").Append('\n');
         foreach (var e in profile.Effects)
         {
             var d = EffectRegistry.Of(e);

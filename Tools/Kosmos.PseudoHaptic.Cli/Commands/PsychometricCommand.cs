@@ -81,7 +81,7 @@ public static class PsychometricCommand
         return 0;
     }
 
-    static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");
+    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("fits.csv", "report.md", "fit-*.png", "summary.png");
 
     static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "-";
 

@@ -79,7 +79,7 @@ public static class ReportCommand
     }
 
     /// <summary>What an existing --out folder may hold to be replaced: files of an earlier report (no folders).</summary>
-    static readonly OutputFolder.Owns Owns = OutputFolder.FilesEndingWith(folders: false, ".md", ".csv", ".png", ".svg");
+    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("report.md", "summary.csv", "table*.csv", "chart*.png", "chart*.svg");
 
     static string Fixed(double v) => double.IsFinite(v) ? NumberText.Fixed(v, 2) : "-";
 }

@@ -18,8 +18,7 @@ public static class UserFile
     /// <summary>The cue strength of USER.json given as <paramref name="option"/>.</summary>
     public static double ReadCueStrength(string option, string path)
     {
-        string text;
-        using (var reader = InputFile.OpenText(option, path)) text = reader.ReadToEnd();
+        string text = InputFile.ReadSmallText(option, path);
         string name = Messages.OneLine(path);
         JsonDocument doc;
         try { doc = JsonDocument.Parse(text); }

@@ -42,6 +42,24 @@ public static class InputFile
     public static StreamReader OpenText(string option, string path)
         => new(new ReadErrors(Open(option, path), option, path), new UTF8Encoding(false), detectEncodingFromByteOrderMarks: true, 65536);
 
+    /// <summary>
+    /// A small file whole (a profile, a user's file), read up to <paramref name="maxCharacters"/>: beyond it (a wrong file,
+    /// /dev/zero) it is refused naming the option, so memory stays bounded whatever the file's size.
+    /// </summary>
+    public static string ReadSmallText(string option, string path, int maxCharacters = MaxSmallFile)
+    {
+        using var reader = OpenText(option, path);
+        var buffer = new char[maxCharacters + 1];
+        int read = 0, n;
+        while (read < buffer.Length && (n = reader.Read(buffer, read, buffer.Length - read)) > 0) read += n;
+        if (read > maxCharacters)
+            throw new CliException($"{option} {Messages.Path(path)}: longer than {maxCharacters:N0} characters; expected a small JSON file");
+        return new string(buffer, 0, read);
+    }
+
+    /// <summary>The longest profile or user's file read, characters (a profile of every effect is about 3,000).</summary>
+    public const int MaxSmallFile = 1 << 20;
+
     /// <summary>Turns a failure while reading into one line naming the input.</summary>
     sealed class ReadErrors(Stream inner, string option, string path) : Stream
     {

@@ -44,6 +44,14 @@ public sealed class OutputFolder
         return true;
     };
 
+    /// <summary>
+    /// Files whose names match one of <paramref name="patterns"/> ("fits.csv", "fit-*.png"; case-insensitive), the names
+    /// the command writes: a folder holding another study's CSV or the user's notes is refused, not replaced.
+    /// </summary>
+    public static Owns FilesNamed(params string[] patterns) => entry =>
+        entry is FileInfo && entry.LinkTarget == null
+        && Array.Exists(patterns, p => System.IO.Enumeration.FileSystemName.MatchesSimpleExpression(p, entry.Name, ignoreCase: true));
+
     /// <summary>Checks <paramref name="path"/> (nothing is created).</summary>
     public static void Check(string option, string path, Owns owns, bool createParents, params NamedPath[] inputs)
         => Resolve(option, path, owns, createParents, inputs, create: false);
