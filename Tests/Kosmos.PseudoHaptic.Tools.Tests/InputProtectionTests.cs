@@ -45,6 +45,16 @@ public class InputProtectionTests : CliTestFolder
     }
 
     [Test]
+    public void ReportRefusesScoresWithConditionsInWordsAndSaysWhatDoes()
+    {
+        string output = Path.Combine(_dir, "report");
+        var r = Run("report", "--scores", Path.Combine(Examples, "study", "scores.csv"), "--out", output);
+        Refused(r, "has a condition column");
+        Assert.That(r.stderr, Does.Contain("pseudohaptic compare"));
+        Assert.That(Directory.Exists(output), Is.False);
+    }
+
+    [Test]
     public void AProfileOrUsersFileOfUnboundedSizeIsRefusedInBoundedMemory()
     {
         if (!File.Exists("/dev/zero")) Assert.Ignore("needs /dev/zero");

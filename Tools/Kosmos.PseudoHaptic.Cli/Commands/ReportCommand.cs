@@ -43,6 +43,7 @@ public static class ReportCommand
 
         // Everything is read, checked and rendered before the folder is made; it then appears whole.
         // One score per participant and part: the rows are bounded by the participants, as score's answers are.
+        RefuseConditions(scoresPath);
         int maxScores = EvaluationInputs.MaxScoreRows(catalog);
         var scores = ScoresCsv.Parse(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), catalog, maxScores, 64L * maxScores);
         ResponseSet? responses = responsesPath != null
@@ -79,6 +80,33 @@ public static class ReportCommand
     }
 
     /// <summary>What an existing --out folder may hold to be replaced: files of an earlier report (no folders).</summary>
+    /// <summary>
+    /// report summarizes one score per participant and part; a scores file with a condition column (score's output for
+    /// answers with conditions) has one per condition, which compare compares: refused in words, not as a "duplicate score".
+    /// The header only is read, at most 1 MiB of it.
+    /// </summary>
+    static void RefuseConditions(string scoresPath)
+    {
+        var header = new System.Text.StringBuilder();
+        using (var reader = EvaluationInputs.OpenText("--scores", scoresPath))
+        {
+            int c;
+            while ((c = reader.Read()) >= 0 && header.Length < (1 << 20))
+            {
+                if (c == '\n' || c == '\r')
+                {
+                    if (header.ToString().Trim().Length > 0) break;
+                    header.Clear();
+                    continue;
+                }
+                header.Append((char)c);
+            }
+        }
+        foreach (string name in header.ToString().Split(','))
+            if (string.Equals(name.Trim().Trim('"').Trim(), "condition", StringComparison.OrdinalIgnoreCase))
+                throw new CliException($"--scores {Messages.Path(scoresPath)}: has a condition column: report summarizes one score per participant and part; compare the conditions with 'pseudohaptic compare', or report each condition's rows apart");
+    }
+
     static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("report.md", "summary.csv", "table*.csv", "chart*.png", "chart*.svg");
 
     static string Fixed(double v) => double.IsFinite(v) ? NumberText.Fixed(v, 2) : "-";
