@@ -45,6 +45,22 @@ public class InputProtectionTests : CliTestFolder
     }
 
     [Test]
+    public void UnityPackageRefusesStandardOutputAsItsFolder()
+    {
+        string cwd = Directory.GetCurrentDirectory();
+        try
+        {
+            Directory.SetCurrentDirectory(_dir);
+            Refused(Run("unity-package", "--out", "-", "--package", Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic")), "--out -");
+            Assert.That(Directory.Exists(Path.Combine(_dir, "-")), Is.False, "no folder named '-'");
+        }
+        finally
+        {
+            Directory.SetCurrentDirectory(cwd);
+        }
+    }
+
+    [Test]
     public void ReportRefusesScoresWithConditionsInWordsAndSaysWhatDoes()
     {
         string output = Path.Combine(_dir, "report");

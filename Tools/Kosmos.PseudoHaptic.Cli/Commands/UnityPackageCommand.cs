@@ -49,6 +49,7 @@ public static class UnityPackageCommand
         string outDir = o.Require("--out");
         string package = o.Get("--package") ?? DefaultPackage;
         if (outDir.Length == 0) throw new CliException("option --out: the path is empty");
+        if (outDir == "-") throw new CliException("--out -: this command writes a tarball into a folder, not to standard output");
         if (package.Length == 0) throw new CliException("option --package: the path is empty");
         var (name, version) = Manifest(package);
         var files = Select(package);
