@@ -194,7 +194,7 @@ public class ReplayCliTests : CliTestFolder
     }
 
     [Test]
-    public void GrabOffsetShiftsThePathExactlyWhereNoFloorIsInTheWay([Values("paper", "paper-experiment", "gain")] string profile,
+    public void GrabOffsetShiftsThePathExactlyWhereNoFloorIsInTheWay([Values("paper", "paper-experiment", "gain", "paper-literal")] string profile,
         [Values("0.12", "0.3", "-0.1", "0")] string offset, [Values("0.5", "2", "0.01")] string mass)
     {
         // Rows before the first usable pose, a lift, a short loss and a lowering, far above the floor.

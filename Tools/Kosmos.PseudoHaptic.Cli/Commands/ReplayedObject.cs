@@ -50,13 +50,15 @@ public sealed class ReplayedPaperLiteral(double massKg, double cueStrength) : IR
     public double CueStrength => _solver.CueStrength;
     public bool IsHolding => _holding;
     public double ObjectX => _x;
-    public double ObjectY => _solver.ObjectY;
+    // The solver holds the object at the hand; the grab's offset is taken off at the end, so that the path with an offset
+    // is the path without it shifted by −D exactly (issue 9's contract), not integrated from another height.
+    public double ObjectY => _solver.ObjectY - _grabY;
     public double ObjectZ => _z;
 
     public void BeginHoldWithGrabOffset(in HandPose first, in HandPose second, double objectX, double grabOffsetY, double objectZ)
     {
         _grabY = grabOffsetY;
-        _solver.BeginHold(first.Y, first.Y - grabOffsetY);
+        _solver.BeginHold(first.Y, first.Y);
         _x = objectX;
         _z = objectZ;
         _gx = objectX - first.X;
