@@ -11,7 +11,8 @@ namespace Kosmos.PseudoHaptic.Tests
     /// The Interaction SDK 68.0.0's Grabbable as the transformer meets it, written from its documented behaviour and
     /// sources (Grabbable.cs, PointableElement.cs): Hover adds a point; Select ends the active transformer, adds a
     /// selecting point, raises the event, then begins the transformer for the new count (one-grab or two-grab); Unselect
-    /// ends, removes, raises, begins again; Cancel ends the transformer and removes the point (raising the event only when
+    /// first moves the point to the release pose and updates the active transformer (the SDK's ForceMove), then ends,
+    /// removes, raises, begins again; Cancel ends the transformer and removes the point (raising the event only when
     /// the pointer was hovering) and begins nothing; Move updates the point and the active transformer.
     /// </summary>
     public sealed class FakeGrabbable : MonoBehaviour, IGrabbable, IPointableElement
@@ -36,6 +37,9 @@ namespace Kosmos.PseudoHaptic.Tests
 
         public void ProcessPointerEvent(PointerEvent evt)
         {
+            // Real (ForceMove): an Unselect first moves the point to the release pose and updates the active transformer.
+            if (evt.Type == PointerEventType.Unselect)
+                ProcessPointerEvent(new PointerEvent(evt.Identifier, PointerEventType.Move, evt.Pose, evt.Data));
             if (evt.Type == PointerEventType.Select || evt.Type == PointerEventType.Unselect || evt.Type == PointerEventType.Cancel) End();
             switch (evt.Type)
             {
