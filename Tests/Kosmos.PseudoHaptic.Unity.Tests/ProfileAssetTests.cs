@@ -96,6 +96,33 @@ namespace Kosmos.PseudoHaptic.Tests
             "\"_handDrawing\":1",
         }) + "}";
 
+        /// <summary>
+        /// An entry Unity kept empty (its effect's type went missing with its assembly) and one naming an effect nobody
+        /// registered: each can be removed from the inspector (the empty one's button removed nothing: it was looked up by name).
+        /// </summary>
+        [Test]
+        public void TheInspectorRemovesAnEmptyOrUnregisteredEntry()
+        {
+            var profile = PseudoHapticProfile.CreatePreset(NamedProfiles.GainName);
+            var list = (System.Collections.Generic.List<ProfileEffect>)typeof(PseudoHapticProfile)
+                .GetField("_effects", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance)!.GetValue(profile)!;
+            int count = list.Count;
+            list.Insert(0, null);
+            list.Add(new ProfileEffect { effect = "made-up" });
+            var inspector = Inspector(profile);
+            inspector.OnInspectorGUI();
+            Assert.That(UnityDouble.Editor.InspectorShown, Has.Some.Contains("the profile is refused until it is registered or removed"));
+            Assert.That(UnityDouble.Editor.InspectorShown, Has.Some.Contains("skipped when the profile is built"));
+            GUILayoutDriver.Click("Remove (empty entry)");
+            inspector.OnInspectorGUI();
+            Assert.That(list, Has.None.Null, "the empty entry is gone");
+            GUILayoutDriver.Click("Remove made-up");
+            inspector.OnInspectorGUI();
+            Assert.That(list, Has.Count.EqualTo(count));
+            Assert.That(profile.TryBuild(out _, out string error), Is.True, error);
+            Assert.That(profile.RemoveEffectAt(count), Is.False, "not an entry");
+        }
+
         [Test]
         public void AnOldAssetsFlatFieldsAreReadOnceAndBecomeTheList()
         {

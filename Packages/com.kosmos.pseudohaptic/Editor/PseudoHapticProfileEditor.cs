@@ -63,8 +63,11 @@ namespace Kosmos.PseudoHaptic.Editor
             if (d == null)
             {
                 string missing = entry == null ? "(empty entry)" : entry.effect;
-                EditorGUILayout.HelpBox("Effect '" + missing + "' is not registered (its assembly is missing or does not register it): it is not built.", MessageType.Warning);
-                if (GUILayout.Button("Remove " + missing)) { Edit(profile, "Remove effect", () => profile.RemoveEffect(missing)); return true; }
+                EditorGUILayout.HelpBox(entry == null
+                    ? "An empty entry (its effect's type is missing with its assembly): skipped when the profile is built."
+                    : "Effect '" + missing + "' is not registered (its assembly is missing or does not register it): the profile is refused until it is registered or removed.",
+                    MessageType.Warning);
+                if (GUILayout.Button("Remove " + missing)) { Edit(profile, "Remove effect", () => profile.RemoveEffectAt(index)); return true; }
                 return false;
             }
             entry.expanded = EditorGUILayout.Foldout(entry.expanded, d.Name + " (" + d.Stage + ")", true);

@@ -67,8 +67,9 @@ namespace Kosmos.PseudoHaptic.Editor
             }
         }
 
-        /// <summary>The Android target API level Meta's Project Setup Tool recommends (Meta XR Core SDK 68.0.2: 32).</summary>
-        public const AndroidSdkVersions TargetApiLevel = AndroidSdkVersions.AndroidApiLevel32;
+        /// <summary>The Android target API level Meta's Project Setup Tool recommends (Meta XR Core SDK 68.0.2: 32). By its
+        /// number: the enum's AndroidApiLevel32 first appears in Unity 2022.3.21f1, and the package supports 2022.3.0f1.</summary>
+        public const AndroidSdkVersions TargetApiLevel = (AndroidSdkVersions)32;
 
         /// <summary>
         /// Meta's Project Setup Tool recommendations (Meta XR Core SDK 68.0.2, OVRProjectSetupCompatibilityTasks and

@@ -237,12 +237,14 @@ namespace UnityEditor
     }
 
     /// <summary>Only the levels the package names.</summary>
+    /// <summary>As in Unity 2022.3.0f1, the oldest the package supports: its last member is AndroidApiLevel30
+    /// (AndroidApiLevel32 came in 2022.3.21f1; a level above 30 is used by its number).</summary>
     public enum AndroidSdkVersions
     {
         AndroidApiLevelAuto = 0,
         AndroidApiLevel22 = 22,
         AndroidApiLevel29 = 29,
-        AndroidApiLevel32 = 32,
+        AndroidApiLevel30 = 30,
     }
 
     /// <summary>Editor/Mono/PlayerSettings.bindings.cs.</summary>

@@ -130,6 +130,19 @@ namespace Kosmos.PseudoHaptic
             return removed;
         }
 
+        /// <summary>
+        /// Removes the entry at <paramref name="index"/>, whatever it holds: an empty one (its effect's type went missing with
+        /// its assembly: Unity keeps it as null) or one whose effect is not registered, which <see cref="RemoveEffect"/> cannot
+        /// name. False when <paramref name="index"/> is not an entry's.
+        /// </summary>
+        public bool RemoveEffectAt(int index)
+        {
+            if (index < 0 || index >= _effects.Count) return false;
+            _effects.RemoveAt(index);
+            MarkChanged();
+            return true;
+        }
+
         /// <summary>Moves the entry at <paramref name="index"/> up (−1) or down (+1) past a neighbour of the same stage.</summary>
         public bool MoveEffect(int index, int delta)
         {
