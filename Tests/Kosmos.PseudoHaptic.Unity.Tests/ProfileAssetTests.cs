@@ -4,6 +4,8 @@ using Kosmos.PseudoHaptic.Editor;
 using NUnit.Framework;
 using UnityDouble;
 using UnityEngine;
+using UnityEditor;
+using UnityEngine.TestTools;
 
 namespace Kosmos.PseudoHaptic.Tests
 {
@@ -141,6 +143,25 @@ namespace Kosmos.PseudoHaptic.Tests
             profile.RemoveEffect("break-away");
             JsonUtility.FromJsonOverwrite("{\"_profileName\":\"old-experiment\"}", profile);
             Assert.That(profile.IsEnabled<BreakAway>(), Is.False);
+        }
+
+        /// <summary>
+        /// An old asset converted on load is saved once in the list format when the editor loads the scripts (Unity writes a
+        /// ScriptableObject only when it is marked dirty: the conversion stayed in memory); a current asset is left alone.
+        /// </summary>
+        [Test]
+        public void AnOldAssetConvertedOnLoadIsSavedOnceAsTheList()
+        {
+            var old = ScriptableObject.CreateInstance<PseudoHapticProfile>();
+            JsonUtility.FromJsonOverwrite(OldAssetFields(), old);
+            Assert.That(old.UpgradedUnsaved, Is.True);
+            AssetDatabase.CreateAsset(old, "Assets/Old Experiment.asset");
+            var current = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
+            AssetDatabase.CreateAsset(current, "Assets/Paper.asset");
+            LogAssert.Expect(LogType.Log, new System.Text.RegularExpressions.Regex("1 profile asset"));
+            Assert.That(Kosmos.PseudoHaptic.Editor.LegacyProfileUpgrade.SaveUpgraded(), Is.EqualTo(1));
+            Assert.That(old.UpgradedUnsaved, Is.False);
+            Assert.That(Kosmos.PseudoHaptic.Editor.LegacyProfileUpgrade.SaveUpgraded(), Is.Zero, "once");
         }
 
         [Test]

@@ -1,7 +1,8 @@
 // Test double of AssetDatabase.FindAssets(string) and GUIDToAssetPath(string) (UnityCsReference 2022.3,
 // Modules/AssetDatabase/Editor/ScriptBindings/AssetDatabase.bindings.cs and Editor/Mono/AssetDatabase/AssetDatabaseSearching.cs),
 // over the double's in-memory assets: a filter of words, each of which must appear in the asset's file name (any case),
-// and "t:Prefab" (prefab assets: a .prefab path), as Unity's search filter reads them. GUIDs are made up per path.
+// and "t:Prefab" (prefab assets: a .prefab path) or "t:ClassName" (assets of that class, a ScriptableObject's included), as
+// Unity's search filter reads them. GUIDs are made up per path.
 using System;
 using System.Collections.Generic;
 
@@ -22,7 +23,8 @@ namespace UnityEditor
             var found = new List<string>();
             foreach (string path in Assets.Keys)
             {
-                if (type != null && !(type.Equals("Prefab", StringComparison.OrdinalIgnoreCase) && path.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase))) continue;
+                if (type != null && !(type.Equals("Prefab", StringComparison.OrdinalIgnoreCase) ? path.EndsWith(".prefab", StringComparison.OrdinalIgnoreCase)
+                        : Assets[path] != null && Assets[path].GetType().Name.Equals(type, StringComparison.OrdinalIgnoreCase))) continue;
                 string file = System.IO.Path.GetFileNameWithoutExtension(path);
                 if (!words.TrueForAll(w => file.IndexOf(w, StringComparison.OrdinalIgnoreCase) >= 0)) continue;
                 found.Add(GuidOf(path));

@@ -90,6 +90,14 @@ namespace UnityEditor
         }
 
         public static void SaveAssets() => Saves++;
+
+        /// <summary>Real (2020.3+): writes one asset to disk if it is dirty. Here: counted per object, its dirty mark cleared.</summary>
+        public static void SaveAssetIfDirty(Object obj)
+        {
+            if (obj != null && EditorUtility.Dirty.Remove(obj)) Saved.Add(obj);
+        }
+
+        internal static readonly List<Object> Saved = new List<Object>();
         public static bool IsValidFolder(string path) => Folders.Contains(path);
 
         public static string CreateFolder(string parentFolder, string newFolderName)
@@ -379,6 +387,7 @@ namespace UnityEditor
             EditorApplication.delayCall = null;
             EditorApplication.ExitCode = null;
             EditorUtility.Dirty.Clear();
+            AssetDatabase.Saved.Clear();
             EditorGUILayout.Shown.Clear();
         }
     }

@@ -242,7 +242,19 @@ namespace Kosmos.PseudoHaptic
 
         internal void OnAfterDeserialize()
         {
-            if (UpgradeLegacyFields()) MarkChanged();
+            if (!UpgradeLegacyFields()) return;
+            UpgradedUnsaved = true;
+            MarkChanged();
         }
+
+        /// <summary>
+        /// Read from 0.2.0's flat fields and converted in memory, not yet saved as the list: the editor saves such assets
+        /// once when it loads the scripts (Unity saves a ScriptableObject only when it is marked dirty), so that the file
+        /// holds the list and nothing depends on the old fields being readable again.
+        /// </summary>
+        public bool UpgradedUnsaved { get; private set; }
+
+        /// <summary>The asset was saved in the list format (called by the editor after it saved it).</summary>
+        public void UpgradeSaved() => UpgradedUnsaved = false;
     }
 }
