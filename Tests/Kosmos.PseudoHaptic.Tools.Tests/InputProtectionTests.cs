@@ -16,6 +16,21 @@ public class InputProtectionTests : CliTestFolder
 
     static (int code, string stderr, string stdout) Run(params string[] args) => Capture(() => Cli.Cli.Run(args));
 
+    /// <summary>Runs <paramref name="run"/> with <paramref name="folder"/> as the working folder (what a relative path means).</summary>
+    static void InFolder(string folder, Action run)
+    {
+        string cwd = Directory.GetCurrentDirectory();
+        try
+        {
+            Directory.SetCurrentDirectory(folder);
+            run();
+        }
+        finally
+        {
+            Directory.SetCurrentDirectory(cwd);
+        }
+    }
+
     static void Refused((int code, string stderr, string stdout) r, string named)
     {
         Assert.That(r.code, Is.EqualTo(2), r.stderr);
@@ -47,17 +62,8 @@ public class InputProtectionTests : CliTestFolder
     [Test]
     public void UnityPackageRefusesStandardOutputAsItsFolder()
     {
-        string cwd = Directory.GetCurrentDirectory();
-        try
-        {
-            Directory.SetCurrentDirectory(_dir);
-            Refused(Run("unity-package", "--out", "-", "--package", Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic")), "--out -");
-            Assert.That(Directory.Exists(Path.Combine(_dir, "-")), Is.False, "no folder named '-'");
-        }
-        finally
-        {
-            Directory.SetCurrentDirectory(cwd);
-        }
+        InFolder(_dir, () => Refused(Run("unity-package", "--out", "-", "--package", Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic")), "--out -"));
+        Assert.That(Directory.Exists(Path.Combine(_dir, "-")), Is.False, "no folder named '-'");
     }
 
     [Test]
@@ -126,16 +132,7 @@ public class InputProtectionTests : CliTestFolder
         string mocap = Path.Combine(shared, "mocap-hand-100hz.csv");
         File.Copy(Path.Combine(Examples, "lift.csv"), mocap);
         byte[] was = File.ReadAllBytes(mocap);
-        string cwd = Directory.GetCurrentDirectory();
-        try
-        {
-            Directory.SetCurrentDirectory(repo);
-            Refused(Run("accuracy", "--lifts", "none", "--long-minutes", "0", "--csv", "../shared/data/mocap-hand-100hz.csv"), "--csv");
-        }
-        finally
-        {
-            Directory.SetCurrentDirectory(cwd);
-        }
+        InFolder(repo, () => Refused(Run("accuracy", "--lifts", "none", "--long-minutes", "0", "--csv", "../shared/data/mocap-hand-100hz.csv"), "--csv"));
         Assert.That(File.ReadAllBytes(mocap), Is.EqualTo(was));
     }
 
