@@ -149,6 +149,23 @@ namespace Kosmos.PseudoHaptic.Tests
         /// An old asset converted on load is saved once in the list format when the editor loads the scripts (Unity writes a
         /// ScriptableObject only when it is marked dirty: the conversion stayed in memory); a current asset is left alone.
         /// </summary>
+        /// <summary>Whatever rewrites the asset's serialized state (an undo, a revert, a reimport) leaves no stale built profile.</summary>
+        [Test]
+        public void ADeserializedAssetBuildsWhatItNowHolds()
+        {
+            var profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
+            Assert.That(profile.Build().Has<OffsetCorrection>(), Is.True);
+            int version = profile.Version;
+            // What Unity's deserialization does (the double's JsonUtility has no [SerializeReference]): the field rewritten, then
+            // the callback.
+            var list = (System.Collections.Generic.List<ProfileEffect>)typeof(PseudoHapticProfile)
+                .GetField("_effects", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance)!.GetValue(profile)!;
+            list.RemoveAll(e => e.effect == "offset-correction");
+            ((ISerializationCallbackReceiver)profile).OnAfterDeserialize();
+            Assert.That(profile.Build().Has<OffsetCorrection>(), Is.False, "built from what it holds now");
+            Assert.That(profile.Version, Is.Not.EqualTo(version), "holders rebuild");
+        }
+
         [Test]
         public void AnOldAssetConvertedOnLoadIsSavedOnceAsTheList()
         {

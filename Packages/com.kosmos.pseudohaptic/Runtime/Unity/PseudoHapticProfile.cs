@@ -242,8 +242,9 @@ namespace Kosmos.PseudoHaptic
 
         internal void OnAfterDeserialize()
         {
-            if (!UpgradeLegacyFields()) return;
-            UpgradedUnsaved = true;
+            if (UpgradeLegacyFields()) UpgradedUnsaved = true;
+            // Whatever rewrote the serialized state (an undo, a revert, a reimport, the first load) leaves the built profile
+            // stale: holders rebuild (only an int and a reference: safe off the main thread, where Unity may call this).
             MarkChanged();
         }
 
