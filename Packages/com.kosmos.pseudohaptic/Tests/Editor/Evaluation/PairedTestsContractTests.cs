@@ -188,6 +188,19 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             c = PairedComparison.Compute(new[] { 2.0, 3.0, 3.1, 3.7, 4.5, 2.8, 2.3, 3.4 }, new[] { 1.7, 3.6, 2.8, 4.2, 4.2, 2.4, 3.0, 3.2 });
             Assert.That(c.HasTies, Is.True);
             Assert.That(c.WilcoxonExact, Is.False);
+            // Scores of a thousand: the subtraction's rounding grows with them (0.1999999999999318 and 0.20000000000004547), and
+            // so does the resolution (10⁻¹² of the largest |score|, 1.001e-9 here): the 0.2s and the 0.3s tie. W = 2.5 + 2.5 +
+            // 4.5 + 6 = 15.5; p from scipy as above (Stryker's survivors PairedTests.cs:137–138 failed it: a resolution of
+            // 10⁻¹² ÷ the scale, or of the smaller score of each pair, ties nothing at this size).
+            c = PairedComparison.Compute(new[] { 1000.2, 1000.4, 1000.8, 1000.5, 1001.0, 1000.1 }, new[] { 1000.4, 1000.6, 1000.5, 1000.8, 1000.9, 1000.6 });
+            Assert.That(c.W, Is.EqualTo(15.5));
+            Assert.That(c.WP, Is.EqualTo(0.34278171114791145).Within(1e-12));
+            // The resolution follows the largest score, not each pair's smaller one: 1000.41 − 0.01 = 1000.4 and
+            // 0.04 − 1000.44 = −1000.4000000000001 tie (ranks 2.5 each; 999.9 ranks 1): W = 2.5 + 1 (the smaller scores,
+            // 0.04 at most, would give a resolution of 4e-14, below the 1.1e-13 between them).
+            c = PairedComparison.Compute(new[] { 0.01, 1000.44, 0.02 }, new[] { 1000.41, 0.04, 999.92 });
+            Assert.That(c.HasTies, Is.True);
+            Assert.That(c.W, Is.EqualTo(3.5));
             // A difference that is zero but for the rounding of its scores is dropped: 0.1 + 0.2 against 0.3.
             c = PairedComparison.Compute(new[] { 0.1 + 0.2, 1, 1 }, new[] { 0.3, 2, 3 });
             Assert.That(c.NonZero, Is.EqualTo(2));
