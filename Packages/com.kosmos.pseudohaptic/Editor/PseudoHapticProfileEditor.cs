@@ -26,6 +26,9 @@ namespace Kosmos.PseudoHaptic.Editor
                 Undo.RecordObject(profile, "Apply pseudo-haptic preset " + preset);
                 profile.ApplyPreset(preset);
                 EditorUtility.SetDirty(profile);
+                // The list below may now hold more entries than this event's layout measured (IMGUI would throw "Getting
+                // control N's position in a group with only N controls"): end this event; the next lays the new list out.
+                GUIUtility.ExitGUI();
             }
             EditorGUILayout.EndHorizontal();
             EditorGUILayout.Space();

@@ -33,6 +33,17 @@ namespace UnityEngine
     {
     }
 
+    /// <summary>Real (Modules/IMGUI/GUIUtility.cs): ExitGUI throws ExitGUIException, which the editor's GUI loop catches
+    /// without a message: the rest of this event's GUI is skipped and the next event lays it out anew.</summary>
+    public class GUIUtility
+    {
+        public static void ExitGUI() => throw new ExitGUIException();
+    }
+
+    public sealed class ExitGUIException : System.Exception
+    {
+    }
+
     public class GUILayout
     {
         /// <summary>True for the label a driver "clicks" (GUILayout.Clicked), once.</summary>
