@@ -222,6 +222,34 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(File.ReadAllLines(Path.Combine(folder, "holds.csv")).Skip(1).Select(l => l.Split(',')[0]), Is.EqualTo(new[] { "1", "2", "3", "5" }));
         }
 
+        /// <summary>
+        /// The index the session resumes on as it is: one edited without a final line end gets the next row on a line of its
+        /// own; an empty one is started again; rows whose hold files were removed still count (no number is used twice in it).
+        /// </summary>
+        [Test]
+        public void AResumedIndexKeepsItsRowsApartAndItsNumbersUnique()
+        {
+            string folder = Path.Combine(_folder, "P1");
+            Directory.CreateDirectory(folder);
+            string index = Path.Combine(folder, "holds.csv");
+            File.WriteAllText(index, SessionLog.IndexHeader + "\n1,box,hold-001-box.csv,10,0.1,1,paper,0.5,1\n7,box,hold-007-box.csv,10,0.1,1,paper,0.5,2");
+            SessionLog log = Log();
+            BoxScene.Box box = Wired(log, "box", 1);
+            Lift(box, 0.2, 0.6); box.Hold.End(1);
+            string[] rows = File.ReadAllLines(index);
+            Assert.That(rows, Has.Length.EqualTo(4), "the new row on a line of its own");
+            Assert.That(rows[2], Does.EndWith(",0.5,2"));
+            Assert.That(rows[3], Does.StartWith("8,box,hold-008-box.csv,"), "after the index's highest number, its file gone or not");
+
+            File.WriteAllText(index, "");
+            SessionLog again = Log();
+            BoxScene.Box other = Wired(again, "box", 1);
+            Lift(other, 0.2, 0.6); other.Hold.End(1);
+            rows = File.ReadAllLines(index);
+            Assert.That(rows[0], Is.EqualTo(SessionLog.IndexHeader), "an empty index starts again with its header");
+            Assert.That(rows[1], Does.StartWith("9,box,hold-009-box.csv,"), "after the files there (hold-008)");
+        }
+
         [Test]
         public void AHoldRunningAtAPauseIsWrittenAsFarAsItGotThenWhole()
         {
