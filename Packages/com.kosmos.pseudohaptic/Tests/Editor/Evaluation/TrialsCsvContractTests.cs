@@ -101,11 +101,12 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         [Test]
         public void CatchTrialsAreLeftOutOnlyWhenAskedAndTheirMarkIsChecked()
         {
-            const string text = "participant,standard,comparison,catch,response\nP1,0.5,0.6,0,1\nP1,0.5,1,1,0\nP1,0.5,0.4, 0 ,0\n";
+            const string text = "participant,condition,standard,comparison,catch,response\nP1,on,0.5,0.6,0,1\nP1,on,0.5,1,1,0\nP1,on,0.5,0.4, 0 ,0\n";
             Assert.That(TrialsCsv.Read(new StringReader(text), "t.csv"), Has.Count.EqualTo(3), "by default catch is a column like any other");
             var kept = TrialsCsv.Read(new StringReader(text), "t.csv", int.MaxValue, long.MaxValue, leaveOutCatch: true, out int leftOut);
             Assert.That(leftOut, Is.EqualTo(1));
             Assert.That(kept.Select(a => a.Line), Is.EqualTo(new[] { 2, 4 }), "the others keep their lines");
+            Assert.That(kept.Select(a => a.Condition), Is.All.EqualTo("on"), "and their condition");
             var none = TrialsCsv.Read(new StringReader("participant,standard,comparison,response\nP1,0.5,0.6,1\n"), "t.csv", int.MaxValue, long.MaxValue, true, out leftOut);
             Assert.That(none, Has.Count.EqualTo(1));
             Assert.That(leftOut, Is.Zero, "a file without the column has no catch trials");
