@@ -31,7 +31,10 @@ public class ToolInstallTests
 
             (code, output) = Run(elsewhere, home, tool, "--version");
             Assert.That(code, Is.EqualTo(0), output);
-            Assert.That(output.Trim(), Does.Match(@"^0\.2\.\d+\+[0-9a-f]{7,}"), "the version and the commit");
+            // The package's major and minor (package.json), the number of commits, the commit.
+            string[] package = System.Text.Json.JsonDocument.Parse(File.ReadAllText(Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic", "package.json")))
+                .RootElement.GetProperty("version").GetString()!.Split('.');
+            Assert.That(output.Trim(), Does.Match($@"^{package[0]}\.{package[1]}\.\d+\+[0-9a-f]{{7,}}"), "the version and the commit");
             (code, output) = Run(elsewhere, home, tool, "replay", "--help");
             Assert.That(code, Is.EqualTo(0), output);
             Assert.That(output, Does.Contain("--mass-kg"));
