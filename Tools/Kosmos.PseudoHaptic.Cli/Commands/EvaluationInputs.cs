@@ -69,13 +69,6 @@ static class EvaluationInputs
         return QuestionnaireJson.ParseAll(named);
     }
 
-    /// <summary>The whole text of an input file (small files only); a missing or unreadable one is a contract error naming it.</summary>
-    public static string ReadText(string path)
-    {
-        using var reader = InputFile.OpenText("--input", path);
-        return reader.ReadToEnd();
-    }
-
     /// <summary>The questionnaire definitions a --questionnaires folder holds, as inputs an output may not be.</summary>
     public static IEnumerable<NamedPath> QuestionnaireFiles(string? directory)
     {

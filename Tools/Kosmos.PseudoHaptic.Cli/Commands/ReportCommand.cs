@@ -83,28 +83,13 @@ public static class ReportCommand
     /// <summary>
     /// report summarizes one score per participant and part; a scores file with a condition column (score's output for
     /// answers with conditions) has one per condition, which compare compares: refused in words, not as a "duplicate score".
-    /// The header only is read, at most 1 MiB of it.
+    /// Only the header is read (the CSV reader's, its record at most 1 MiB).
     /// </summary>
     static void RefuseConditions(string scoresPath)
     {
-        var header = new System.Text.StringBuilder();
-        using (var reader = EvaluationInputs.OpenText("--scores", scoresPath))
-        {
-            int c;
-            while ((c = reader.Read()) >= 0 && header.Length < (1 << 20))
-            {
-                if (c == '\n' || c == '\r')
-                {
-                    if (header.ToString().Trim().Length > 0) break;
-                    header.Clear();
-                    continue;
-                }
-                header.Append((char)c);
-            }
-        }
-        foreach (string name in header.ToString().Split(','))
-            if (string.Equals(name.Trim().Trim('"').Trim(), "condition", StringComparison.OrdinalIgnoreCase))
-                throw new CliException($"--scores {Messages.Path(scoresPath)}: has a condition column: report summarizes one score per participant and part; compare the conditions with 'pseudohaptic compare', or report each condition's rows apart");
+        using var csv = new CsvReader(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath));
+        if (csv.ReadHeader() && csv.Header.Any(name => string.Equals(name.Trim(), "condition", StringComparison.OrdinalIgnoreCase)))
+            throw new CliException($"--scores {Messages.Path(scoresPath)}: has a condition column: report summarizes one score per participant and part; compare the conditions with 'pseudohaptic compare', or report each condition's rows apart");
     }
 
     static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("report.md", "summary.csv", "table*.csv", "chart*.png", "chart*.svg");
