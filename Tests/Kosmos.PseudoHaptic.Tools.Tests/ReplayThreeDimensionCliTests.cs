@@ -118,6 +118,18 @@ public class ReplayThreeDimensionCliTests : CliTestFolder
     }
 
     [Test]
+    public void ATraceWithNoUsablePoseIsNeverHeld()
+    {
+        // held is 1 while held: rows before the first usable pose belong to the hold that follows, but with no usable
+        // pose at all no hold begins, so every row is 0 (it was 1 on every row).
+        var lines = Run("t,hand_y,tracked\n0,0.9,0\n0.1,NaN,1\n0.2,0.9,0\n", "--mass-kg", "1", "--break-away", "0.3");
+        Assert.That(lines[0], Is.EqualTo("t,hand_y,object_y,offset,held"));
+        Assert.That(Column(lines, "held"), Is.EqualTo(new[] { "0", "0", "0" }));
+        var before = Run("t,hand_y,tracked\n0,0.9,0\n0.1,0.95,1\n0.2,0.96,1\n", "--mass-kg", "1", "--break-away", "0.3");
+        Assert.That(Column(before, "held"), Is.EqualTo(new[] { "1", "1", "1" }), "an untracked row before the first usable pose is part of the hold");
+    }
+
+    [Test]
     public void ColumnsComeInTheContractsOrder()
     {
         Assert.That(Run(Trace(1, true, false), "--mass-kg", "1")[0], Is.EqualTo("t,hand_y,object_y,offset,hand_x,hand_z,object_x,object_z"));

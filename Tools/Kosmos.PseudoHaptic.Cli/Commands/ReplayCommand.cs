@@ -178,7 +178,8 @@ public static class ReplayCommand
         }
         summary.Released = holding && !solver.IsHolding;
         summary.AnyUsable = holding || waiting.Count == 0;
-        waiting.Drain(early => Write(w, columns, early, columns.Object(early, 0, 0, 0), true, ref summary));
+        // No usable pose in the whole trace: nothing was ever held (held 0), and the object stays at the origin.
+        waiting.Drain(early => Write(w, columns, early, columns.Object(early, 0, 0, 0), false, ref summary));
         return summary;
     }
 
