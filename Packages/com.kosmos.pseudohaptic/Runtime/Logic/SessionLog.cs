@@ -26,12 +26,15 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The index's columns.</summary>
         public const string IndexHeader = "hold,object,file,frames,duration_s,mass_kg,profile,standard_speed,started_at_s";
 
+        /// <summary>The file in a session folder that holds its session id, exactly (<see cref="OwnedName"/>).</summary>
+        public const string OwnerFile = "session-id.txt";
+
         sealed class Hold
         {
             public object Key;
             public readonly HoldRecording Recording;
             public int Number;
-            public string File, ObjectName, Folder;
+            public string File, ObjectName, Folder, SessionId;
             public double StartedAt;
             public StringBuilder Index; // its session's index
             public Hold(int capacity) => Recording = new HoldRecording(capacity);
@@ -44,6 +47,10 @@ namespace Kosmos.PseudoHaptic
         string _folder = "", _sessionId = "", _sessionFolder;
         readonly object _openedLock = new object();
         string _openedFolder; // the session folder the writer last opened (and cleaned)
+        // Session folders this log gave out, by path, with their ids: their owner files may not be written yet.
+        readonly Dictionary<string, string> _given = new Dictionary<string, string>(StringComparer.Ordinal);
+        readonly Func<string, bool> _folderTaken;
+        readonly Func<string, string> _folderOwner;
 
         /// <param name="saver">Writes the files; default one writing on the caller's thread (inside <see cref="Ended"/> and <see cref="Pump"/>). The headset passes a background one.</param>
         public SessionLog(int framesPerHold = HoldRecording.DefaultCapacity, SaveQueue saver = null)
@@ -51,6 +58,8 @@ namespace Kosmos.PseudoHaptic
             _capacity = Math.Max(64, framesPerHold);
             for (int i = 0; i < 2; i++) _spare.Push(new Hold(_capacity)); // two hands
             Saver = saver ?? new SaveQueue(background: false);
+            _folderTaken = FolderTaken;
+            _folderOwner = FolderOwner;
         }
 
         /// <summary>The one writer of this log's files.</summary>
@@ -72,6 +81,8 @@ namespace Kosmos.PseudoHaptic
         /// The session's name (its folder); setting it starts a new session, numbered from 1, or, when its folder already
         /// holds recordings (the same id after a restart or a power cut), from the last of them: the holds and the index
         /// there are kept, the index goes on from its last row. Empty: the local date and time at the first hold.
+        /// Two ids never share a folder: one whose safe name another id's folder has ("P 1" after "P_1", "p1" after "P1"
+        /// where case is ignored) gets the name with "-2" (<see cref="OwnedName"/>, <see cref="OwnerFile"/>).
         /// </summary>
         public string SessionId
         {
@@ -119,6 +130,7 @@ namespace Kosmos.PseudoHaptic
             Hold hold = _spare.Count > 0 ? _spare.Pop() : new Hold(_capacity);
             hold.Key = key;
             hold.Folder = SessionFolderPath(); // first: a resumed session numbers on from the holds already there
+            hold.SessionId = _sessionId;
             hold.Number = ++HoldCount;
             hold.ObjectName = objectName;
             hold.StartedAt = startedAt;
@@ -152,10 +164,10 @@ namespace Kosmos.PseudoHaptic
             for (int i = 0; i < _active.Count; i++)
             {
                 Hold hold = _active[i];
-                string file = hold.File, folder = hold.Folder, text = hold.Recording.ToCsv();
+                string file = hold.File, folder = hold.Folder, owner = hold.SessionId, text = hold.Recording.ToCsv();
                 int number = hold.Number;
                 string objectName = hold.ObjectName;
-                Saver.Enqueue(() => { OpenFolder(folder); AtomicFile.WriteAllText(file, text); },
+                Saver.Enqueue(() => { OpenFolder(folder, owner); AtomicFile.WriteAllText(file, text); },
                     () => Written(file), e => NotWritten(number, objectName, e));
             }
             Saver.Pump();
@@ -193,22 +205,25 @@ namespace Kosmos.PseudoHaptic
         /// <summary>
         /// On the writer (the queue runs one write at a time): creates the session's folder, and the first time this log
         /// writes into a folder, removes the temporary files that a kill or a power cut left there
-        /// (<see cref="AtomicFile.RemoveStaleTemporaries"/>: a session resumed under the same id).
+        /// (<see cref="AtomicFile.RemoveStaleTemporaries"/>: a session resumed under the same id) and records its owner
+        /// when it records none (<see cref="OwnerFile"/>).
         /// </summary>
-        void OpenFolder(string folder)
+        void OpenFolder(string folder, string owner)
         {
             AtomicFile.CreateDirectory(folder);
             lock (_openedLock)
             {
                 if (folder == _openedFolder) return;
                 RemovedTemporaries += AtomicFile.RemoveStaleTemporaries(folder);
+                string ownerFile = Path.Combine(folder, OwnerFile);
+                if (!File.Exists(ownerFile)) AtomicFile.WriteAllText(ownerFile, owner);
                 _openedFolder = folder;
             }
         }
 
         void WriteHold(Hold hold)
         {
-            OpenFolder(hold.Folder);
+            OpenFolder(hold.Folder, hold.SessionId);
             HoldRecording recording = hold.Recording;
             AtomicFile.Write(hold.File, synced: true, write: temp =>
             {
@@ -270,9 +285,27 @@ namespace Kosmos.PseudoHaptic
         {
             if (_sessionFolder != null) return _sessionFolder;
             if (string.IsNullOrWhiteSpace(_sessionId)) _sessionId = DateTime.Now.ToString("yyyyMMdd-HHmmss", CultureInfo.InvariantCulture);
-            _sessionFolder = Path.Combine(_folder, SafeName(_sessionId));
+            _sessionFolder = OwnedName.Find(Path.Combine(_folder, SafeName(_sessionId)), "", _sessionId, _folderTaken, _folderOwner);
+            _given[_sessionFolder] = _sessionId;
             Resume(_sessionFolder);
             return _sessionFolder;
+        }
+
+        bool FolderTaken(string folder) => _given.ContainsKey(folder) || Directory.Exists(folder);
+
+        /// <summary>The id a session folder records: the one this log gave it, else its <see cref="OwnerFile"/>'s (null when it has none or it cannot be read).</summary>
+        string FolderOwner(string folder)
+        {
+            if (_given.TryGetValue(folder, out string id)) return id;
+            try
+            {
+                string file = Path.Combine(folder, OwnerFile);
+                return File.Exists(file) ? File.ReadAllText(file) : null;
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException)
+            {
+                return null;
+            }
         }
 
         /// <summary>

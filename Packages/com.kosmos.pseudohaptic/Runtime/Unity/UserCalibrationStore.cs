@@ -80,7 +80,32 @@ namespace Kosmos.PseudoHaptic
             return Save(c);
         }
 
-        public static string PathFor(string userId) => Path.Combine(Folder, "user-" + SafeId(userId) + ".json");
+        /// <summary>
+        /// The user's file: user-&lt;id made safe&gt;.json, or, when another user's id makes the same safe name ("P 1" and
+        /// "P_1"; "P1" and "p1" on a Quest's storage, which ignores case), the first of user-&lt;name&gt;-2.json, -3, … that
+        /// is free or records this user (<see cref="OwnedName"/>; each file records its userId). Reads the files it passes.
+        /// </summary>
+        public static string PathFor(string userId) =>
+            OwnedName.Find(Path.Combine(Folder, "user-" + SafeId(userId)), ".json", Normalized(userId), s_fileExists, s_ownerOf);
+
+        static readonly Func<string, bool> s_fileExists = File.Exists;
+        static readonly Func<string, string> s_ownerOf = OwnerOf;
+
+        /// <summary>The userId a calibration file records; null when it records none or cannot be read (then it is the first finder's).</summary>
+        static string OwnerOf(string path)
+        {
+            try
+            {
+                string id = JsonUtility.FromJson<UserCalibration>(File.ReadAllText(path, Encoding.UTF8))?.userId;
+                return string.IsNullOrEmpty(id) ? null : Normalized(id);
+            }
+            catch (Exception e) when (e is IOException || e is UnauthorizedAccessException || e is ArgumentException)
+            {
+                return null;
+            }
+        }
+
+        static string Normalized(string userId) => string.IsNullOrWhiteSpace(userId) ? DefaultUserId : userId;
 
         /// <summary>
         /// Reads a user's calibration. False with a null error when the user has none; false with the reason
@@ -121,7 +146,7 @@ namespace Kosmos.PseudoHaptic
             AtomicFile.CreateDirectory(Path.GetDirectoryName(path));
             AtomicFile.WriteAllText(path, JsonUtility.ToJson(calibration, true));
 
-            if (SafeId(calibration.userId) == SafeId(s_currentUserId))
+            if (Normalized(calibration.userId) == s_currentUserId)
             {
                 s_current = calibration;
                 s_loaded = true;

@@ -123,7 +123,7 @@ namespace Kosmos.PseudoHaptic.Tests
             box.Step(box.transform.position, true, true, double.NaN, FrameTime);
             box.EndHold(); Saved();
             Assert.That(Read(path).Count, Is.EqualTo(sofar + 1));
-            Assert.That(Directory.GetFiles(Path.Combine(_folder, "P1")), Has.Length.EqualTo(2), "the hold and the index; no temporary file");
+            Assert.That(Directory.GetFiles(Path.Combine(_folder, "P1")), Has.Length.EqualTo(3), "the hold, the index and the session's id; no temporary file");
         }
 
         [Test]

@@ -88,6 +88,47 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(error, Does.Contain("cueStrength"));
         }
 
+        /// <summary>
+        /// "P 1" and "P_1" (or "P1" and "p1" on a Quest's storage, which ignores case) had one file: the second user's
+        /// calibration replaced the first's, and each was then given the other's standard speed and cue strength.
+        /// </summary>
+        [Test]
+        public void TwoUsersWhoseIdsMakeOneFileNameKeepTheirOwnCalibrations()
+        {
+            UserCalibrationStore.Save(Calibration("P_1", 0.62));
+            UserCalibrationStore.Save(Calibration("P 1", 0.41));
+            UserCalibrationStore.SaveCueStrength("P.1", 0.8, 0.1);
+            Assert.That(UserCalibrationStore.TryLoad("P_1", out UserCalibration a, out string error), Is.True, error);
+            Assert.That(UserCalibrationStore.TryLoad("P 1", out UserCalibration b, out error), Is.True, error);
+            Assert.That(UserCalibrationStore.TryLoad("P.1", out UserCalibration c, out error), Is.True, error);
+            Assert.That((a.userId, a.standardSpeed, a.cueStrength), Is.EqualTo(("P_1", 0.62, 1.0)));
+            Assert.That((b.userId, b.standardSpeed, b.cueStrength), Is.EqualTo(("P 1", 0.41, 1.0)));
+            Assert.That((c.userId, c.standardSpeed, c.cueStrength), Is.EqualTo(("P.1", WeightSolver.DefaultStandardSpeed, 0.8)));
+            Assert.That(UserCalibrationStore.PathFor("P 1"), Does.EndWith("user-P_1-2.json"));
+            Assert.That(UserCalibrationStore.TryLoad("P-1", out _, out error), Is.False, "another user's file is not this one's");
+            Assert.That(error, Is.Null);
+
+            // The current user is told of their own calibration only, not of another's with the same file name.
+            UserCalibrationStore.CurrentUserId = "P 1";
+            int changes = 0;
+            void Count() => changes++;
+            UserCalibrationStore.Changed += Count;
+            UserCalibrationStore.Save(Calibration("P_1", 0.7));
+            UserCalibrationStore.Changed -= Count;
+            UserCalibrationStore.CurrentUserId = null;
+            Assert.That(changes, Is.EqualTo(0));
+        }
+
+        [Test]
+        public void AFileThatRecordsNoUserIsStillItsNamesFirstUsers()
+        {
+            // Written by hand or by a version that did not record the user: found as before.
+            Directory.CreateDirectory(_folder);
+            File.WriteAllText(Path.Combine(_folder, "user-P_1.json"), "{\"format\":2,\"standardSpeed\":0.6}");
+            Assert.That(UserCalibrationStore.TryLoad("P 1", out UserCalibration c, out string error), Is.True, error);
+            Assert.That(c.standardSpeed, Is.EqualTo(0.6));
+        }
+
         [Test]
         public void SavingTheCurrentUserTellsTheComponents()
         {

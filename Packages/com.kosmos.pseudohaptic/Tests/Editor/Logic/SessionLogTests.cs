@@ -138,7 +138,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var names = new List<string>();
             foreach (string f in Directory.GetFiles(folder)) names.Add(Path.GetFileName(f));
             names.Sort(StringComparer.Ordinal);
-            Assert.That(names, Is.EqualTo(new[] { ".ph12345678.csv", "hold-001-box.csv", "holds.csv", "notes.tmp" }));
+            Assert.That(names, Is.EqualTo(new[] { ".ph12345678.csv", "hold-001-box.csv", "holds.csv", "notes.tmp", SessionLog.OwnerFile }));
 
             // Only the first write into the folder looks: a leftover appearing later waits for the next session.
             File.WriteAllText(Path.Combine(folder, ".ph0000beef.tmp"), "");
@@ -223,6 +223,48 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         /// <summary>
+        /// Two participants whose ids make one safe name ("P 1" and "P_1"; "P1" and "p1" on a Quest's storage, which ignores
+        /// case) had one folder: their holds were numbered on in it, one index listing both, and nothing told whose a hold
+        /// was. Each session folder records its id now, and the second id takes the name with "-2"; both resume in their own.
+        /// </summary>
+        [Test]
+        public void TwoIdsWithOneSafeNameKeepTheirOwnFoldersAndEachResumesInItsOwn()
+        {
+            SessionLog log = Log("P_1");
+            BoxScene.Box box = Wired(log, "box", 1);
+            Lift(box, 0.2, 0.6); box.Hold.End(1);
+            log.SessionId = "P 1"; // the next participant, on the same log
+            Lift(box, 0.2, 0.6); box.Hold.End(1);
+            string first = Path.Combine(_folder, "P_1"), second = Path.Combine(_folder, "P_1-2");
+            Assert.That(log.SessionFolder, Is.EqualTo(second));
+            Assert.That(File.ReadAllText(Path.Combine(first, SessionLog.OwnerFile)), Is.EqualTo("P_1"));
+            Assert.That(File.ReadAllText(Path.Combine(second, SessionLog.OwnerFile)), Is.EqualTo("P 1"));
+            Assert.That(File.ReadAllLines(Path.Combine(first, "holds.csv")), Has.Length.EqualTo(2), "P_1's one hold");
+            Assert.That(File.Exists(Path.Combine(second, "hold-001-box.csv")), Is.True, "P 1 numbered from 1 in its own folder");
+
+            // After a restart, in the other order: each finds its own folder and numbers on there.
+            SessionLog again = Log("P 1");
+            BoxScene.Box b = Wired(again, "box", 1);
+            Lift(b, 0.2, 0.6); b.Hold.End(1);
+            Assert.That(File.Exists(Path.Combine(second, "hold-002-box.csv")), Is.True);
+            again.SessionId = "P_1";
+            Lift(b, 0.2, 0.6); b.Hold.End(1);
+            Assert.That(File.Exists(Path.Combine(first, "hold-002-box.csv")), Is.True);
+            Assert.That(Directory.GetDirectories(_folder), Has.Length.EqualTo(2));
+
+            // A folder written before folders recorded their ids (no owner file) is the first id's that finds it.
+            string legacy = Path.Combine(_folder, "Q_7");
+            Directory.CreateDirectory(legacy);
+            File.WriteAllText(Path.Combine(legacy, "hold-001-box.csv"), "t,hand_y\n");
+            SessionLog old = Log("Q 7");
+            BoxScene.Box c = Wired(old, "box", 1);
+            Lift(c, 0.2, 0.6); c.Hold.End(1);
+            Assert.That(old.SessionFolder, Is.EqualTo(legacy));
+            Assert.That(File.Exists(Path.Combine(legacy, "hold-002-box.csv")), Is.True, "numbered on");
+            Assert.That(File.ReadAllText(Path.Combine(legacy, SessionLog.OwnerFile)), Is.EqualTo("Q 7"), "and claimed");
+        }
+
+        /// <summary>
         /// The index the session resumes on as it is: one edited without a final line end gets the next row on a line of its
         /// own; an empty one is started again; rows whose hold files were removed still count (no number is used twice in it).
         /// </summary>
@@ -263,7 +305,7 @@ namespace Kosmos.PseudoHaptic.Tests
             box.Hold.Step(1, box.Position, true, true, double.NaN, 1 / 90.0);
             box.Hold.End(1);
             Assert.That(Read(path).Count, Is.EqualTo(2 + frames));
-            Assert.That(Directory.GetFiles(Path.Combine(_folder, "P1")), Has.Length.EqualTo(2), "the hold and the index; no temporary file");
+            Assert.That(Directory.GetFiles(Path.Combine(_folder, "P1")), Has.Length.EqualTo(3), "the hold, the index and the session's id; no temporary file");
         }
 
         [Test]
