@@ -1,3 +1,4 @@
+using Oculus.Interaction;
 using Kosmos.PseudoHaptic.Interaction;
 using NUnit.Framework;
 using UnityDouble;
@@ -34,6 +35,42 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             Assert.That(weight.IsHeld, Is.True);
             Assert.That(weight.transform.position, Is.EqualTo(before), "a lost hand holds the object still");
+        }
+
+        /// <summary>
+        /// A grab that is not a hand's (a ray or a controller) is read at the Grabbable's grab point of that grab. With the
+        /// Grabbable's AddNewPointsToFront (PointableElement), a later Select's point goes first: the transformer read the
+        /// index of its own join order, so the first grab (the ray) followed the hand's point. The same grabs must move
+        /// the object alike either way.
+        /// </summary>
+        [Test]
+        public void AGrabThatIsNotAHandsFollowsItsOwnPointWhereTheGrabbableAddsNewPointsToTheFront()
+        {
+            Vector3[] Lift(bool toFront)
+            {
+                var (grabbable, _, weight) = Object(1f);
+                grabbable.AddNewPointsToFront = toFront;
+                Vector3 start = weight.transform.position, ray = start + new Vector3(0.15f, 0.05f, 0);
+                grabbable.ProcessPointerEvent(new PointerEvent(9, PointerEventType.Hover, new Pose(ray, Quaternion.identity)));
+                grabbable.ProcessPointerEvent(new PointerEvent(9, PointerEventType.Select, new Pose(ray, Quaternion.identity)));
+                var hand = new FakeHand { Wrist = start + new Vector3(-0.15f, 0.05f, 0) };
+                var interactor = new FakeHandGrabInteractor(grabbable, 7, hand);
+                interactor.Grab(); // the hand joins second, and stays where it is
+                var path = new Vector3[60];
+                for (int f = 0; f < path.Length; f++)
+                {
+                    ray.y += 0.005f; // the ray's point lifts 0.3 m in 60 frames
+                    Frames.Run(1);
+                    grabbable.ProcessPointerEvent(new PointerEvent(9, PointerEventType.Move, new Pose(ray, Quaternion.identity)));
+                    interactor.Move();
+                    path[f] = weight.transform.position - start;
+                }
+                Assert.That(weight.IsHeld, Is.True);
+                return path;
+            }
+            Vector3[] atTheEnd = Lift(false), atTheFront = Lift(true);
+            Assert.That(atTheEnd[atTheEnd.Length - 1].y, Is.GreaterThan(0.05f), "the ray's lift moves the object");
+            Assert.That(atTheFront, Is.EqualTo(atTheEnd));
         }
 
         [Test]

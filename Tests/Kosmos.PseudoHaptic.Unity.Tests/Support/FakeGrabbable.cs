@@ -10,12 +10,12 @@ namespace Kosmos.PseudoHaptic.Tests
     /// <summary>
     /// The Interaction SDK 68.0.0's Grabbable as the transformer meets it, written from its documented behaviour and
     /// sources (Grabbable.cs, PointableElement.cs): Hover adds a point; Select ends the active transformer, adds a
-    /// selecting point, raises the event, then begins the transformer for the new count (one-grab or two-grab); Unselect
+    /// selecting point (at the front with AddNewPointsToFront), raises the event, then begins the transformer for the new count (one-grab or two-grab); Unselect
     /// first moves the point to the release pose and updates the active transformer (the SDK's ForceMove), then ends,
     /// removes, raises, begins again; Cancel ends the transformer and removes the point (raising the event only when
     /// the pointer was hovering) and begins nothing; Move updates the point and the active transformer.
     /// </summary>
-    public sealed class FakeGrabbable : MonoBehaviour, IGrabbable, IPointableElement
+    public sealed class FakeGrabbable : PointableElement, IGrabbable, IPointableElement
     {
         readonly List<int> _pointIds = new List<int>(), _selectingIds = new List<int>();
         readonly List<Pose> _points = new List<Pose>(), _selecting = new List<Pose>();
@@ -52,8 +52,9 @@ namespace Kosmos.PseudoHaptic.Tests
                     if (Remove(_pointIds, _points, evt.Identifier)) Raise(evt);
                     break;
                 case PointerEventType.Select:
-                    _selectingIds.Add(evt.Identifier);
-                    _selecting.Add(evt.Pose);
+                    // AddNewPointsToFront: the new selecting point goes first (PointableElement.Select).
+                    _selectingIds.Insert(AddNewPointsToFront ? 0 : _selectingIds.Count, evt.Identifier);
+                    _selecting.Insert(AddNewPointsToFront ? 0 : _selecting.Count, evt.Pose);
                     Raise(evt);
                     Begin();
                     break;

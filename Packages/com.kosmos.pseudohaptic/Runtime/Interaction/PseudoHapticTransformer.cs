@@ -154,7 +154,8 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         /// <summary>
         /// Grab <paramref name="i"/>'s point: the tracked hand's for a hand grab interactor, else the Grabbable's grab point
-        /// of the same index (its grab points are kept in the order of the Select events, as these lists are).
+        /// of that grab: the same index, as its grab points are kept in the order of the Select events as these lists are,
+        /// or counted from the end when the Grabbable adds new points to the front (<c>PointableElement.AddNewPointsToFront</c>).
         /// </summary>
         Vector3 HandPose(int i, out bool tracked, out bool highConfidence)
         {
@@ -166,7 +167,9 @@ namespace Kosmos.PseudoHaptic.Interaction
             tracked = hand == null || (!noHand && tracking.IsTrackedDataValid);
             highConfidence = hand == null || (!noHand && tracking.IsHighConfidence);
             if (hand != null && !noHand) return hand.GetHandGrabPose().position;
-            return points != null && i < points.Count ? points[i].position : _weight.transform.position;
+            if (points == null || i >= points.Count) return _weight.transform.position;
+            bool toFront = _grabbable is PointableElement element && element.AddNewPointsToFront;
+            return points[toFront ? points.Count - 1 - i : i].position;
         }
     }
 }
