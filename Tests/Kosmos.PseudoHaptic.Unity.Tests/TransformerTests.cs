@@ -73,6 +73,35 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(atTheFront, Is.EqualTo(atTheEnd));
         }
 
+        /// <summary>
+        /// The weight switched off and on mid-grab (a study script toggling the effect): its hold ended, the Grabbable kept
+        /// the grab, and the transformer went on stepping a weight that held nothing, so the object hung where it was until
+        /// the hand let go. It now holds it again from where the hand is (as the XRI transformer does).
+        /// </summary>
+        [Test]
+        public void TheWeightSwitchedOffAndOnMidGrabIsHeldAgain()
+        {
+            var (grabbable, _, weight) = Object(1f);
+            var hand = new FakeHand { Wrist = weight.transform.position + new Vector3(0, 0.05f, 0) };
+            var interactor = new FakeHandGrabInteractor(grabbable, 7, hand);
+            interactor.Grab();
+            void Frame(float rise)
+            {
+                hand.Wrist += new Vector3(0, rise, 0);
+                Frames.Run(1);
+                interactor.Move();
+            }
+            for (int i = 0; i < 10; i++) Frame(0.002f);
+            weight.enabled = false;
+            Assert.That(weight.IsHeld, Is.False);
+            for (int i = 0; i < 10; i++) Frame(0.002f);
+            weight.enabled = true;
+            Vector3 before = weight.transform.position;
+            for (int i = 0; i < 90; i++) Frame(i < 30 ? 0.004f : 0f); // 0.12 m up, then still for a second
+            Assert.That(weight.IsHeld, Is.True);
+            Assert.That(weight.transform.position.y - before.y, Is.GreaterThan(0.03f), "the object follows the hand again (1 kg: about 0.4 of the hand's 0.12 m)");
+        }
+
         [Test]
         public void ABreakAwayCancelsBothGrabsOnceAndBeginsNothingAgain()
         {

@@ -99,7 +99,15 @@ namespace Kosmos.PseudoHaptic.Interaction
 
         public void UpdateTransform()
         {
-            if (!_holding || _grabs.Count == 0) return;
+            if (!_holding || _grabs.Count == 0 || _weight == null) return; // a destroyed weight compares equal to null
+            if (!_weight.IsHeld)
+            {
+                // The weight's hold ended while the Grabbable kept its grabs (the weight switched off, or its hold ended from
+                // code): once it is on, the grabs hold it again from where the hands are, as the Grabbable still selects it.
+                if (!_weight.isActiveAndEnabled) return;
+                BeginTransform();
+                if (!_holding) return;
+            }
             float dt = _clock.Delta(Time.unscaledTimeAsDouble); // 0 when called twice in a frame: the solver moves nothing
             // x/z: the mean of the grabbing hands and the offset taken when they changed (HeldObject.GrabTarget), or the solver's.
             for (int i = 0; i < _grabs.Count; i++)
