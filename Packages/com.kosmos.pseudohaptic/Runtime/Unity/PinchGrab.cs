@@ -97,6 +97,9 @@ namespace Kosmos.PseudoHaptic
         {
             Application.onBeforeRender -= _beforeRender;
             Release();
+            // Nothing draws the visual while this is off: it goes back on the tracked hand now, not where the last lag put it.
+            _drawing.Reset();
+            if (_handVisual != null) _handVisual.localPosition = _visualRest;
         }
 
         void LateUpdate() => Tick(Time.unscaledDeltaTime);

@@ -215,6 +215,33 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         /// <summary>
+        /// Switched off mid-hold, the grab no longer draws the hand visual (neither in LateUpdate nor before rendering): it
+        /// stayed where the last lag put it, centimetres off the real hand, for as long as the grab stayed off.
+        /// </summary>
+        [Test]
+        public void AGrabSwitchedOffMidHoldPutsTheHandVisualBackOnTheTrackedHand()
+        {
+            PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
+            profile.HandDrawing = HandDrawingMode.HandOnObject;
+            PseudoHapticWeight box = Box("5 kg", 5f, default, profile);
+            Vector3 start = box.transform.position + new Vector3(0, 0.05f, 0);
+            var hand = new ScriptedHand(start) { IsPinching = true };
+            PinchGrab grab = Track(new GameObject("hand")).AddComponent<PinchGrab>(); // active: switching it off calls OnDisable
+            grab.InjectHand(hand);
+            var visual = Track(new GameObject("Hand Visual")).transform;
+            visual.SetParent(grab.transform, false);
+            visual.localPosition = new Vector3(0, 0, 0.01f); // the visual's own rest pose under the grab
+            grab.HandVisual = visual;
+            grab.Tick(FrameTime);
+            Vector3 top = start + new Vector3(0, 0.2f, 0);
+            Frames(grab, hand, start, top, 0.6f);
+            Assert.That(visual.localPosition.y, Is.LessThan(-0.02f), "drawn at the lagging object");
+            grab.enabled = false;
+            Assert.That(grab.Held, Is.Null);
+            Assert.That(visual.localPosition, Is.EqualTo(new Vector3(0, 0, 0.01f)), "back at its rest pose");
+        }
+
+        /// <summary>
         /// The player's hand moves in real time whatever the game's clock does (slow motion, a pause menu at timeScale 0):
         /// the same real lift moves the box the same way, frame by frame, at any <c>Time.timeScale</c>. On the game's
         /// clock a hand at half speed read as twice as fast (the lightest gain), and at 0 nothing moved.
