@@ -91,7 +91,7 @@ namespace Kosmos.PseudoHaptic
             }
             if (!scene.IsStillHeld) { End(GrabEnd.Elsewhere, null); return; }
             if (tracked) _lostFor = 0;
-            else if (dt > 0 && !double.IsInfinity(dt)) _lostFor += dt;
+            else if (dt > 0 && !double.IsInfinity(dt)) _lostFor += Math.Min(dt, PinchDetector.LongestCountedFrame); // a hitch is one frame of loss
 
             if (scene.BrokeAway) End(GrabEnd.BrokeAway, scene);
             else if (tracked && !Pinch.IsPinching) End(GrabEnd.Opened, scene);

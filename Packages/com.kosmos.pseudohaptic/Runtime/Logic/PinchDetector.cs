@@ -16,6 +16,13 @@ namespace Kosmos.PseudoHaptic
         public const double DefaultOpenBelow = 0.5;
         public const double DefaultOpenAfter = 0.05;
 
+        /// <summary>
+        /// The most one frame counts toward a timer of the grab, s: one tracker pose period (30 Hz). A hitch, or the first
+        /// frame after the headset wakes, is one frame of evidence however long it lasted: one dropped pinch flag in it must
+        /// not open the pinch, nor one untracked frame in it release the object (<see cref="HandGrab"/>).
+        /// </summary>
+        public const double LongestCountedFrame = 1.0 / 30;
+
         double _closeAt = DefaultCloseAt, _openBelow = DefaultOpenBelow, _openAfter = DefaultOpenAfter;
         double _openFor;
 
@@ -71,7 +78,7 @@ namespace Kosmos.PseudoHaptic
                 return;
             }
             if (strength >= _openBelow) { _openFor = 0; return; }
-            if (dt > 0 && !double.IsInfinity(dt)) _openFor += dt;
+            if (dt > 0 && !double.IsInfinity(dt)) _openFor += Math.Min(dt, LongestCountedFrame);
             if (_openFor >= _openAfter) IsPinching = false;
         }
 

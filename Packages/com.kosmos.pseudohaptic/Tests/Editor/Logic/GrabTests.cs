@@ -103,20 +103,57 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void ThePinchOpensAfterExactlyOpenAfterBelowOpenBelowAndBadFrameTimesCountForNothing()
         {
+            // Frames of 1/32 s (exact in binary, under LongestCountedFrame): OpenAfter 0.25 s is 8 of them.
+            const double frame = 1.0 / 32;
             var pinch = new PinchDetector { OpenAfter = 0.25 };
-            pinch.Update(true, 1, 0.125);
-            pinch.Update(true, 0, 0.125);
-            Assert.That(pinch.IsPinching, Is.True, "0.125 s of 0.25");
-            pinch.Update(true, 0, 0.125);
+            pinch.Update(true, 1, frame);
+            for (int i = 0; i < 7; i++) pinch.Update(true, 0, frame);
+            Assert.That(pinch.IsPinching, Is.True, "7/32 s of 0.25");
+            pinch.Update(true, 0, frame);
             Assert.That(pinch.IsPinching, Is.False, "stayed below OpenBelow for OpenAfter seconds");
 
-            pinch.Update(true, 1, 0.125);
+            pinch.Update(true, 1, frame);
             pinch.Update(true, 0, double.PositiveInfinity);
             Assert.That(pinch.IsPinching, Is.True, "an infinite frame is not a long open hand");
             pinch.Update(true, 0, -1);
-            pinch.Update(true, 0, 0.125);
-            pinch.Update(true, 0, 0.125);
+            for (int i = 0; i < 8; i++) pinch.Update(true, 0, frame);
             Assert.That(pinch.IsPinching, Is.False, "a negative frame does not delay the opening");
+        }
+
+        /// <summary>
+        /// One long frame (a hitch, the first frame after the headset wakes) is one frame of evidence: with the pinch flag
+        /// dropped in it, it counted in full and opened the pinch (the object fell out of the hand after a stutter). It counts
+        /// as <see cref="PinchDetector.LongestCountedFrame"/> at most; frames of a 30 Hz app still count in full.
+        /// </summary>
+        [Test]
+        public void OneLongFrameWithTheFlagDroppedDoesNotOpenThePinch()
+        {
+            var pinch = new PinchDetector();
+            pinch.Update(true, 1, 0.011);
+            pinch.Update(true, 0, 0.1);
+            Assert.That(pinch.IsPinching, Is.True, "a 100 ms hitch");
+            pinch.Update(true, 1, 0.011);
+            pinch.Update(true, 0, 30);
+            Assert.That(pinch.IsPinching, Is.True, "30 s asleep");
+            pinch.Update(true, 0, 1.0 / 30);
+            Assert.That(pinch.IsPinching, Is.False, "two frames of a 30 Hz app: 67 ms of 50");
+        }
+
+        [Test]
+        public void OneLongUntrackedFrameDoesNotReleaseTheObject()
+        {
+            var scene = new Driver();
+            HandGrab grab = Holding(scene);
+            grab.Tick(false, 0, 30, scene); // the first frame after waking, before the hand is tracked again
+            Assert.That(grab.IsHolding, Is.True);
+            Assert.That(grab.LostFor, Is.EqualTo(PinchDetector.LongestCountedFrame));
+            grab.Tick(true, 1, 0.011, scene);
+            Assert.That(grab.IsHolding, Is.True);
+            for (int i = 0; i < 29; i++) grab.Tick(false, 0, 1.0 / 30, scene);
+            Assert.That(grab.IsHolding, Is.True, "29 frames at 30 Hz: under the second");
+            grab.Tick(false, 0, 1.0 / 30, scene);
+            grab.Tick(false, 0, 1.0 / 30, scene);
+            Assert.That(grab.IsHolding, Is.False, "just over a second untracked at 30 Hz still lets go");
         }
 
         [Test]
@@ -169,9 +206,9 @@ namespace Kosmos.PseudoHaptic.Tests
             grab.Tick(false, 0, -1, scene);
             grab.Tick(false, 0, double.PositiveInfinity, scene);
             Assert.That(grab.LostFor, Is.EqualTo(0), "negative and infinite frames are no time lost");
-            grab.Tick(false, 0, 0.125, scene);
+            for (int i = 0; i < 7; i++) grab.Tick(false, 0, 1.0 / 32, scene); // exact in binary, under LongestCountedFrame
             Assert.That(grab.IsHolding, Is.True);
-            grab.Tick(false, 0, 0.125, scene);
+            grab.Tick(false, 0, 1.0 / 32, scene);
             Assert.That(grab.IsHolding, Is.False, "lost for ReleaseAfterLost seconds");
             Assert.That(grab.LastEnd, Is.EqualTo(GrabEnd.TrackingLost));
         }
