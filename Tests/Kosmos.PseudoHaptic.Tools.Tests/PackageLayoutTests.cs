@@ -20,7 +20,10 @@ public class PackageLayoutTests
             string name = Path.GetFileName(entry);
             if (name.StartsWith('.') || name.EndsWith(".meta")) continue;
             bool isDir = Directory.Exists(entry);
-            if (isDir && name.EndsWith('~')) continue; // Samples~, Documentation~: ignored by Unity
+            // Documentation~ and Samples~ are ignored by Unity, so they have no .meta; but the Package Manager imports a
+            // sample with its .meta files, and a scene using a sample's script loses it on re-import without them.
+            if (isDir && name == "Samples~") { foreach (var inner in Assets(entry)) yield return inner; continue; }
+            if (isDir && name.EndsWith('~')) continue;
             if (isDir && (name is "bin" or "obj")) continue;
             yield return entry;
             if (isDir) foreach (var inner in Assets(entry)) yield return inner;
