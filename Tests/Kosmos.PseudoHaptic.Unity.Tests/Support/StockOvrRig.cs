@@ -2,10 +2,9 @@ using UnityEngine;
 
 namespace Kosmos.PseudoHaptic.Tests.Stock
 {
-    // Stand-ins for the components Meta's OVRHandPrefab carries beside OVRHand (Meta XR Core SDK 68.0.2: OVRSkeleton,
+    // Stand-ins for the components Meta's OVRHandPrefab carries beside OVRHand and OVRSkeleton (Meta XR Core SDK 68.0.2:
     // OVRSkeletonRenderer, OVRMesh, OVRMeshRenderer). The package never names them, so the double does not declare them;
-    // they are here only so the stock prefab's GameObject holds what Meta's holds.
-    public sealed class OVRSkeleton : MonoBehaviour { }
+    // they are here only so the stock prefab's GameObject holds what Meta's holds. OVRSkeleton is the double's.
     public sealed class OVRSkeletonRenderer : MonoBehaviour { }
     public sealed class OVRMesh : MonoBehaviour { }
     public sealed class OVRMeshRenderer : MonoBehaviour { }

@@ -27,6 +27,28 @@ namespace UnityDouble
         /// <summary>Where the pointer pose's root is (OVRHand's serialized _pointerPoseRoot).</summary>
         public static void SetPointerPoseRoot(OVRHand hand, Transform root) => hand._pointerPoseRoot = root;
 
+        /// <summary>
+        /// The runtime gives the hand's skeleton (OVRSkeleton.Initialize): <paramref name="boneCount"/> bones (a hand has
+        /// 24), the skeleton type the prefab serialized, the thumb and index tips where given (in the skeleton's local
+        /// space). Again on an initialized skeleton: the skeleton changed and is re-initialized, its bone transforms
+        /// kept unless the bone count differs.
+        /// </summary>
+        public static void InitializeSkeleton(OVRSkeleton skeleton, Vector3 thumbTip, Vector3 indexTip, OVRSkeleton.SkeletonType type = OVRSkeleton.SkeletonType.HandRight, int boneCount = OVRSkeleton.HandBoneCount)
+        {
+            skeleton.InitializeFromRuntime(type, boneCount);
+            PoseSkeleton(skeleton, thumbTip, indexTip);
+        }
+
+        /// <summary>The fingers as the runtime posed them this frame: the thumb and index tips in the skeleton's local space.</summary>
+        public static void PoseSkeleton(OVRSkeleton skeleton, Vector3 thumbTip, Vector3 indexTip)
+        {
+            foreach (OVRBone bone in skeleton.Bones)
+            {
+                if (bone.Id == OVRSkeleton.BoneId.Hand_ThumbTip) bone.Transform.localPosition = thumbTip;
+                if (bone.Id == OVRSkeleton.BoneId.Hand_IndexTip) bone.Transform.localPosition = indexTip;
+            }
+        }
+
         /// <summary>The tracked hand and head poses, in tracking space, that the rig writes into its anchors on its next update.</summary>
         public static void Track(OVRCameraRig rig, Vector3 left, Vector3 right, Vector3 head = default)
         {
