@@ -86,7 +86,7 @@ namespace Kosmos.PseudoHaptic.Tests
         public void TheSampleScenesGetAnOvrRigWithAHandVisualPerHandWhenMetasPrefabsAreThere()
         {
             UnityDouble.Editor.Prefab(Kosmos.PseudoHaptic.Editor.SampleScenes.OvrCameraRigPrefab, () => { var rig = new GameObject("OVRCameraRig"); rig.AddComponent<OVRCameraRig>(); return rig; });
-            UnityDouble.Editor.Prefab(Kosmos.PseudoHaptic.Editor.SampleScenes.OvrHandPrefab, () => { var hand = new GameObject("OVRHandPrefab"); hand.AddComponent<OVRHand>(); return hand; });
+            UnityDouble.Editor.Prefab(Kosmos.PseudoHaptic.Editor.SampleScenes.OvrHandPrefab, () => { var hand = new GameObject("OVRHandPrefab"); hand.AddComponent<OVRHand>(); hand.AddComponent<OVRSkeleton>(); return hand; });
             Kosmos.PseudoHaptic.Editor.SampleScenes.BuildAll();
             Assert.That(UnityDouble.Editor.SavedScenes, Has.Count.EqualTo(5));
             Assert.That(EditorBuildSettings.scenes, Has.Length.EqualTo(5));
@@ -94,6 +94,8 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(sources, Has.Length.EqualTo(2), "the last scene built (Discrimination) has both hands");
             Assert.That(sources.Select(s => s.Tracked.name), Is.EquivalentTo(new[] { "LeftHandAnchor", "RightHandAnchor" }), "the solver reads the anchors, never the visual");
             Assert.That(sources.Select(s => s.GetComponent<PinchGrab>().HandVisual.name), Is.All.EqualTo("Hand Visual"));
+            Assert.That(sources.Select(s => s.Source), Is.All.EqualTo(OvrHandPoseSource.PositionSource.PinchPoint), "the pinch point, placed from the anchor");
+            Assert.That(sources.Select(s => s.GetComponent<OVRSkeleton>().GetSkeletonType()), Is.EquivalentTo(new[] { OVRSkeleton.SkeletonType.HandLeft, OVRSkeleton.SkeletonType.HandRight }), "each skeleton is its hand's");
             Assert.That(Camera.main, Is.Null, "the default camera gave way to the rig's");
         }
 

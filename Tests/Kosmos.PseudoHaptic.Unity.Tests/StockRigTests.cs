@@ -58,6 +58,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(sources.Select(s => s.gameObject), Is.EquivalentTo(new[] { left.gameObject, right.gameObject }), "a pose source on each OVRHand");
             Assert.That(sources.Select(s => s.OvrHand), Is.EquivalentTo(new[] { left, right }));
             Assert.That(sources.All(s => s.GetComponent<PinchGrab>() != null), Is.True, "and a Pinch Grab");
+            Assert.That(sources.Select(s => s.Source), Is.All.EqualTo(OvrHandPoseSource.PositionSource.PinchPoint), "reading the pinch point, where a pinch grabs");
             Assert.That(sources.Select(s => s.Rig), Is.All.SameAs(rig.trackingSpace), "the hold is solved in the rig's tracking space");
             Assert.That(_warnings, Is.Empty, "hands were found: no warning");
 
@@ -84,6 +85,41 @@ namespace Kosmos.PseudoHaptic.Tests
             }
             Assert.That(weight.IsHeld, Is.True, weight.name + " is held by the stock rig's right hand");
             Assert.That(weight.transform.position.y - startY, Is.GreaterThan(0.05f), weight.name + " was lifted (m)");
+        }
+
+        /// <summary>
+        /// A pinch grabs where the fingertips meet: the stock right hand's wrist 11 cm in front of the Playground's 10 g
+        /// ball (2 cm radius), its thumb and index tips meeting at the ball's near surface. Read at the wrist (before the
+        /// pinch point), the ball was 11 cm away, beyond Reach (6 cm), and a real hand never grabbed it.
+        /// </summary>
+        [Test]
+        public void AStockHandPinchingTheTenGramBallAtItsSurfaceGrabsItWithItsWristBeyondReach()
+        {
+            var (rig, left, right) = StockOvrRig.Build();
+            new GameObject("Playground").AddComponent<PlaygroundSetup>();
+            PseudoHapticWeight ball = PseudoHapticWeight.Enabled.Single(w => w.name == "10 g");
+            PinchGrab grab = right.GetComponent<PinchGrab>();
+            Frames.Run(1); // the OVR rig's Start
+            // The runtime's skeleton: the tips 11 cm ahead of the wrist (+z of the hand anchor, which the rig turns as it does the tracking space), meeting.
+            OvrHands.InitializeSkeleton(right.GetComponent<OVRSkeleton>(), new Vector3(0, -0.004f, 0.11f), new Vector3(0, 0.004f, 0.11f));
+
+            Vector3 surface = ball.Collider.bounds.center - new Vector3(0, 0, 0.02f); // the side facing the user, who looks along +z
+            Vector3 wrist = surface - new Vector3(0, 0, 0.11f);
+            Assert.That(Vector3.Distance(ball.Collider.ClosestPoint(wrist), wrist), Is.GreaterThan(grab.Reach), "the wrist is beyond Reach of the ball");
+            float startY = ball.transform.position.y;
+            Vector3 read = default;
+            for (int i = 0; i < 110; i++)
+            {
+                double t = i * Frames.DefaultDuration;
+                OvrHands.Track(rig, new Vector3(-1.5f, 1.2f, -0.6f), wrist + new Vector3(0, (float)(0.25 * MinimumJerk((t - 0.1) / 0.6)), 0));
+                OvrHands.Report(left, tracked: true);
+                OvrHands.Report(right, tracked: true, pinching: i >= 3);
+                Frames.Run(1);
+                if (i == 2) read = right.GetComponent<OvrHandPoseSource>().Position;
+            }
+            Assert.That(ball.IsHeld, Is.True, "the 10 g ball is held");
+            Assert.That(ball.transform.position.y - startY, Is.GreaterThan(0.2f), "and lifted with the hand (m)");
+            Assert.That(Vector3.Distance(read, surface), Is.LessThan(1e-4f), "the hand was read where the tips meet: " + read);
         }
 
         [Test]

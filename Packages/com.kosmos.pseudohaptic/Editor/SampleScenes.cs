@@ -219,6 +219,7 @@ namespace Kosmos.PseudoHaptic.Editor
             var source = go.AddComponent<Meta.OvrHandPoseSource>();
             source.InjectHand(go.GetComponent<OVRHand>());
             source.Tracked = anchor; // the solver follows the anchor, never the offset visual
+            source.Source = Meta.OvrHandPoseSource.PositionSource.PinchPoint; // the skeleton's pinch point, placed from the anchor
             var grab = go.AddComponent<PinchGrab>();
             grab.InjectHand(source);
             grab.HandVisual = visual;

@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using UnityEngine;
 
 namespace Kosmos.PseudoHaptic.Meta
@@ -21,17 +22,30 @@ namespace Kosmos.PseudoHaptic.Meta
             /// (what the SDK writes into PointerPose's local pose) placed through the tracking space, never through the
             /// hand's transforms, which a hand drawn on the object offsets.</summary>
             PointerPose,
+            /// <summary>Between the thumb and index tips of the hand's OVRSkeleton, where a pinch holds (the wrist is
+            /// 14–18 cm from them). Measured from the OVRHand's transform and placed from the tracked one, so a hand
+            /// drawn on the object does not move it; the wrist until the skeleton has its bones, and while untracked.</summary>
+            PinchPoint,
         }
 
         [Tooltip("The OVRHand to read; found on this GameObject or its parents when empty.")]
         [SerializeField] OVRHand _hand;
-        [SerializeField] PositionSource _position = PositionSource.HandTransform;
-        [Tooltip("Where the tracked hand is for Hand Transform: the hand anchor, when the OVRHand sits under a visual root that a Pinch Grab offsets (hand drawn on the object); empty: the OVRHand's own transform.")]
+        [Tooltip("Pinch Point: between the thumb and index tips (what a pinch grabs with); Hand Transform: the wrist; Pointer Pose: OVRHand.PointerPose.")]
+        [SerializeField] PositionSource _position = PositionSource.PinchPoint;
+        [Tooltip("Where the tracked hand is for Hand Transform and Pinch Point: the hand anchor, when the OVRHand sits under a visual root that a Pinch Grab offsets (hand drawn on the object); empty: the OVRHand's own transform.")]
         [SerializeField] Transform _tracked;
         [Tooltip("A pinch counts only while the index finger is tracked with high confidence.")]
         [SerializeField] bool _pinchNeedsHighConfidence = true;
         [Tooltip("The tracking space (OVRCameraRig ▸ TrackingSpace) the hand is tracked in; found from the OVRCameraRig above the hand when empty.")]
         [SerializeField] Transform _trackingSpace;
+
+        // Pinch Point: the hand's skeleton and its two fingertips, found once and again only when the skeleton changes.
+        OVRHand _skeletonOf;
+        OVRSkeleton _skeleton;
+        double _nextSkeletonSearch;
+        IList<OVRBone> _tipsOf;
+        int _tipsChangeCount;
+        Transform _thumbTip, _indexTip;
 
         public OVRHand OvrHand => _hand;
 
@@ -79,8 +93,51 @@ namespace Kosmos.PseudoHaptic.Meta
                     Vector3 inSpace = _hand.PointerPose.localPosition; // the SDK writes the tracking-space pose there
                     return space != null ? space.TransformPoint(inSpace) : inSpace;
                 }
-                return (_tracked != null ? _tracked : _hand.transform).position;
+                Transform tracked = _tracked != null ? _tracked : _hand.transform;
+                if (_position == PositionSource.PinchPoint && IsTracked && FindTips())
+                {
+                    // Measured in the OVRHand's frame (the bones move with a visual root a Pinch Grab offsets), placed from the tracked one.
+                    Vector3 local = _hand.transform.InverseTransformPoint((_thumbTip.position + _indexTip.position) * 0.5f);
+                    return tracked.TransformPoint(local);
+                }
+                return tracked.position;
             }
+        }
+
+        /// <summary>The hand's skeleton's thumb and index tips, cached; false until it is initialized with both.</summary>
+        bool FindTips()
+        {
+            if (!ReferenceEquals(_skeletonOf, _hand) || (_skeleton == null && Time.unscaledTimeAsDouble >= _nextSkeletonSearch))
+            {
+                // OVRHandPrefab puts OVRSkeleton beside OVRHand; other rigs may put it under or above. Looked for again once a second while missing.
+                _skeletonOf = _hand;
+                _skeleton = _hand.GetComponentInChildren<OVRSkeleton>();
+                if (_skeleton == null) _skeleton = _hand.GetComponentInParent<OVRSkeleton>();
+                _nextSkeletonSearch = Time.unscaledTimeAsDouble + 1;
+                _tipsOf = null;
+            }
+            if (_skeleton == null || !_skeleton.IsInitialized) return false;
+            OVRSkeleton.SkeletonType type = _skeleton.GetSkeletonType();
+            // Hand_ThumbTip and Hand_IndexTip are the OVR hand skeleton's ids; other skeleton types number their bones otherwise.
+            if (type != OVRSkeleton.SkeletonType.HandLeft && type != OVRSkeleton.SkeletonType.HandRight) return false;
+            IList<OVRBone> bones = _skeleton.Bones;
+            // Found again when the skeleton re-initialized (a new bone list, or the runtime's skeleton changed) or a tip was destroyed.
+            if (_thumbTip == null || _indexTip == null || !ReferenceEquals(bones, _tipsOf) || _tipsChangeCount != _skeleton.SkeletonChangedCount)
+            {
+                _tipsOf = bones;
+                _tipsChangeCount = _skeleton.SkeletonChangedCount;
+                _thumbTip = Bone(bones, OVRSkeleton.BoneId.Hand_ThumbTip);
+                _indexTip = Bone(bones, OVRSkeleton.BoneId.Hand_IndexTip);
+            }
+            return _thumbTip != null && _indexTip != null;
+        }
+
+        static Transform Bone(IList<OVRBone> bones, OVRSkeleton.BoneId id)
+        {
+            if (bones == null) return null;
+            for (int i = 0; i < bones.Count; i++)
+                if (bones[i] != null && bones[i].Id == id && bones[i].Transform != null) return bones[i].Transform;
+            return null;
         }
 
         public double PoseTime => double.NaN;

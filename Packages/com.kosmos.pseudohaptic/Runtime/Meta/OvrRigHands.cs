@@ -16,8 +16,9 @@ namespace Kosmos.PseudoHaptic.Meta
         static void Register() => SampleContent.RegisterOvrHands(AddPoseSources);
 
         /// <summary>
-        /// Every enabled <c>OVRHand</c> that no <see cref="OvrHandPoseSource"/> reads gets one on its GameObject (reading
-        /// the hand's own transform: the hand anchor's pose, as the prefab sits at the anchor's origin). Returns how many
+        /// Every enabled <c>OVRHand</c> that no <see cref="OvrHandPoseSource"/> reads gets one on its GameObject, reading
+        /// the pinch point (between the thumb and index tips of the prefab's <c>OVRSkeleton</c>, measured from the hand's
+        /// own transform: the hand anchor's pose, as the prefab sits at the anchor's origin). Returns how many
         /// <c>OVRHand</c>s there are. Not for per-frame use.
         /// </summary>
         public static int AddPoseSources()
@@ -32,6 +33,7 @@ namespace Kosmos.PseudoHaptic.Meta
                 if (IsRead(hand, sources)) continue;
                 OvrHandPoseSource source = hand.gameObject.AddComponent<OvrHandPoseSource>();
                 source.InjectHand(hand);
+                source.Source = OvrHandPoseSource.PositionSource.PinchPoint; // a pinch grabs there, not at the wrist
             }
             return count;
         }
