@@ -37,7 +37,7 @@ public static class EstimatorCatalog
         "one-euro" => "One Euro filter (min cutoff 1 Hz, beta 80 Hz per m/s, speed cutoff 1 Hz)",
         "alpha-beta" => "alpha-beta tracker (alpha 0.6, beta 0.257)",
         DeadbandOneEuro => "One Euro filter, then the default deadband",
-        PaperLiteral => "paper as written: 1 s mean of frame speeds, exp each frame, v x dt",
+        PaperLiteral => "paper as written: mean speed over the last 1 s, exp each frame, v x dt",
         _ => throw new ArgumentException("unknown estimator '" + key + "'", nameof(key)),
     };
 

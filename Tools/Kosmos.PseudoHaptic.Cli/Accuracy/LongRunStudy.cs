@@ -60,7 +60,7 @@ public static class LongRunStudy
         Add("increments-float", "harness increments, float state", IntegratorReplay.Run(new IncrementIntegrator<float>(gain), frames));
         Add("velocity-dt", "object += G·v_hand·dt", IntegratorReplay.Run(new VelocityIntegrator(gain), frames));
         Add("velocity-substep4", "4 sub-steps per frame, v ramped", IntegratorReplay.Run(new VelocityIntegrator(gain, 4), frames));
-        Add(EstimatorCatalog.PaperLiteral, "1 s mean of frame speeds, v·dt", IntegratorReplay.Run(new IntegratorReplay.PaperLiteral(model.MassKg), frames));
+        Add(EstimatorCatalog.PaperLiteral, "mean speed over the last 1 s, v·dt", IntegratorReplay.Run(new IntegratorReplay.PaperLiteral(model.MassKg), frames));
         return (rows, frames.Length);
     }
 

@@ -71,7 +71,7 @@ public static class ReplayCommand
             breakAway = false;
             if (o.Get("--break-away") != null)
                 throw new CliException("option --break-away: the paper-literal profile has no strain and no hold to break (the paper as printed); use paper, paper-experiment, gain or xyz");
-            return new ReplayedPaperLiteral(model.MassKg, CueStrength(o)) { StandardSpeed = o.Number("--standard-speed") ?? WeightSolver.DefaultStandardSpeed };
+            return new ReplayedPaperLiteral(model.MassKg, CueStrength(o), profile.Limits.MaxGain) { StandardSpeed = o.Number("--standard-speed") ?? WeightSolver.DefaultStandardSpeed };
         }
         var solver = CreateSolver3D(o, out breakAway);
         solver.CueStrength = CueStrength(o);

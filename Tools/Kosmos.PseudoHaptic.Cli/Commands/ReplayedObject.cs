@@ -38,9 +38,9 @@ public sealed class ReplayedSolver3D(WeightSolver3D solver) : IReplayedObject
 /// page's baseline runs it (the hold begins at the first usable row, dt from the rows' times); the paper moves objects on
 /// y only, so x and z keep the grab's horizontal offset to the first hand and stay where they were while it is not usable.
 /// </summary>
-public sealed class ReplayedPaperLiteral(double massKg, double cueStrength) : IReplayedObject
+public sealed class ReplayedPaperLiteral(double massKg, double cueStrength, double maxGain) : IReplayedObject
 {
-    readonly PaperLiteralSolver _solver = new(massKg) { CueStrength = cueStrength };
+    readonly PaperLiteralSolver _solver = new(massKg) { CueStrength = cueStrength, MaxGain = maxGain };
     double _x, _z, _gx, _gz, _grabY;
     bool _holding;
 

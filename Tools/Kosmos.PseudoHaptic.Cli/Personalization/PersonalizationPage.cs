@@ -59,7 +59,7 @@ public static class PersonalizationPage
         new("Eq. 2, W_std = 0.045 kg · g", _ => "as printed", "the golf ball is the standard weight; G(m_std) = 1 in every profile"),
         new("Eq. 3, F_std = W_std · v_std", _ => "not computed", "in any reading linear in the hand's speed v_std cancels (§4)"),
         new("Eq. 4, v_virtual = v_hand · W_std / W", p => !p.Has<WeightGain>() ? "not used"
-            : Literal(p) ? "relative reading, per frame on the 1 s mean speed, no cap" : $"relative reading: a gain on the lift, capped at {p.Limits.MaxGain:0.##}",
+            : Literal(p) ? $"relative reading, per frame on the 1 s mean speed, capped at {p.Limits.MaxGain:0.##}" : $"relative reading: a gain on the lift, capped at {p.Limits.MaxGain:0.##}",
             "the printed × lost a fraction bar; as a gain the object follows the hand's motion, not an absolute speed (§1)"),
         new("Eq. 5, v_exp = 1.6793 e^(−0.24·W)", p => p.Has<ExperimentalBlend>() ? "changed: e^(−0.24·m), m in kg, relative to the golf ball's" : "not used",
             "with a + sign or W in newtons the fitted speeds are implausible; relative, a still hand leaves the object still (§1)"),
@@ -69,11 +69,11 @@ public static class PersonalizationPage
             "the paper customizes through v_std, but it cancels in Eq. 3–6; the package lets it act where the model is not linear (§4), measured below"),
         new("§3.1, the correction past 0.2 m", p => p.Has<OffsetCorrection>() ? "changed: a smooth ceiling, threshold 0.2 m at 1 kg and 2 cm more per doubling, never past 0.28 m" : "not applied",
             "read literally the +0.02/−0.02 makes the offset grow; the ceiling stops it smoothly and keeps the masses in order (§6); the experiments ran without it"),
-        new("§3.1, unit time 1 s", p => Literal(p) ? "as printed: the speed is the mean of the frame speeds over the last 1 s" : "changed: speeds per second; every pose followed as it comes",
+        new("§3.1, unit time 1 s", p => Literal(p) ? "as printed: the average speed over the last 1 s (the object at rest before the grab), so the object moves G times the change of the hand's 1 s mean height" : "changed: speeds per second; every pose followed as it comes",
             "a 1 s mean lags half a second (accuracy-results.md measures it); read as the unit of speed (§5)"),
         new("§3.1, y ≥ 0", p => !p.Has<FloorClamp>() ? "not applied" : Literal(p) ? "as printed: the object's height ≥ 0" : "as printed: the object's bottom ≥ the floor (0)",
             "the object never goes through the floor (P5)"),
-        new("added by the package", Added, "what a headset needs to feed the equations (30 Hz poses, jitter, losses) and the paper's next step (§5 of the paper: xyz, height)"),
+        new("added by the package", Added, "what a headset needs to feed the equations (30 Hz poses, jitter, losses) and the paper's next step (§9 of the paper: xyz, height)"),
         new("cue strength s (issue 31)", p => Literal(p) ? "added: v_final = v_real · G^s" : "added: G^s, capped", "per person, from their own threshold (§12); s = 1 is the gain above bit for bit"),
     };
 
@@ -91,7 +91,7 @@ public static class PersonalizationPage
 
     static string Added(WeightProfile p)
     {
-        if (Literal(p)) return "nothing";
+        if (Literal(p)) return "the gain cap (P3)";
         var names = p.Effects.Select(e => e.Name).Where(n => !PaperEffects.Contains(n)).ToList();
         names.Add("the pose estimator and limits");
         return string.Join(", ", names);
@@ -144,15 +144,18 @@ public static class PersonalizationPage
         var frames = ReferenceLift.Frames();
         var masses = new[] { 0.1 }.Concat(CueStrengthTuning.ExperimentOneBoxes).ToArray();
         var sb = new StringBuilder("| s | ");
-        sb.Append(string.Join(" | ", masses.Select(m => $"{NumberText.Format(m)} kg: lag mm (rise ratio)"))).Append(" | 1 vs 2 kg: lag difference mm | 1 vs 2 kg: cue difference |\n|---:|");
+        // The heaviest adjacent pair of the boxes (C and B): the pair whose lags come closest as s grows.
+        double lighter = masses[masses.Length - 2], heavier = masses[masses.Length - 1];
+        string pair = $"{NumberText.Format(lighter)} vs {NumberText.Format(heavier)} kg";
+        sb.Append(string.Join(" | ", masses.Select(m => $"{NumberText.Format(m)} kg: lag mm (rise ratio)"))).Append($" | {pair}: lag difference mm | {pair}: cue difference |\n|---:|");
         sb.Append(string.Concat(Enumerable.Repeat("---:|", masses.Length + 2))).Append('\n');
         foreach (double s in Strengths)
         {
             var lags = masses.Select(m => ReferenceLift.EndLag(profile, m, WeightSolver.DefaultStandardSpeed, s, frames)).ToArray();
-            double c1 = ReferenceLift.Cue(profile, 1, WeightSolver.DefaultStandardSpeed, s, frames), c2 = ReferenceLift.Cue(profile, 2, WeightSolver.DefaultStandardSpeed, s, frames);
+            double c1 = ReferenceLift.Cue(profile, lighter, WeightSolver.DefaultStandardSpeed, s, frames), c2 = ReferenceLift.Cue(profile, heavier, WeightSolver.DefaultStandardSpeed, s, frames);
             sb.Append($"| {NumberText.Fixed(s, 3)} | ");
             sb.Append(string.Join(" | ", lags.Select(l => $"{Mm(l)} ({NumberText.Fixed((ReferenceLift.Rise - l) / ReferenceLift.Rise, 3)})")));
-            sb.Append($" | {Mm(lags[3] - lags[2])} | {NumberText.Fixed(c1 - c2, 3)} |\n");
+            sb.Append($" | {Mm(lags[masses.Length - 1] - lags[masses.Length - 2])} | {NumberText.Fixed(c1 - c2, 3)} |\n");
         }
         return sb.ToString();
     }

@@ -12,7 +12,7 @@ namespace Kosmos.PseudoHaptic.Cli.Personalization;
 /// Each runs the discrimination kit's method of constant stimuli at s = 1 (9 levels spaced by √(1 + Weber) around 2 kg,
 /// <see cref="Repetitions"/> = 80 repetitions: 720 trials, as a pilot would place them), the answers go through the trials
 /// file's format and <c>tune</c>'s own code (<see cref="TuneCommand.Tune"/>, the fit on the cue difference, the JND's upper
-/// bound at <see cref="Confidence"/>), and the percent correct on Experiment 1's adjacent boxes (0.6 vs 1 kg, 1 vs 2 kg) is
+/// bound at <see cref="Confidence"/>), and the percent correct on Experiment 1's adjacent boxes (A vs C, C vs B: 1.0125 vs 1.6875 kg, 1.6875 vs 2.7 kg) is
 /// the observer's own probability of a correct 2AFC answer, before (s = 1) and after (the tuned s). The claim is about all
 /// seven observers at once, so each is tuned at the Bonferroni confidence 1 − 0.05/7 (all seven reach 75 % together with
 /// at least 95 %). What this tests: the fit, the mapping, the confidence bound and the bounds, given that the observer

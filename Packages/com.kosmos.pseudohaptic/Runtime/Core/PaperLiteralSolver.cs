@@ -5,14 +5,19 @@ namespace Kosmos.PseudoHaptic
 {
     /// <summary>
     /// The named profile <c>paper-literal</c> (<see cref="NamedProfiles.PaperLiteral"/>): the weight algorithm written the
-    /// way the paper describes it. Every frame the hand's speed is measured over the frame (Δy / dt), kept in a
-    /// <see cref="List{T}"/> of the last second of samples, and averaged ("the unit time for measuring the average speed
-    /// is 1 s"); W = m·g, Eq. 4's ratio and Eq. 5's exponential are recomputed every frame; the object moves by
-    /// v_final · dt (Eq. 6, in the package's relative reading so that its gain equals the package's), and never below
-    /// y = 0 (the paper's only bound). No precomputation, no cap on the gain, no offset correction, no other effect.
-    /// It is the accuracy page's baseline (accuracy-results.md, row <c>paper-literal</c>) and the benchmarks' naive
-    /// implementation, and what <c>pseudohaptic replay --profile paper-literal</c> runs. It allocates while its window
-    /// grows and does a list scan per frame: a reference, not a pipeline for a headset.
+    /// way the paper describes it. The hand's speed is averaged over the paper's unit time of 1 s ("the unit time for
+    /// measuring the average speed of a virtual object is defined as 1 s"): at every instant the average speed over the
+    /// last second, (y(t) − y(t − 1 s)) / 1 s, of the hand's path (straight between the heights of successive frames, the
+    /// object at rest before the grab, so the hand counts as resting where it was grabbed), taken over each frame; W = m·g,
+    /// Eq. 4's ratio and Eq. 5's exponential are recomputed every frame; the object moves by v_final · dt (Eq. 6, in the
+    /// package's relative reading so that its gain equals the package's), and never below y = 0 (the paper's only bound).
+    /// Integrated so, the object moves G times the change of the hand's mean height over the last second: a second after
+    /// the hand stops the object has moved G times the hand, whatever the frame times (the golf ball, G = 1, ends at the
+    /// hand). Added to the paper: the gain cap of every profile (<see cref="MaxGain"/>, P3; the paper's Eq. 4 alone moves a
+    /// 1 g object 45 times the hand). No precomputation, no offset correction, no other effect. It is the accuracy page's
+    /// baseline (accuracy-results.md, row <c>paper-literal</c>) and the benchmarks' naive implementation, and what
+    /// <c>pseudohaptic replay --profile paper-literal</c> runs. It allocates while its window grows and walks the window
+    /// every frame: a reference, not a pipeline for a headset.
     /// </summary>
     public sealed class PaperLiteralSolver
     {
@@ -21,12 +26,16 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The paper's floor: the object's height never goes below this, m (§3.1, "y ≥ 0").</summary>
         public const double Floor = 0.0;
 
-        readonly List<double> _times = new List<double>();
-        readonly List<double> _speeds = new List<double>();
+        // The hand's path over (at least) the last second, oldest first: each frame a straight piece from its start height
+        // to its end height over its duration; the first piece is the rest before the grab.
+        readonly List<double> _durations = new List<double>();
+        readonly List<double> _from = new List<double>();
+        readonly List<double> _to = new List<double>();
         readonly double _massKg;
         double _cueStrength = WeightSolver.DefaultCueStrength;
-        double _clock;
+        double _maxGain = SolverLimits.Default.MaxGain;
         double _handY;
+        double _mean; // the hand's mean height over the last second, after the last frame
 
         public PaperLiteralSolver(double massKg)
         {
@@ -46,13 +55,31 @@ namespace Kosmos.PseudoHaptic
             set => _cueStrength = ConfigurationGuard.InRange(value, WeightSolver.MinCueStrength, WeightSolver.MaxCueStrength, nameof(CueStrength));
         }
 
+        /// <summary>The largest gain on the hand's motion (P3), the profile's <see cref="SolverLimits.MaxGain"/>: default 3;
+        /// within [1, 100] as the limits' setting. Eq. 6 is computed as printed below it.</summary>
+        public double MaxGain
+        {
+            get => _maxGain;
+            set => _maxGain = ConfigurationGuard.InRange(value, 1.0, 100.0, nameof(MaxGain));
+        }
+
         public void BeginHold(double handY, double objectY)
         {
-            _times.Clear();
-            _speeds.Clear();
-            _clock = 0;
+            _durations.Clear();
+            _from.Clear();
+            _to.Clear();
             _handY = handY;
+            if (HandSample.IsUsableHeight(handY)) Rest(handY);
             ObjectY = Math.Max(objectY, Floor);
+        }
+
+        /// <summary>The hand at rest at <paramref name="y"/> for the last second: the path before the grab.</summary>
+        void Rest(double y)
+        {
+            _durations.Add(UnitTime);
+            _from.Add(y);
+            _to.Add(y);
+            _mean = y;
         }
 
         /// <summary>A frame time shorter than this, s, is not a frame: Δy / dt over it would be absurd (a new pose under a
@@ -65,37 +92,52 @@ namespace Kosmos.PseudoHaptic
         public double Step(double handY, bool tracked, double dt)
         {
             if (!(dt >= ShortestFrame) || double.IsInfinity(dt)) return ObjectY;
-            _clock += dt;
-            double speed = 0;
-            if (tracked && HandSample.IsUsableHeight(handY))
+            bool usable = tracked && HandSample.IsUsableHeight(handY);
+            if (_durations.Count == 0)
             {
-                // A hold begun before the hand was seen (a NaN start) takes its first usable height as where it was.
-                speed = HandSample.IsUsableHeight(_handY) ? (handY - _handY) / dt : 0;
-                _handY = handY;
+                // A hold begun before the hand was seen takes its first usable height as where it was: this frame is still.
+                if (usable) { _handY = handY; Rest(handY); }
+                return ObjectY;
             }
-            _times.Add(_clock);
-            _speeds.Add(speed);
-            while (_times.Count > 1 && _times[0] <= _clock - UnitTime)
+            double y = usable ? handY : _handY; // no usable hand: it stays where it was last seen
+            _durations.Add(dt);
+            _from.Add(_handY);
+            _to.Add(y);
+            _handY = y;
+
+            // The mean height over the last second, from the newest piece back (measured from the hand's height now, so that
+            // a resting hand gives exactly its height and moves nothing); pieces wholly older than that go.
+            double remaining = UnitTime, area = 0;
+            int i = _durations.Count - 1;
+            for (; i >= 0 && remaining > 0; i--)
             {
-                _times.RemoveAt(0);
-                _speeds.RemoveAt(0);
+                double d = _durations[i], take = Math.Min(d, remaining);
+                area += take * ((_to[i] - y) - (_to[i] - _from[i]) * (take / d) / 2); // the piece's last `take` seconds
+                remaining -= take;
             }
-            double sum = 0;
-            for (int i = 0; i < _speeds.Count; i++) sum += _speeds[i];
-            double vReal = sum / _speeds.Count;                                    // average speed over the unit time
+            if (i >= 0)
+            {
+                _durations.RemoveRange(0, i + 1);
+                _from.RemoveRange(0, i + 1);
+                _to.RemoveRange(0, i + 1);
+            }
+            double mean = y + area / UnitTime;
+            double vReal = (mean - _mean) / dt;                                    // average speed over the unit time
+            _mean = mean;
 
             double weight = _massKg * Gravity;                                     // Eq. 1
             double standardWeight = StandardMassKg * Gravity;                      // Eq. 2
             double vVirtual = vReal * standardWeight / weight;                     // Eq. 4
             double vExperiment = CurveA * Math.Exp(-CurveB * _massKg);             // Eq. 5
             double vExperimentStandard = CurveA * Math.Exp(-CurveB * StandardMassKg);
-            double vFinal = _cueStrength == 1.0
+            double gain = (standardWeight / weight + vExperiment / vExperimentStandard) / 2;
+            double vFinal = _cueStrength == 1.0 && gain <= _maxGain
                 ? (vVirtual + vReal * vExperiment / vExperimentStandard) / 2        // Eq. 6
-                : vReal * Math.Pow((standardWeight / weight + vExperiment / vExperimentStandard) / 2, _cueStrength);
-            double y = ObjectY + vFinal * dt;
+                : vReal * Math.Min(Math.Pow(gain, _cueStrength), _maxGain);
+            double next = ObjectY + vFinal * dt;
             // y ≥ 0; and only a height a pose could have (finite, within ±10⁵ m, as the pipeline keeps it): hands that jump
             // tens of kilometres make v_final absurd, and the object stays where it is instead.
-            if (Math.Abs(y) <= WeightSolver.MaxCoordinate) ObjectY = Math.Max(y, Floor);
+            if (Math.Abs(next) <= WeightSolver.MaxCoordinate) ObjectY = Math.Max(next, Floor);
             return ObjectY;
         }
     }

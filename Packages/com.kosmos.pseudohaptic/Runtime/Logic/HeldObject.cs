@@ -134,9 +134,9 @@ namespace Kosmos.PseudoHaptic
                 else Solver3D.Configure(model, used, standardSpeed);
                 Solver3D.CueStrength = cueStrength;
                 if (!NamedProfiles.IsPaperLiteral(profile)) _literal = null;
-                else if (_literal == null || _literal.MassKg != model.MassKg || _literal.CueStrength != cueStrength)
+                else if (_literal == null || _literal.MassKg != model.MassKg || _literal.CueStrength != cueStrength || _literal.MaxGain != profile.Limits.MaxGain)
                 {
-                    var literal = new PaperLiteralSolver(model.MassKg) { CueStrength = cueStrength };
+                    var literal = new PaperLiteralSolver(model.MassKg) { CueStrength = cueStrength, MaxGain = profile.Limits.MaxGain };
                     // Mid-hold, the new one continues from where the object is.
                     if (_active && _literal != null) literal.BeginHold(Solver3D.FollowedY, _literal.ObjectY);
                     _literal = literal;

@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System;
 using Kosmos.PseudoHaptic.Simulation;
 using NUnit.Framework;
@@ -16,7 +17,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var frames = ReferenceLift.Frames();
             double Cue(double m, double s) => ReferenceLift.Cue(NamedProfiles.PaperExperiment, m, WeightSolver.DefaultStandardSpeed, s, frames);
             Assert.That(t.ThresholdCue, Is.EqualTo(Math.Abs(Cue(standard + jnd, 1) - Cue(standard, 1))));
-            double Least(double s) => Math.Min(Math.Abs(Cue(0.6, s) - Cue(1.0, s)), Math.Abs(Cue(1.0, s) - Cue(2.0, s)));
+            double Least(double s) => Math.Min(Math.Abs(Cue(Boxes[0], s) - Cue(Boxes[1], s)), Math.Abs(Cue(Boxes[1], s) - Cue(Boxes[2], s)));
             Assert.That(t.Reached, Is.True);
             Assert.That(Least(t.CueStrength), Is.GreaterThanOrEqualTo(t.ThresholdCue), "one JND apart at the tuned strength");
             if (t.CueStrength > WeightSolver.MinCueStrength)
@@ -55,12 +56,25 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(hopeless.AdjacentCue, Is.LessThan(hopeless.ThresholdCue));
         }
 
+        /// <summary>A person's cue is tuned for the Experiment 1 the demo and the samples show (15 cm cubes of 300, 500 and 800
+        /// kg/m³: 1.0125, 1.6875 and 2.7 kg), not another set: it was 0.6, 1 and 2 kg, whose closer ratio asked for about
+        /// 1.4 times the strength the shown boxes need.</summary>
+        [Test]
+        public void TheDefaultMassesAreTheExperimentOneBoxesTheScenesShow()
+        {
+            Assert.That(Boxes, Is.EqualTo(new[] { 1.0125, 1.6875, 2.7 }).Within(1e-12));
+            var shown = new List<double>();
+            foreach (double density in PaperExperiment1.BoxDensities) shown.Add(PaperExperiment1.Mass(density));
+            shown.Sort();
+            Assert.That(Boxes, Is.EqualTo(shown));
+        }
+
         [Test]
         public void TheMassesMayComeInAnyOrder()
         {
-            var shuffled = CueStrengthTuning.Solve(2, 0.3, new[] { 2.0, 0.6, 1.0 });
+            var shuffled = CueStrengthTuning.Solve(2, 0.3, new[] { Boxes[2], Boxes[0], Boxes[1] });
             var sorted = CueStrengthTuning.Solve(2, 0.3, Boxes);
-            Assert.That(shuffled.Masses, Is.EqualTo(new[] { 0.6, 1.0, 2.0 }), "sorted here");
+            Assert.That(shuffled.Masses, Is.EqualTo(Boxes), "sorted here");
             Assert.That(shuffled.CueStrength, Is.EqualTo(sorted.CueStrength));
             Assert.That(shuffled.AdjacentCue, Is.EqualTo(sorted.AdjacentCue));
         }

@@ -7,14 +7,23 @@ namespace Kosmos.PseudoHaptic.Tests
     /// <see cref="PaperLiteralSolver"/>, the paper as printed (ALGORITHM.md §12), against hand computations: Eq. 1, 2, 4, 5
     /// and 6 in their relative reading with the paper's own constants (g = 9.80665 m/s², the golf ball's 0.045 kg, Eq. 5's
     /// 1.6793 m/s and 0.24 /kg, written here, not taken from the solver), the hand's speed averaged over the unit time of
-    /// 1 s, and what it must absorb: a bad frame time, an untracked frame, a hold begun before the hand was seen, a hold
-    /// begun after another one. Frames are 1/8 s long so that the clock is exact and the last second is exactly 8 frames.
+    /// 1 s (the average speed over the last second of the hand's path, straight between frames, the hand resting where it
+    /// was grabbed before the grab: the object then moves G times the change of the hand's mean height over the last
+    /// second, which these tests compute by hand), the gain cap of 3 (P3), and what it must absorb: a bad frame time, an
+    /// untracked frame, a hold begun before the hand was seen, a hold begun after another one, any frame times. Frames are
+    /// 1/8 s long so that the clock is exact and the last second is exactly 8 frames.
     /// </summary>
     public class PaperLiteralSolverTests
     {
         const double G = 9.80665, GolfBallKg = 0.045, CurveA = 1.6793, CurveB = 0.24;
         const double Dt = 0.125;
         const double Exact = 1e-12;
+
+        /// <summary>algorithm-reading.md's P3: the gain cap that holds in every profile.</summary>
+        const double Cap = 3;
+
+        /// <summary>The gain at cue strength <paramref name="s"/>: G^s, capped (P3).</summary>
+        static double CappedGain(double massKg, double s) => Math.Min(Math.Pow(PaperGain(massKg), s), Cap);
 
         /// <summary>Eq. 6 in its relative reading, as a gain on the mean hand speed: ½(W_std/W + v_exp(m)/v_exp(m_std)),
         /// W = m·g (Eq. 1), W_std = 0.045 kg·g (Eq. 2), v_exp(m) = 1.6793·e^(−0.24·m) (Eq. 5).</summary>
@@ -39,76 +48,108 @@ namespace Kosmos.PseudoHaptic.Tests
         /// <summary>At the cue strength 1 each frame is Eq. 6 as printed, bit for bit: v_final = (v_virtual + v_real ·
         /// v_exp(m)/v_exp(m_std)) / 2 with v_virtual = v_real · W_std / W (Eq. 4), not the algebraically equal gain form
         /// v_real · ½(W_std/W + v_exp(m)/v_exp(m_std)) the other cue strengths use, which rounds differently: a researcher
-        /// replaying the paper's equations gets them as written. One frame of 1 cm in 1/8 s (0.08 m/s, the window's only
-        /// sample), 200 masses from 1 g to 20 kg.</summary>
+        /// replaying the paper's equations gets them as written. One frame of 0.5 s in which the hand rises 0.375 m from rest:
+        /// its mean height over the last second rises by the ramp's half over half the window, 0.09375 m (exact in binary),
+        /// so v_real = 0.1875 m/s; 200 masses from 15 g to 20 kg (below the cap: above it the cap's form is used).</summary>
         [Test]
         public void AtCueStrengthOneEachFrameIsEquationSixAsPrintedBitForBit()
         {
             var rng = new Random(6);
             int differs = 0;
+            const double dt = 0.5, vReal = 0.1875;
             for (int i = 0; i < 200; i++)
             {
-                double massKg = 0.001 * Math.Pow(20000, rng.NextDouble());
+                double massKg = 0.015 * Math.Pow(20 / 0.015, rng.NextDouble());
                 var solver = new PaperLiteralSolver(massKg);
                 solver.BeginHold(1.0, 1.0);
-                double vReal = (1.01 - 1.0) / Dt;
                 double weight = massKg * G, standardWeight = GolfBallKg * G;
                 double vVirtual = vReal * standardWeight / weight;
                 double vExp = CurveA * Math.Exp(-CurveB * massKg), vExpStandard = CurveA * Math.Exp(-CurveB * GolfBallKg);
-                double printed = 1.0 + (vVirtual + vReal * vExp / vExpStandard) / 2 * Dt;
-                double gainForm = 1.0 + vReal * ((standardWeight / weight + vExp / vExpStandard) / 2) * Dt;
+                double printed = 1.0 + (vVirtual + vReal * vExp / vExpStandard) / 2 * dt;
+                double gainForm = 1.0 + vReal * ((standardWeight / weight + vExp / vExpStandard) / 2) * dt;
                 if (printed != gainForm) differs++;
-                Assert.That(solver.Step(1.01, true, Dt), Is.EqualTo(printed), $"{massKg} kg");
+                Assert.That(solver.Step(1.375, true, dt), Is.EqualTo(printed), $"{massKg} kg");
             }
             Assert.That(differs, Is.GreaterThan(0), "the two forms round apart for some masses, so the test can tell them");
         }
 
-        /// <summary>The hand rests for a second, jumps 8 cm in one frame and rests again: the last second's mean speed is
-        /// 8 cm/s for exactly the 8 frames that hold the jump, so the object climbs G^s · 1 cm on each of them (v·dt, Eq. 6)
-        /// and then stands still, G^s · 8 cm above where it was.</summary>
+        /// <summary>
+        /// The hand rests for a second, rises 8 cm in one frame (1/8 s) and rests again. Its mean height over the last second
+        /// rises by 5 mm over that frame (the ramp's half, over an eighth of the window), by 1 cm over each of the next seven
+        /// and by 5 mm over the one after, so the object climbs G^s (capped at 3) times that and then stands still, G^s · 8 cm
+        /// above where it was.
+        /// </summary>
         [Test]
-        public void AOneFrameMoveIsSpreadEvenlyOverTheNextSecond([Values(0.01, 0.045, 0.5, 2, 5)] double massKg, [Values(1.0, 0.5, 2.0)] double strength)
+        public void AOneFrameMoveIsSpreadOverTheNextSecond([Values(0.01, 0.045, 0.5, 2, 5)] double massKg, [Values(1.0, 0.5, 2.0)] double strength)
         {
             var solver = new PaperLiteralSolver(massKg) { CueStrength = strength };
             solver.BeginHold(1.0, 1.0);
-            double gain = Math.Pow(PaperGain(massKg), strength), step = 0.08;
+            double gain = CappedGain(massKg, strength), step = 0.08;
             for (int frame = 1; frame <= 32; frame++)
             {
                 double hand = frame < 9 ? 1.0 : 1.0 + step;
                 double y = solver.Step(hand, true, Dt);
-                int framesOfTheJumpSoFar = Math.Min(Math.Max(frame - 8, 0), 8);
-                double expected = 1.0 + gain * step / 8 * framesOfTheJumpSoFar;
-                Assert.That(y, Is.EqualTo(expected).Within(Exact), $"frame {frame} (t = {frame * Dt} s)");
+                double meanRise = frame < 9 ? 0 : frame >= 17 ? step : 0.005 + 0.01 * (frame - 9);
+                Assert.That(y, Is.EqualTo(1.0 + gain * meanRise).Within(Exact), $"frame {frame} (t = {frame * Dt} s)");
             }
             Assert.That(solver.ObjectY - 1.0, Is.EqualTo(gain * step).Within(Exact), "the object ends G^s times the hand's move above");
         }
 
-        /// <summary>"The unit time for measuring the average speed is 1 s": a steady lift's mean speed is the hand's speed,
-        /// and a second after the hand stops the window holds only still frames.</summary>
+        /// <summary>
+        /// "The unit time for measuring the average speed is 1 s": a hand lifting at 0.4 m/s from the grab for 2 s. The object
+        /// was at rest before the grab, so the mean speed over the last second grows over the first second (the mean height
+        /// 0.5 + 0.2 t²), is the hand's 0.4 m/s while the window holds only the lift (0.5 + 0.4 (t − ½)), falls off over the
+        /// second after the stop (1.3 − 0.2 (3 − t)²) and is 0 from then on: the object moves G times the mean height's change
+        /// and stands still G · 0.8 m above where it was a second after the hand.
+        /// </summary>
         [Test]
-        public void ASteadyLiftMovesAtTheGainAndStopsOneSecondAfterTheHand()
+        public void ASteadyLiftMovesAtTheGainOnceTheSecondHoldsOnlyTheLiftAndStopsOneSecondAfterTheHand()
         {
             var solver = new PaperLiteralSolver(1);
             solver.BeginHold(0.5, 0.5);
-            double gain = PaperGain(1), speed = 0.4, hand = 0.5;
-            double[] path = new double[40];
+            double gain = PaperGain(1), hand = 0.5;
             for (int frame = 1; frame <= 40; frame++)
             {
-                if (frame <= 16) hand += speed * Dt;     // 2 s at 0.4 m/s, then still
-                path[frame - 1] = solver.Step(hand, true, Dt);
+                if (frame <= 16) hand = 0.5 + 0.4 * Dt * frame; // 2 s at 0.4 m/s, then still
+                double t = frame * Dt;
+                double mean = t <= 1 ? 0.5 + 0.2 * t * t : t <= 2 ? 0.5 + 0.4 * (t - 0.5) : t <= 3 ? 1.3 - 0.2 * (3 - t) * (3 - t) : 1.3;
+                Assert.That(solver.Step(hand, true, Dt), Is.EqualTo(0.5 + gain * (mean - 0.5)).Within(Exact), $"frame {frame} (t = {t} s)");
             }
-            // While the lift goes on the mean speed is 0.4 m/s on every frame (the window fills with equal speeds).
-            for (int frame = 1; frame <= 16; frame++)
-                Assert.That(path[frame - 1], Is.EqualTo(0.5 + gain * speed * Dt * frame).Within(Exact), $"frame {frame}");
-            // After the stop, frame 16 + k holds 8 − k moving frames of the last 8.
-            double y = path[15];
-            for (int k = 1; k <= 8; k++)
+            Assert.That(solver.ObjectY, Is.EqualTo(0.5 + gain * 0.8).Within(Exact));
+        }
+
+        /// <summary>
+        /// P1 for the paper as printed: the golf ball (G = 1) ends at the hand, and every mass G^s (capped) times the hand's
+        /// lift from the grab, whatever the frames (300 seeds: 30–120 Hz with jitter, a 0.1 s hitch, a lift of 5–60 cm in
+        /// 0.2–1.5 s starting at the grab, then 1.2 s of rest). The mean of the frame speeds of the last second, taken over the
+        /// frames the hold had so far (the reading before this one), left the golf ball up to 18 cm above the hand after a
+        /// lift begun at the grab, and a hitch moved it off by centimetres.
+        /// </summary>
+        [Test]
+        public void TheObjectEndsGTimesTheHandsLiftWhateverTheFrames()
+        {
+            double[] masses = { 0.001, 0.01, GolfBallKg, 0.3, 1, 2.7, 8 };
+            for (int seed = 0; seed < 300; seed++)
             {
-                y += gain * speed * (8 - k) / 8 * Dt;
-                Assert.That(path[15 + k], Is.EqualTo(y).Within(Exact), $"{k} frame(s) after the stop");
+                var rng = new Random(seed);
+                double massKg = masses[seed % masses.Length], strength = seed % 3 == 0 ? 1 : 1.0 / 3 + rng.NextDouble() * (3 - 1.0 / 3);
+                double rate = 30 + rng.NextDouble() * 90, lift = 0.05 + rng.NextDouble() * 0.55, duration = 0.2 + rng.NextDouble() * 1.3;
+                double hitchAt = rng.NextDouble() * (duration + 1.0);
+                var solver = new PaperLiteralSolver(massKg) { CueStrength = strength };
+                double start = 0.8, t = 0;
+                solver.BeginHold(start, start);
+                bool hitched = false;
+                while (t < duration + 1.2)
+                {
+                    double dt = (1 / rate) * (0.7 + 0.6 * rng.NextDouble());
+                    if (!hitched && t >= hitchAt) { dt = 0.1; hitched = true; }
+                    t += dt;
+                    double u = Math.Min(t / duration, 1);
+                    solver.Step(start + lift * u * u * u * (10 + u * (-15 + 6 * u)), true, dt);
+                }
+                double expected = start + CappedGain(massKg, strength) * lift;
+                Assert.That(solver.ObjectY, Is.EqualTo(expected).Within(1e-9), $"seed {seed}: {massKg} kg, s {strength:0.###}, {rate:0} Hz, {lift:0.###} m in {duration:0.##} s");
             }
-            for (int frame = 25; frame <= 40; frame++)
-                Assert.That(path[frame - 1], Is.EqualTo(path[23]), $"frame {frame}: still a second after the hand");
         }
 
         [Test]
@@ -156,8 +197,8 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         /// <summary>A frame without a usable hand (untracked, even with a plausible height; tracked with a NaN or a
-        /// height beyond ±10⁵ m) is a still frame: the object does not move, and the next tracked height is measured from
-        /// the last tracked one, so the move is spread over the next second as any other.</summary>
+        /// height beyond ±10⁵ m) is a still frame: the object does not move, and the next tracked height is reached from
+        /// the last tracked one over the frame it comes in, so the move is spread over the next second as any other.</summary>
         [TestCase(false, 1.7)]
         [TestCase(true, double.NaN)]
         [TestCase(true, 2e5)]
@@ -168,17 +209,17 @@ namespace Kosmos.PseudoHaptic.Tests
             double gain = PaperGain(2);
             for (int frame = 1; frame <= 8; frame++) Assert.That(solver.Step(1.0, true, Dt), Is.EqualTo(1.0));
             Assert.That(solver.Step(reported, tracked, Dt), Is.EqualTo(1.0), "frame 9: no usable hand, no motion");
-            // Frame 10: 8 cm above the last tracked height; the mean over frames 3..10 is 8 cm/s for 8 frames.
+            // Frame 10: 8 cm above the last tracked height, reached over that frame: the mean rises 5 mm, then 1 cm a frame.
             for (int frame = 10; frame <= 24; frame++)
             {
                 double y = solver.Step(1.08, true, Dt);
-                double expected = 1.0 + gain * 0.01 * Math.Min(frame - 9, 8);
-                Assert.That(y, Is.EqualTo(expected).Within(Exact), $"frame {frame}");
+                double meanRise = frame >= 18 ? 0.08 : 0.005 + 0.01 * (frame - 10);
+                Assert.That(y, Is.EqualTo(1.0 + gain * meanRise).Within(Exact), $"frame {frame}");
             }
         }
 
-        /// <summary>A hold begun before the hand was seen (a NaN start) takes the first usable height as where the hand was:
-        /// that frame is still, and the object follows from the next one, the window's mean taken over the frames it holds.</summary>
+        /// <summary>A hold begun before the hand was seen (a NaN start) takes the first usable height as where the hand was
+        /// (and had rested): that frame is still, and the object follows from the next one.</summary>
         [Test]
         public void AHoldBegunBeforeTheHandWasSeenFollowsFromItsFirstHeight()
         {
@@ -187,14 +228,14 @@ namespace Kosmos.PseudoHaptic.Tests
             double gain = PaperGain(2);
             Assert.That(solver.Step(double.NaN, false, Dt), Is.EqualTo(0.5));
             Assert.That(solver.Step(1.0, true, Dt), Is.EqualTo(0.5), "the first height seen is where the hand was");
-            // Frame 3: the hand rose 8 cm (0.64 m/s); the window holds 3 frames, mean 0.64/3 m/s.
-            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(0.5 + gain * 0.64 / 3 * Dt).Within(Exact));
-            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(0.5 + gain * (0.64 / 3 + 0.64 / 4) * Dt).Within(Exact));
+            // Frame 3: the hand rose 8 cm over the frame: its mean over the last second rose 5 mm; then 1 cm a frame.
+            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(0.5 + gain * 0.005).Within(Exact));
+            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(0.5 + gain * 0.015).Within(Exact));
         }
 
-        /// <summary>A frame time so long (10¹⁶ s and more: finite and positive, so a frame) that the clock can no longer
-        /// advance by the unit time leaves the window its current frame: the object never freezes, it follows the hand at
-        /// the gain G frame by frame.</summary>
+        /// <summary>A frame time so long (10¹⁶ s and more: finite and positive, so a frame) that a clock could no longer
+        /// advance by the unit time: the window is that frame's last second, the object never freezes, and a second after
+        /// the hand moves the object has moved G times as far.</summary>
         [TestCase(1e16)]
         [TestCase(1e300)]
         public void AnAbsurdlyLongFrameNeverFreezesTheObject(double hugeDt)
@@ -203,9 +244,9 @@ namespace Kosmos.PseudoHaptic.Tests
             solver.BeginHold(1.0, 1.0);
             Assert.That(solver.Step(1.0, true, hugeDt), Is.EqualTo(1.0));
             double gain = PaperGain(2);
-            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(1.0 + gain * 0.08).Within(Exact), "8 cm at once, the window one frame");
-            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(1.0 + gain * 0.08).Within(Exact));
-            Assert.That(solver.Step(1.0, true, Dt), Is.EqualTo(1.0).Within(Exact));
+            Assert.That(solver.Step(1.08, true, Dt), Is.EqualTo(1.0 + gain * 0.005).Within(Exact), "the mean rises 5 mm over the frame");
+            for (int frame = 0; frame < 8; frame++) solver.Step(1.08, true, Dt);
+            Assert.That(solver.ObjectY, Is.EqualTo(1.0 + gain * 0.08).Within(Exact));
         }
 
         /// <summary>A frame shorter than 0.1 ms is not a frame: under a new pose its Δy / dt is absurd (0.45 m in 1e-9 s), and
@@ -229,8 +270,8 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(with.ObjectY, Is.GreaterThan(1.1), "the move was measured, by the frame after the instant");
         }
 
-        /// <summary>A hand that jumps a hundred kilometres and back (tracked, each height usable) under a light object (the
-        /// literal gain has no cap: 10 g leads the hand 2.7 times) makes v_final absurd: only a height a pose could have is
+        /// <summary>A hand that jumps a hundred kilometres and back (tracked, each height usable) under a light object (10 g
+        /// leads the hand 2.7 times) makes v_final absurd: only a height a pose could have is
         /// taken (within ±10⁵ m, as the pipeline keeps it), so the object never leaves it.</summary>
         [Test]
         public void AnAbsurdSpeedNeverThrowsTheObjectBeyondAPosesReach()

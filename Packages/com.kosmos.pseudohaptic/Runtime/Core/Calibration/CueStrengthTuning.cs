@@ -19,8 +19,12 @@ namespace Kosmos.PseudoHaptic
     /// </summary>
     public sealed class CueStrengthTuning
     {
-        /// <summary>Experiment 1's boxes: 8 L at 75, 125 and 250 kg/m³ (A, C, B), kg.</summary>
-        public static readonly double[] ExperimentOneBoxes = { 0.6, 1.0, 2.0 };
+        /// <summary>Experiment 1's boxes (<see cref="PaperExperiment1"/>: A, C, B, lightest first), kg: the scene a person's cue is
+        /// tuned for unless another is given.</summary>
+        public static readonly double[] ExperimentOneBoxes =
+        {
+            PaperExperiment1.Mass(PaperExperiment1.BoxADensity), PaperExperiment1.Mass(PaperExperiment1.BoxCDensity), PaperExperiment1.Mass(PaperExperiment1.BoxBDensity),
+        };
 
         /// <summary>The profile the tuning measures the cue under: the one the paper's experiments ran.</summary>
         public static WeightProfile Profile => NamedProfiles.PaperExperiment;

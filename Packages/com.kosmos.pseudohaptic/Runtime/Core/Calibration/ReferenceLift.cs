@@ -35,7 +35,7 @@ namespace Kosmos.PseudoHaptic
             double y;
             if (NamedProfiles.IsPaperLiteral(profile))
             {
-                var literal = new PaperLiteralSolver(massKg) { CueStrength = cueStrength };
+                var literal = new PaperLiteralSolver(massKg) { CueStrength = cueStrength, MaxGain = profile.Limits.MaxGain };
                 literal.BeginHold(frames[0].HandY, frames[0].HandY);
                 for (int i = 1; i < frames.Length; i++) literal.Step(frames[i].HandY, frames[i].Tracked, frames[i].Time - frames[i - 1].Time);
                 y = literal.ObjectY;

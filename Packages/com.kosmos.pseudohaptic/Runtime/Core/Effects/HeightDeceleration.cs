@@ -3,7 +3,7 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// The paper's named next step (§5): "speed deceleration according to ... the height". An object heavier than the
+    /// The paper's named next step (§9, Conclusions): "speed deceleration according to ... the height". An object heavier than the
     /// standard rises more slowly the higher the hand has lifted it, and the more the heavier it is: at lift h (how high
     /// the hand has lifted the object above where the lift began, <see cref="MotionFrame.Lift"/>) the object moves
     /// f(h, m) = φ + (1 − φ) / (1 + w(m) · h / <see cref="Height"/>) as much as it would without the effect, with
@@ -19,7 +19,7 @@ namespace Kosmos.PseudoHaptic
     {
         /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
         public static readonly EffectDescriptor Descriptor = new EffectDescriptor("height-deceleration", EffectStage.Lift, typeof(HeightDeceleration),
-            "§5 (\"the height\")",
+            "§9 (\"the height\")",
             "an object heavier than the standard rises more slowly the higher the hand has lifted it, never below a floor fraction; a lowering retraces it",
             s => new HeightDeceleration(s[0], s[1]),
             SettingDescriptor.Number<HeightDeceleration>("height", "m", 0.125, 0.01, 100, "at this lift a very heavy object moves at the midpoint between full speed and the floor fraction", e => e.Height),

@@ -3,7 +3,7 @@ using System;
 namespace Kosmos.PseudoHaptic
 {
     /// <summary>
-    /// The paper's named next step (§5): "speed deceleration according to the movement in the xyz direction".
+    /// The paper's named next step (§9, Conclusions): "speed deceleration according to the movement in the xyz direction".
     /// In <see cref="WeightSolver3D"/>, an object heavier than the standard trails the hand's horizontal (x/z)
     /// motion: its horizontal lag e (a vector, from where it was grabbed) takes each frame's displacement Δ of the steady
     /// hand (the median of its last three poses) and relaxes as e ← (e + Δ) · τ/(τ + dt·(1 + |e + Δ|/M)), with
@@ -21,7 +21,7 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary>This effect's name, stage, summary and settings (<see cref="EffectRegistry"/>).</summary>
         public static readonly EffectDescriptor Descriptor = new EffectDescriptor("lateral-inertia", EffectStage.Hold, typeof(LateralInertia),
-            "§5 (\"the xyz direction\"), issue 10",
+            "§9 (\"the xyz direction\"), issue 10",
             "in WeightSolver3D, an object heavier than the standard trails the hand's x/z motion, never more than the bound",
             s => new LateralInertia(s[0], s[1]),
             SettingDescriptor.Number<LateralInertia>("timeConstant", "s", 0.3, 0, 10, "the trailing's time constant for a very heavy object (scaled by 1 − G)", e => e.TimeConstant),
