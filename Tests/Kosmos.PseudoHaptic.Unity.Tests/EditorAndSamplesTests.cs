@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System.Linq;
 using System.Reflection;
 using Kosmos.PseudoHaptic.Editor;
@@ -80,6 +81,48 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(Object.FindObjectsByType<FingertipPoker>(FindObjectsSortMode.None), Has.Length.EqualTo(2));
             Assert.That(PseudoHapticWeight.Enabled.Count, Is.EqualTo(3 + 5 + 8 + 2 + 2), "the calibration's cue-strength staircase has two balls (issue 31)");
             Frames.Run(3);
+        }
+
+        /// <summary>The imported Discrimination sample's task exists only in play mode and begins at its Start: the setup
+        /// carries the condition and the study's seed to it before then (every imported session ran condition "" and seed 1).</summary>
+        [Test]
+        public void TheDiscriminationSampleCarriesItsConditionAndSeedToTheTask()
+        {
+            SimulatedHand("Left", new Vector3(-0.2f, 1f, 0.3f));
+            var go = new GameObject("Discrimination");
+            go.SetActive(false); // its fields set before Awake, as a scene's are
+            var setup = go.AddComponent<DiscriminationSetup>();
+            var flags = System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance;
+            typeof(DiscriminationSetup).GetField("_condition", flags)!.SetValue(setup, "with effect");
+            typeof(DiscriminationSetup).GetField("_seed", flags)!.SetValue(setup, 7);
+            go.SetActive(true);
+            DiscriminationTask task = Object.FindObjectsByType<DiscriminationTask>(FindObjectsSortMode.None).Single();
+            Assert.That((task.Condition, task.Seed), Is.EqualTo(("with effect", 7)));
+        }
+
+        /// <summary>A profile asset given to the Experiment 2 sample is used as it is: the setup switched Two Hands on in it,
+        /// in play mode, where a change to an asset stays in the project.</summary>
+        [Test]
+        public void TheExperimentTwoSampleLeavesTheProfileAssetGivenToItAsItIs()
+        {
+            SimulatedHand("Left", new Vector3(-0.2f, 1f, 0.3f));
+            PseudoHapticProfile asset = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
+            Assert.That(asset.IsEnabled<TwoHands>(), Is.False);
+            var warnings = new List<string>();
+            void Collect(string message, string stack, LogType type) { if (type == LogType.Warning) warnings.Add(message); }
+            Application.logMessageReceived += Collect;
+            try
+            {
+                var go = new GameObject("Experiment 2");
+                go.SetActive(false);
+                var setup = go.AddComponent<Experiment2Setup>();
+                typeof(Experiment2Setup).GetField("_profile", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance)!.SetValue(setup, asset);
+                go.SetActive(true);
+            }
+            finally { Application.logMessageReceived -= Collect; }
+            Assert.That(asset.IsEnabled<TwoHands>(), Is.False, "the asset is as it was");
+            Assert.That(warnings.Count(w => w.Contains("Two Hands off")), Is.EqualTo(1));
+            Assert.That(PseudoHapticWeight.Enabled.Select(w => w.Profile).Distinct(), Is.EqualTo(new[] { asset }), "the bottles use it");
         }
 
         [Test]

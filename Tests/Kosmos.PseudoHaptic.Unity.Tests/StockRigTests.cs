@@ -60,7 +60,7 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(sources.All(s => s.GetComponent<PinchGrab>() != null), Is.True, "and a Pinch Grab");
             Assert.That(sources.Select(s => s.Source), Is.All.EqualTo(OvrHandPoseSource.PositionSource.PinchPoint), "reading the pinch point, where a pinch grabs");
             Assert.That(sources.Select(s => s.Rig), Is.All.SameAs(rig.trackingSpace), "the hold is solved in the rig's tracking space");
-            Assert.That(_warnings, Is.Empty, "hands were found: no warning");
+            Assert.That(_warnings.Where(w => !w.Contains("tracked from Eye Level")), Is.Empty, "hands were found: no warning about them (the Eye Level one is OnMetasStockRigTheSampleTracksFromTheFloor's)");
 
             if (setup == typeof(CalibrationSetup))
             {
@@ -120,6 +120,42 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(ball.IsHeld, Is.True, "the 10 g ball is held");
             Assert.That(ball.transform.position.y - startY, Is.GreaterThan(0.2f), "and lifted with the hand (m)");
             Assert.That(Vector3.Distance(read, surface), Is.LessThan(1e-4f), "the hand was read where the tips meet: " + read);
+        }
+
+        /// <summary>
+        /// Meta's OVRCameraRig.prefab tracks from Eye Level: y = 0 is the user's eyes at start, and a sample's table (its top
+        /// at 0.75 m) floated 0.75 m above them. The samples set the rig to Floor Level, saying so once; a rig already at
+        /// Floor Level is left as it is, without a word.
+        /// </summary>
+        [TestCaseSource(nameof(Setups))]
+        public void OnMetasStockRigTheSampleTracksFromTheFloor(Type setup)
+        {
+            var (rig, _, _) = StockOvrRig.Build();
+            OVRManager manager = rig.GetComponent<OVRManager>();
+            Assert.That(manager.trackingOriginType, Is.EqualTo(OVRManager.TrackingOrigin.EyeLevel), "as Meta's prefab ships it");
+            new GameObject(setup.Name).AddComponent(setup);
+            Assert.That(manager.trackingOriginType, Is.EqualTo(OVRManager.TrackingOrigin.FloorLevel));
+            Assert.That(_warnings.Count(w => w.Contains("tracked from Eye Level")), Is.EqualTo(1), string.Join("\n", _warnings));
+
+            _warnings.Clear();
+            new GameObject(setup.Name + " again").AddComponent(setup);
+            Assert.That(_warnings.Count(w => w.Contains("Eye Level")), Is.EqualTo(0), "at Floor Level already: nothing said");
+        }
+
+        /// <summary>On the stock rig the one hand component to assign is Meta's OVRHand: it has no pose source until the setup
+        /// gives it one, and the calibration fell back to the scene's last pinch hand (the other one, maybe).</summary>
+        [Test]
+        public void TheCalibrationReadsTheOVRHandAssignedToIt([Values(0, 1)] int which)
+        {
+            var (_, left, right) = StockOvrRig.Build();
+            OVRHand assigned = which == 0 ? left : right;
+            var go = new GameObject("Calibration");
+            go.SetActive(false); // assigned before Awake, as a scene's serialized field is
+            var setup = go.AddComponent<CalibrationSetup>();
+            typeof(CalibrationSetup).GetField("_hand", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance)!.SetValue(setup, assigned);
+            go.SetActive(true);
+            StandardSpeedCalibrator calibrator = UnityEngine.Object.FindObjectsByType<StandardSpeedCalibrator>(FindObjectsSortMode.None).Single();
+            Assert.That(((OvrHandPoseSource)calibrator.Hand).OvrHand, Is.SameAs(assigned));
         }
 
         [Test]

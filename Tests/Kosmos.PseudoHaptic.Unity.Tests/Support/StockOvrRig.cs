@@ -11,7 +11,8 @@ namespace Kosmos.PseudoHaptic.Tests.Stock
 
     /// <summary>
     /// Meta's stock rig as its prefabs lay it out: <c>OVRCameraRig</c> (its Awake makes TrackingSpace with LeftHandAnchor,
-    /// RightHandAnchor and CenterEyeAnchor), and, as Meta's hand-tracking set-up says, an <c>OVRHandPrefab</c> (OVRHand,
+    /// RightHandAnchor and CenterEyeAnchor) with the prefab's <c>OVRManager</c> beside it (tracking from Eye Level, as
+    /// OVRCameraRig.prefab ships it), and, as Meta's hand-tracking set-up says, an <c>OVRHandPrefab</c> (OVRHand,
     /// OVRSkeleton, OVRSkeletonRenderer, OVRMesh, OVRMeshRenderer on one GameObject; its SkinnedMeshRenderer is left out, the double has none) under each hand
     /// anchor; nothing of this package on it.
     /// </summary>
@@ -20,6 +21,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stock
         public static (OVRCameraRig Rig, OVRHand Left, OVRHand Right) Build()
         {
             var rig = new GameObject("OVRCameraRig").AddComponent<OVRCameraRig>();
+            rig.gameObject.AddComponent<OVRManager>();
             return (rig, Hand(rig.leftHandAnchor, "OVRHandPrefab"), Hand(rig.rightHandAnchor, "OVRHandPrefab"));
         }
 

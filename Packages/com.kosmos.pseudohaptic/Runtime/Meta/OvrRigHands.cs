@@ -13,7 +13,25 @@ namespace Kosmos.PseudoHaptic.Meta
     public static class OvrRigHands
     {
         [RuntimeInitializeOnLoadMethod(RuntimeInitializeLoadType.SubsystemRegistration)]
-        static void Register() => SampleContent.RegisterOvrHands(AddPoseSources);
+        static void Register()
+        {
+            SampleContent.RegisterOvrHands(AddPoseSources);
+            SampleContent.RegisterOvrFloorLevel(UseFloorLevel);
+        }
+
+        /// <summary>
+        /// The samples' tables stand on y = 0: Meta's stock <c>OVRCameraRig</c> tracks from Eye Level (its prefab's
+        /// <c>OVRManager</c> ships <c>_trackingOriginType: 0</c>), where y = 0 is the user's eyes at start and the table would
+        /// float 0.75 m above them. Sets the scene's <c>OVRManager</c> to Floor Level when it tracks from Eye Level; true when
+        /// it did. Not for per-frame use.
+        /// </summary>
+        public static bool UseFloorLevel()
+        {
+            OVRManager manager = OVRManager.instance != null ? OVRManager.instance : Object.FindFirstObjectByType<OVRManager>();
+            if (manager == null || manager.trackingOriginType != OVRManager.TrackingOrigin.EyeLevel) return false;
+            manager.trackingOriginType = OVRManager.TrackingOrigin.FloorLevel;
+            return true;
+        }
 
         /// <summary>
         /// Every enabled <c>OVRHand</c> that no <see cref="OvrHandPoseSource"/> reads gets one on its GameObject, reading

@@ -79,6 +79,8 @@ namespace Kosmos.PseudoHaptic
         public string Error => Model.Error;
         public string Participant { get => _participant; set => _participant = value; }
         public string Condition { get => _condition; set => _condition = value; }
+        /// <summary>The study's seed (each participant and condition draws its own order from it); set it before the session begins.</summary>
+        public int Seed { get => _seed; set => _seed = value; }
 
         /// <summary>Sets the scene's objects in code (scene builders, tests).</summary>
         public void Inject(PseudoHapticWeight left, PseudoHapticWeight right, DiscriminationButton leftButton, DiscriminationButton rightButton, TextMesh display)

@@ -10,7 +10,7 @@ namespace Kosmos.PseudoHaptic.SampleScenes
     /// </summary>
     public sealed class CalibrationSetup : MonoBehaviour
     {
-        [Tooltip("The hand that holds the golf ball (an IHandPoseSource); the scene's last pinch hand when empty.")]
+        [Tooltip("The hand that holds the golf ball (an IHandPoseSource, or Meta's OVRHand); the scene's last pinch hand when empty.")]
         [SerializeField] MonoBehaviour _hand = null;
 
         void Awake()
@@ -19,8 +19,13 @@ namespace Kosmos.PseudoHaptic.SampleScenes
             if (hand == null)
             {
                 var hands = SampleContent.HandsInScene("Calibration sample", this); // warns, naming what is missing, when it finds none
-                if (hands.Count == 0) return;
-                hand = hands[hands.Count - 1];
+                // An assigned OVRHand (the one hand component Meta's stock rig has) got its pose source just now.
+                hand = HandSourceField.Resolve<IHandPoseSource>(_hand);
+                if (hand == null)
+                {
+                    if (hands.Count == 0) return;
+                    hand = hands[hands.Count - 1];
+                }
             }
             SampleContent.CalibrationStation(transform, hand);
         }

@@ -196,10 +196,10 @@ namespace Kosmos.PseudoHaptic.Samples
             };
         }
 
-        /// <summary>Experiment 2 (paper §4.2): water bottles of several sizes, lifted with both hands.</summary>
+        /// <summary>Experiment 2 (paper §7): water bottles of several sizes, lifted with both hands (a profile with Two Hands,
+        /// <see cref="LiftWithBothHands"/>; the profile is used as given).</summary>
         public static List<PseudoHapticWeight> Experiment2(Transform root, PseudoHapticProfile profile)
         {
-            LiftWithBothHands(profile);
             Transform surface = Table(root, "Table", new Vector3(0, TableHeight, 0.45f), new Vector2(1.2f, 0.5f));
             var bottles = new List<PseudoHapticWeight>();
             float x = -0.45f;
@@ -260,6 +260,14 @@ namespace Kosmos.PseudoHaptic.Samples
         /// </summary>
         public static void RegisterOvrHands(System.Func<int> addPoseSources) => s_ovrHands = addPoseSources;
 
+        static System.Func<bool> s_ovrFloorLevel;
+
+        /// <summary>
+        /// Called by the Meta assembly as play mode starts: <paramref name="useFloorLevel"/> sets Meta's rig to track from the
+        /// floor when it tracks from the eyes, and says whether it did (the samples' tables stand on y = 0).
+        /// </summary>
+        public static void RegisterOvrFloorLevel(System.Func<bool> useFloorLevel) => s_ovrFloorLevel = useFloorLevel;
+
         /// <summary>
         /// The scene's pinch hands (every enabled <see cref="IPinchHandPoseSource"/>), each given a <see cref="PinchGrab"/>
         /// if it has none, after Meta's stock rig (an <c>OVRCameraRig</c> with an <c>OVRHandPrefab</c> per hand anchor) got
@@ -279,6 +287,9 @@ namespace Kosmos.PseudoHaptic.Samples
             }
             string warning = RigHands.MissingHandsWarning(sample, hands.Count, s_ovrHands != null, ovrHands);
             if (warning != null) Debug.LogWarning(warning, context);
+            if (s_ovrFloorLevel != null && s_ovrFloorLevel())
+                Debug.LogWarning((sample ?? "The sample") + ": the OVRCameraRig tracked from Eye Level (y = 0 at the eyes), so its table would float above them; "
+                    + "set to Floor Level. Set the OVRManager's Tracking Origin Type to Floor Level to keep it so.", context);
             return hands;
         }
 
