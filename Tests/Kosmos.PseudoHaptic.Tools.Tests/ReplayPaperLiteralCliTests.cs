@@ -78,4 +78,31 @@ public class ReplayPaperLiteralCliTests : CliTestFolder
         Assert.That(Math.Min(heavyLow, lightLow), Is.GreaterThanOrEqualTo(0), "y ≥ 0, the paper's only bound");
         Assert.That(lightLow, Is.EqualTo(0), "the light object, leading the hand down to 0, is stopped at the floor");
     }
+
+    /// <summary>The gain cap holds under paper-literal too (P3), at the profile file's own maxGain: a file written by
+    /// <c>profiles --show paper-literal --json</c> with maxGain 1.5 lifts a 1 g object 1.5 times the hand's 0.1 m, the
+    /// named profile 3 times (Eq. 4–6 alone: 23 times, which the file's maxGain did not change before).</summary>
+    [Test]
+    public void TheProfilesMaxGainCapsTheLiteralSolver()
+    {
+        var sb = new StringBuilder("t,hand_y\n");
+        for (int i = 0; i <= 270; i++) { double t = i / 90.0; sb.Append(CultureInfo.InvariantCulture, $"{t:R},{(t < 0.5 ? 1.0 : t < 1 ? 1.0 + 0.2 * (t - 0.5) : 1.1):R}\n"); }
+        string input = Write("lift.csv", sb.ToString());
+        string shownFile = Path.Combine(_dir, "shown.json");
+        var (shown, showErr, _) = Capture(() => Cli.Cli.Run(new[] { "profiles", "--show", "paper-literal", "--json", "--out", shownFile }));
+        Assert.That(shown, Is.EqualTo(0), showErr);
+        string json = File.ReadAllText(shownFile);
+        Assert.That(json, Does.Contain("\"maxGain\": 3"));
+        string file = Write("paper-literal.json", json.Replace("\"maxGain\": 3", "\"maxGain\": 1.5"));
+        double Rise(string profile)
+        {
+            string output = Path.Combine(_dir, "out.csv");
+            var (code, err, _) = Capture(() => Cli.Cli.Run(new[] { "replay", "--trace", input, "--out", output, "--mass-kg", "0.001", "--profile", profile }));
+            Assert.That(code, Is.EqualTo(0), err);
+            var ys = File.ReadAllLines(output).Skip(1).Select(l => double.Parse(l.Split(',')[2], CultureInfo.InvariantCulture)).ToArray();
+            return ys[^1] - ys[0];
+        }
+        Assert.That(Rise("paper-literal"), Is.EqualTo(3 * 0.1).Within(1e-9), "the cap of every profile: 3");
+        Assert.That(Rise(file), Is.EqualTo(1.5 * 0.1).Within(1e-9), "the file's maxGain");
+    }
 }
