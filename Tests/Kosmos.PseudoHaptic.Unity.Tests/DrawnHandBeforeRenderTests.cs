@@ -51,13 +51,8 @@ namespace Kosmos.PseudoHaptic.Tests
 
             // The sample rigs' layout: RightHandAnchor ▸ Hand Visual ▸ OVRHandPrefab; the source reads the anchor.
             var rig = Track(new GameObject("OVRCameraRig")).AddComponent<OVRCameraRig>();
-            var visual = new GameObject("Hand Visual").transform;
-            visual.SetParent(rig.rightHandAnchor, false);
-            var handGo = new GameObject("OVRHandPrefab");
-            handGo.transform.SetParent(visual, false);
-            OVRHand hand = handGo.AddComponent<OVRHand>();
-            var source = handGo.AddComponent<OvrHandPoseSource>();
-            source.Tracked = rig.rightHandAnchor;
+            var (visual, hand, source) = Stock.StockOvrRig.SampleRightHand(rig, skeleton: false);
+            GameObject handGo = hand.gameObject;
             PinchGrab grab = handGo.AddComponent<PinchGrab>(); // subscribes to onBeforeRender before the rig does (its Start)
             grab.InjectHand(source);
             grab.HandVisual = visual;

@@ -21,15 +21,8 @@ namespace Kosmos.PseudoHaptic.Tests
         (OVRCameraRig rig, Transform visual, OVRHand hand, OVRSkeleton skeleton, OvrHandPoseSource source) Rig()
         {
             var rig = Track(new GameObject("OVRCameraRig")).AddComponent<OVRCameraRig>();
-            var visual = new GameObject("Hand Visual").transform;
-            visual.SetParent(rig.rightHandAnchor, false);
-            var handGo = new GameObject("OVRHandPrefab");
-            handGo.transform.SetParent(visual, false);
-            OVRHand hand = handGo.AddComponent<OVRHand>();
-            OVRSkeleton skeleton = handGo.AddComponent<OVRSkeleton>();
-            var source = handGo.AddComponent<OvrHandPoseSource>(); // the default position source
-            source.Tracked = rig.rightHandAnchor;
-            return (rig, visual, hand, skeleton, source);
+            var (visual, hand, source) = Stock.StockOvrRig.SampleRightHand(rig, skeleton: true);
+            return (rig, visual, hand, hand.GetComponent<OVRSkeleton>(), source);
         }
 
         static void AssertNear(Vector3 actual, Vector3 expected, string what) =>

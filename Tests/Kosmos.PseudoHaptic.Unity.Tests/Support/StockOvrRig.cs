@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Meta;
 using UnityEngine;
 
 namespace Kosmos.PseudoHaptic.Tests.Stock
@@ -23,6 +24,23 @@ namespace Kosmos.PseudoHaptic.Tests.Stock
             var rig = new GameObject("OVRCameraRig").AddComponent<OVRCameraRig>();
             rig.gameObject.AddComponent<OVRManager>();
             return (rig, Hand(rig.leftHandAnchor, "OVRHandPrefab"), Hand(rig.rightHandAnchor, "OVRHandPrefab"));
+        }
+
+        /// <summary>
+        /// The sample scenes' right hand under <paramref name="rig"/>: RightHandAnchor ▸ Hand Visual ▸ OVRHandPrefab (OVRHand,
+        /// OVRSkeleton when <paramref name="skeleton"/>, an OVR Hand Pose Source reading the anchor), as the menu builds it.
+        /// </summary>
+        public static (Transform Visual, OVRHand Hand, OvrHandPoseSource Source) SampleRightHand(OVRCameraRig rig, bool skeleton)
+        {
+            var visual = new GameObject("Hand Visual").transform;
+            visual.SetParent(rig.rightHandAnchor, false);
+            var handGo = new GameObject("OVRHandPrefab");
+            handGo.transform.SetParent(visual, false);
+            OVRHand hand = handGo.AddComponent<OVRHand>();
+            if (skeleton) handGo.AddComponent<OVRSkeleton>();
+            var source = handGo.AddComponent<OvrHandPoseSource>(); // the default position source
+            source.Tracked = rig.rightHandAnchor;
+            return (visual, hand, source);
         }
 
         static OVRHand Hand(Transform anchor, string name)

@@ -189,14 +189,20 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(box.transform.position.x, Is.EqualTo(side.x).Within(0.005f), "and arrives under the hand");
         }
 
-        [Test]
-        public void AHandOnObjectProfileDrawsTheHandVisualAtTheObjectAndReturnsIt()
+        /// <summary>A 5 kg box under a hand-on-object profile, and a pinching hand 5 cm above its pivot.</summary>
+        (PseudoHapticWeight Box, Vector3 Start, ScriptedHand Hand) FiveKiloBoxDrawnWithTheHandOnIt()
         {
             PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
             profile.HandDrawing = HandDrawingMode.HandOnObject;
             PseudoHapticWeight box = Box("5 kg", 5f, default, profile);
             Vector3 start = box.transform.position + new Vector3(0, 0.05f, 0);
-            var hand = new ScriptedHand(start) { IsPinching = true };
+            return (box, start, new ScriptedHand(start) { IsPinching = true });
+        }
+
+        [Test]
+        public void AHandOnObjectProfileDrawsTheHandVisualAtTheObjectAndReturnsIt()
+        {
+            var (box, start, hand) = FiveKiloBoxDrawnWithTheHandOnIt();
             PinchGrab grab = Grabber(hand);
             var visual = Track(new GameObject("Hand Visual")).transform;
             visual.SetParent(grab.transform, false);
@@ -221,11 +227,7 @@ namespace Kosmos.PseudoHaptic.Tests
         [Test]
         public void AGrabSwitchedOffMidHoldPutsTheHandVisualBackOnTheTrackedHand()
         {
-            PseudoHapticProfile profile = PseudoHapticProfile.CreatePreset(NamedProfiles.PaperName);
-            profile.HandDrawing = HandDrawingMode.HandOnObject;
-            PseudoHapticWeight box = Box("5 kg", 5f, default, profile);
-            Vector3 start = box.transform.position + new Vector3(0, 0.05f, 0);
-            var hand = new ScriptedHand(start) { IsPinching = true };
+            var (box, start, hand) = FiveKiloBoxDrawnWithTheHandOnIt();
             PinchGrab grab = Track(new GameObject("hand")).AddComponent<PinchGrab>(); // active: switching it off calls OnDisable
             grab.InjectHand(hand);
             var visual = Track(new GameObject("Hand Visual")).transform;
