@@ -156,6 +156,23 @@ namespace Kosmos.PseudoHaptic.Tests
             go.SetActive(true);
             StandardSpeedCalibrator calibrator = UnityEngine.Object.FindObjectsByType<StandardSpeedCalibrator>(FindObjectsSortMode.None).Single();
             Assert.That(((OvrHandPoseSource)calibrator.Hand).OvrHand, Is.SameAs(assigned));
+            Assert.That(OVRManager.instance.trackingOriginType, Is.EqualTo(OVRManager.TrackingOrigin.FloorLevel));
+        }
+
+        /// <summary>A Calibration given a hand that is already a pose source does not look for the scene's hands, but its table
+        /// still stands on the floor: the rig is set to Floor Level all the same.</summary>
+        [Test]
+        public void TheCalibrationGivenAPoseSourceStillTracksFromTheFloor()
+        {
+            var (rig, _, right) = StockOvrRig.Build();
+            OvrRigHands.AddPoseSources();
+            var go = new GameObject("Calibration");
+            go.SetActive(false);
+            var setup = go.AddComponent<CalibrationSetup>();
+            typeof(CalibrationSetup).GetField("_hand", System.Reflection.BindingFlags.NonPublic | System.Reflection.BindingFlags.Instance)!.SetValue(setup, right.GetComponent<OvrHandPoseSource>());
+            go.SetActive(true);
+            Assert.That(rig.GetComponent<OVRManager>().trackingOriginType, Is.EqualTo(OVRManager.TrackingOrigin.FloorLevel));
+            Assert.That(_warnings.Count(w => w.Contains("tracked from Eye Level")), Is.EqualTo(1));
         }
 
         [Test]

@@ -133,7 +133,7 @@ namespace Kosmos.PseudoHaptic
             double gain = (standardWeight / weight + vExperiment / vExperimentStandard) / 2;
             double vFinal = _cueStrength == 1.0 && gain <= _maxGain
                 ? (vVirtual + vReal * vExperiment / vExperimentStandard) / 2        // Eq. 6
-                : vReal * Math.Min(Math.Pow(gain, _cueStrength), _maxGain);
+                : vReal * WeightSolver.StrengthenedGain(Math.Min(gain, _maxGain), _cueStrength, _maxGain); // the pipeline's cap: G capped, then G^s capped
             double next = ObjectY + vFinal * dt;
             // y ≥ 0; and only a height a pose could have (finite, within ±10⁵ m, as the pipeline keeps it): hands that jump
             // tens of kilometres make v_final absurd, and the object stays where it is instead.

@@ -19,7 +19,9 @@ namespace Kosmos.PseudoHaptic
         /// <summary>
         /// The most one frame counts toward a timer of the grab, s: one tracker pose period (30 Hz). A hitch, or the first
         /// frame after the headset wakes, is one frame of evidence however long it lasted: one dropped pinch flag in it must
-        /// not open the pinch, nor one untracked frame in it release the object (<see cref="HandGrab"/>).
+        /// not open the pinch, nor one untracked frame in it release the object (<see cref="HandGrab"/>). Longer than the
+        /// solver's <see cref="SolverLimits.MaxFrameTime"/> (0.025 s, the time it moves an object over): the frames of an app
+        /// running at 30 Hz must count in full toward these timers.
         /// </summary>
         public const double LongestCountedFrame = 1.0 / 30;
 

@@ -47,8 +47,9 @@ namespace Kosmos.PseudoHaptic
         string _folder = "", _sessionId = "", _sessionFolder;
         readonly object _openedLock = new object();
         string _openedFolder; // the session folder the writer last opened (and cleaned)
-        // Session folders this log gave out, by path, with their ids: their owner files may not be written yet.
-        readonly Dictionary<string, string> _given = new Dictionary<string, string>(StringComparer.Ordinal);
+        // Session folders this log gave out, by path, with their ids: their owner files are written with the first hold, at its
+        // end. Case ignored, as a Quest's shared storage ignores it: "p1" begun while "P1"'s first hold runs is another folder.
+        readonly Dictionary<string, string> _given = new Dictionary<string, string>(StringComparer.OrdinalIgnoreCase);
         readonly Func<string, bool> _folderTaken;
         readonly Func<string, string> _folderOwner;
 

@@ -16,7 +16,8 @@ namespace Kosmos.PseudoHaptic.SampleScenes
         void Awake()
         {
             IHandPoseSource hand = HandSourceField.Resolve<IHandPoseSource>(_hand);
-            if (hand == null)
+            if (hand != null) SampleContent.TrackFromTheFloor("Calibration sample", this); // the hands' search below does it too
+            else
             {
                 var hands = SampleContent.HandsInScene("Calibration sample", this); // warns, naming what is missing, when it finds none
                 // An assigned OVRHand (the one hand component Meta's stock rig has) got its pose source just now.

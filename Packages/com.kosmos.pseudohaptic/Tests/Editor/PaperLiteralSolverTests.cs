@@ -22,8 +22,9 @@ namespace Kosmos.PseudoHaptic.Tests
         /// <summary>algorithm-reading.md's P3: the gain cap that holds in every profile.</summary>
         const double Cap = 3;
 
-        /// <summary>The gain at cue strength <paramref name="s"/>: G^s, capped (P3).</summary>
-        static double CappedGain(double massKg, double s) => Math.Min(Math.Pow(PaperGain(massKg), s), Cap);
+        /// <summary>The gain at cue strength <paramref name="s"/> as every profile has it (P3, ALGORITHM.md §12): G capped,
+        /// then G^s capped (1 g, G ≈ 23, at s = 1/3: 3^(1/3), not 23^(1/3)).</summary>
+        static double CappedGain(double massKg, double s) => Math.Min(Math.Pow(Math.Min(PaperGain(massKg), Cap), s), Cap);
 
         /// <summary>Eq. 6 in its relative reading, as a gain on the mean hand speed: ½(W_std/W + v_exp(m)/v_exp(m_std)),
         /// W = m·g (Eq. 1), W_std = 0.045 kg·g (Eq. 2), v_exp(m) = 1.6793·e^(−0.24·m) (Eq. 5).</summary>

@@ -105,8 +105,9 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That((b.userId, b.standardSpeed, b.cueStrength), Is.EqualTo(("P 1", 0.41, 1.0)));
             Assert.That((c.userId, c.standardSpeed, c.cueStrength), Is.EqualTo(("P.1", WeightSolver.DefaultStandardSpeed, 0.8)));
             Assert.That(UserCalibrationStore.PathFor("P 1"), Does.EndWith("user-P_1-2.json"));
-            Assert.That(UserCalibrationStore.TryLoad("P-1", out _, out error), Is.False, "another user's file is not this one's");
+            Assert.That(UserCalibrationStore.TryLoad("P/1", out _, out error), Is.False, "P/1 makes the same name; the three files are others'");
             Assert.That(error, Is.Null);
+            Assert.That(UserCalibrationStore.PathFor("P/1"), Does.EndWith("user-P_1-4.json"));
 
             // The current user is told of their own calibration only, not of another's with the same file name.
             UserCalibrationStore.CurrentUserId = "P 1";

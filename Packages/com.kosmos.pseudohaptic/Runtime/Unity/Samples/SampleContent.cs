@@ -287,10 +287,20 @@ namespace Kosmos.PseudoHaptic.Samples
             }
             string warning = RigHands.MissingHandsWarning(sample, hands.Count, s_ovrHands != null, ovrHands);
             if (warning != null) Debug.LogWarning(warning, context);
+            TrackFromTheFloor(sample, context);
+            return hands;
+        }
+
+        /// <summary>
+        /// The samples' tables stand on y = 0: when Meta's rig tracks from Eye Level (y = 0 at the user's eyes), it is set to
+        /// Floor Level, saying so once (<see cref="RegisterOvrFloorLevel"/>). <see cref="HandsInScene"/> calls it; a setup that
+        /// does not look for the scene's hands calls it itself. Not for per-frame use.
+        /// </summary>
+        public static void TrackFromTheFloor(string sample = null, Object context = null)
+        {
             if (s_ovrFloorLevel != null && s_ovrFloorLevel())
                 Debug.LogWarning((sample ?? "The sample") + ": the OVRCameraRig tracked from Eye Level (y = 0 at the eyes), so its table would float above them; "
                     + "set to Floor Level. Set the OVRManager's Tracking Origin Type to Floor Level to keep it so.", context);
-            return hands;
         }
 
         static PseudoHapticWeight Weight(GameObject go, MassSource source, float density, float massKg, PseudoHapticProfile profile)

@@ -36,6 +36,11 @@ namespace Kosmos.PseudoHaptic.Tests
             var legacy = new Dictionary<string, string> { ["d/user-P_1.json"] = null, ["d/user-P_1-2.json"] = "P_1" };
             Assert.That(Find("P 1", legacy), Is.EqualTo("d/user-P_1.json"));
             Assert.That(Find("P_1", legacy), Is.EqualTo("d/user-P_1.json"), "the first candidate it finds, before its own");
+
+            // A later candidate recording no owner is an id of that very name's (no earlier version wrote "-k" names): the
+            // id "P_1-2"'s folder from before is not given to "P 1".
+            var named = new Dictionary<string, string> { ["d/user-P_1.json"] = "P_1", ["d/user-P_1-2.json"] = null };
+            Assert.That(Find("P 1", named), Is.EqualTo("d/user-P_1-3.json"));
         }
 
         [Test]

@@ -262,6 +262,18 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(old.SessionFolder, Is.EqualTo(legacy));
             Assert.That(File.Exists(Path.Combine(legacy, "hold-002-box.csv")), Is.True, "numbered on");
             Assert.That(File.ReadAllText(Path.Combine(legacy, SessionLog.OwnerFile)), Is.EqualTo("Q 7"), "and claimed");
+
+            // "p1" begun while "P1"'s first hold runs (its folder not yet written): on a Quest's storage, which ignores case,
+            // the two would be one folder, each numbering from 1 over the other's files.
+            SessionLog cased = Log("P1");
+            BoxScene.Box held = Wired(cased, "box", 1);
+            Lift(held, 0.2, 0.6); // still held: nothing written yet
+            cased.SessionId = "p1";
+            BoxScene.Box other = Wired(cased, "box", 1);
+            Lift(other, 0.2, 0.6);
+            Assert.That(Path.GetFileName(cased.SessionFolder), Is.EqualTo("p1-2"));
+            held.Hold.End(1);
+            other.Hold.End(1);
         }
 
         /// <summary>
