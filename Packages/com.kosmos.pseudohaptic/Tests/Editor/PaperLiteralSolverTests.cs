@@ -285,6 +285,44 @@ namespace Kosmos.PseudoHaptic.Tests
                     Assert.That(Math.Abs(solver.Step(hands[i % hands.Length], true, dt)), Is.LessThanOrEqualTo(WeightSolver.MaxCoordinate), "frame " + i + ", dt " + dt);
         }
 
+        /// <summary>Frames of 0.3 s, which do not divide the second: the window's edge cuts a frame's piece of the hand's path.
+        /// The hand rises 0.3 m over the first frame and rests; its mean height over the last second, by hand: 1.045 at 0.3 s
+        /// (0.7 s of rest, the ramp's 0.3 s at 1.15), 1.135, 1.225, then 1.295 at 1.2 s (the ramp's last 0.1 s at 1.25 and
+        /// 0.9 s at 1.3) and 1.3.</summary>
+        [Test]
+        public void AFrameTheSecondsEdgeCutsCountsForThePartInsideIt()
+        {
+            var solver = new PaperLiteralSolver(2);
+            solver.BeginHold(1.0, 1.0);
+            double gain = PaperGain(2);
+            double[] means = { 1.045, 1.135, 1.225, 1.295, 1.3, 1.3 };
+            for (int k = 0; k < means.Length; k++)
+                Assert.That(solver.Step(1.3, true, 0.3), Is.EqualTo(1.0 + gain * (means[k] - 1.0)).Within(Exact), $"at {0.3 * (k + 1):0.0} s");
+        }
+
+        /// <summary>The documented shortest frame, 0.1 ms, is a frame (shorter ones are not).</summary>
+        [Test]
+        public void AFrameOfATenthOfAMillisecondIsAFrame()
+        {
+            var solver = new PaperLiteralSolver(GolfBallKg);
+            solver.BeginHold(1.0, 1.0);
+            Assert.That(solver.Step(1.5, true, 1e-4), Is.GreaterThan(1.0));
+        }
+
+        /// <summary>The window keeps the last second and drops what is older: held for minutes, the solver stops allocating
+        /// once its lists hold a second of frames (they grew without end if nothing was dropped).</summary>
+        [Test]
+        public void TheWindowKeepsOnlyTheLastSecond()
+        {
+            var solver = new PaperLiteralSolver(2);
+            solver.BeginHold(1.0, 1.0);
+            int frame = 0;
+            Allocation.AssertNone(n =>
+            {
+                for (int i = 0; i < n; i++, frame++) solver.Step(1.0 + 0.1 * Math.Sin(frame * 0.01), true, 1.0 / 90);
+            }, "90 Hz frames of a held paper-literal object");
+        }
+
         [TestCase(0.0)]
         [TestCase(-1.0)]
         [TestCase(double.NaN)]
