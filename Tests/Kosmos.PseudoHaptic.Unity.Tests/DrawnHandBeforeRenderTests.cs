@@ -103,14 +103,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var place = (Action)Delegate.CreateDelegate(typeof(Action), grab, typeof(PinchGrab).GetMethod("PlaceVisualBeforeRender", BindingFlags.Instance | BindingFlags.NonPublic));
             Assert.That(place.Method.GetCustomAttribute<BeforeRenderOrderAttribute>().order, Is.GreaterThan(0), "after OVRCameraRig's before-render update, which has no order (0)");
             for (int i = 0; i < 1000; i++) place();
-            long allocated = 0;
-            for (int attempt = 0; attempt < 3; attempt++) // as Tests/Editor/Support/Allocation.cs: one of three runs allocates nothing
-            {
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                for (int i = 0; i < 100000; i++) place();
-                allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-                if (allocated == 0) break;
-            }
+            long allocated = Allocations.OfOneInThree(() => { for (int i = 0; i < 100000; i++) place(); });
             Assert.That(allocated, Is.EqualTo(0), "bytes over 100 000 placements");
         }
     }

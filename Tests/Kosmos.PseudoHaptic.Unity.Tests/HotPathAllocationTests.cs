@@ -9,23 +9,14 @@ namespace Kosmos.PseudoHaptic.Tests
     /// The per-frame paths a held object takes in a scene, measured for allocation under the double (.NET's per-thread
     /// allocation counter; in Unity the edit-mode suite's AllocatingGCMemory constraint covers the solver itself): Pinch
     /// Grab's frame with the weight it holds (its LateUpdate, the main path without a grab system), and the Interaction
-    /// SDK transformer's UpdateTransform on each Move. As Tests/Editor/Support/Allocation.cs: up to three runs, one of which
-    /// must allocate nothing (an allocation per frame shows in every run; the runtime's one-off re-compilation does not).
+    /// SDK transformer's UpdateTransform on each Move (<see cref="Allocations"/>).
     /// </summary>
     public sealed class HotPathAllocationTests : PlayModeFixture
     {
         static long Allocated(Action frames)
         {
             frames(); // warm
-            long allocated = 0;
-            for (int attempt = 0; attempt < 3; attempt++)
-            {
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                frames();
-                allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-                if (allocated == 0) break;
-            }
-            return allocated;
+            return Allocations.OfOneInThree(frames);
         }
 
         [Test]
@@ -92,8 +83,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 return moved;
             }
             Moves(); // warm
-            long allocated = 0;
-            for (int attempt = 0; attempt < 3 && (allocated = Moves()) != 0; attempt++) { }
+            long allocated = Allocations.OfOneInThree(Moves);
             Assert.That(allocated, Is.Zero, "bytes over 2000 Moves, two hands");
             Assert.That(weight.IsHeld, Is.True);
         }

@@ -557,16 +557,7 @@ namespace Kosmos.PseudoHaptic.Tests
                 }
             }
             Frames1000(); // warm
-            // As Tests/Editor/Support/Allocation.cs: up to three runs, one of which must allocate nothing (an allocation per
-            // call shows in every run; the runtime's one-off tiered re-compilation on this thread does not repeat).
-            long allocated = 0;
-            for (int attempt = 0; attempt < 3; attempt++)
-            {
-                long before = GC.GetAllocatedBytesForCurrentThread();
-                Frames1000();
-                allocated = GC.GetAllocatedBytesForCurrentThread() - before;
-                if (allocated == 0) break;
-            }
+            long allocated = Allocations.OfOneInThree(Frames1000);
             Assert.That(allocated, Is.Zero, "bytes allocated by 2000 Process calls (Dynamic and OnBeforeRender, two hands)");
         }
     }
