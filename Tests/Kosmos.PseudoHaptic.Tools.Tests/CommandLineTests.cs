@@ -146,6 +146,90 @@ public class CommandLineTests : CliTestFolder
     }
 
     [Test]
+    public void A_folder_output_on_a_full_device_says_cannot_write_naming_the_users_path_exit_1()
+    {
+        // Issue 12 item 5 and the README's table: "cannot write: REASON, exit 1, naming your path"; a folder output
+        // printed only "No space left on device".
+        if (!ToolProcess.IsLinux) Assert.Ignore("tmpfs mounts: Linux");
+        string disk = Path.Combine(_dir, "small");
+        Directory.CreateDirectory(disk);
+        if (Process("mount", "-t", "tmpfs", "-o", "size=4k", "tmpfs", disk) != 0) Assert.Ignore("mounting a 4 KiB tmpfs needs root; a full device is not tested here");
+        try
+        {
+            string examples = Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic", "Documentation~", "examples", "study");
+            string scores = Write("S.csv", "participant,questionnaire,score\nP1,immersion,3\nP2,immersion,4\n");
+            foreach (var args in new[]
+                     {
+                         new[] { "report", "--scores", scores, "--out", Path.Combine(disk, "r") },
+                         new[] { "psychometric", "--trials", Path.Combine(examples, "trials.csv"), "--out", Path.Combine(disk, "r"), "--bootstrap", "0" },
+                         new[] { "compare", "--scores", Path.Combine(examples, "psychophysics.csv"), "--out", Path.Combine(disk, "r") },
+                         new[] { "demo", "--out", Path.Combine(disk, "r") },
+                     })
+            {
+                var (code, stderr, _) = Run(args);
+                Assert.That(code, Is.EqualTo(1), stderr);
+                Assert.That(stderr, Does.StartWith($"pseudohaptic {args[0]}: --out {Path.Combine(disk, "r")}: cannot write: "));
+                Assert.That(stderr.TrimEnd('\n'), Does.Not.Contain("\n").And.Not.Contain(".ph"), "one line, never the temporary folder");
+                Assert.That(Directory.GetFileSystemEntries(disk), Is.Empty, args[0] + ": nothing left, no half folder");
+            }
+        }
+        finally
+        {
+            Process("umount", "-l", disk);
+        }
+    }
+
+    [Test]
+    public void An_input_that_cannot_be_read_is_an_input_output_error_exit_1()
+    {
+        // Issue 25: "2 for usage and input errors, 1 for I/O"; the help and README say 1 when "a file could not be read".
+        if (!ToolProcess.IsLinux) Assert.Ignore("/proc is Linux's");
+        // /proc/self/mem opens, and reading its first page fails (EIO): a device error, not a malformed file.
+        var (code, stderr, _) = Run("replay", "--trace", "/proc/self/mem", "--out", Path.Combine(_dir, "o.csv"), "--mass-kg", "1");
+        Assert.That(code, Is.EqualTo(1), stderr);
+        Assert.That(stderr, Does.StartWith("pseudohaptic replay: --trace /proc/self/mem: cannot read: "));
+        (code, stderr, _) = Run("score", "--responses", "/proc/self/mem", "--out", Path.Combine(_dir, "s.csv"));
+        Assert.That(code, Is.EqualTo(1), stderr);
+        Assert.That(stderr, Does.StartWith("pseudohaptic score: --responses /proc/self/mem: cannot read: "));
+        Assert.That(Directory.GetFileSystemEntries(_dir), Is.Empty, "nothing written");
+        // A missing input stays an input error.
+        (code, stderr, _) = Run("replay", "--trace", Path.Combine(_dir, "none.csv"), "--out", Path.Combine(_dir, "o.csv"), "--mass-kg", "1");
+        Assert.That(code, Is.EqualTo(2), stderr);
+        Assert.That(stderr, Does.EndWith("none.csv: does not exist\n"));
+    }
+
+    [Test]
+    public void Unity_package_says_why_its_folder_cannot_be_created()
+    {
+        // Issue 32: "--out /proc/x says 'does not exist' where the reason is that the folder cannot be created"; every
+        // other command was mended, unity-package still said it.
+        if (!ToolProcess.IsLinux) Assert.Ignore("/proc is Linux's");
+        string package = Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic");
+        var (code, stderr, _) = Run("unity-package", "--out", "/proc/x", "--package", package);
+        Assert.That(code, Is.EqualTo(1), stderr);
+        Assert.That(stderr, Is.EqualTo("pseudohaptic unity-package: --out /proc/x: cannot write: cannot create files in /proc (the folder exists, but its file system does not allow new files)\n"));
+        string file = Write("afile", "");
+        (code, stderr, _) = Run("unity-package", "--out", Path.Combine(file, "x", "y"), "--package", package);
+        Assert.That(code, Is.EqualTo(2), stderr);
+        Assert.That(stderr, Is.EqualTo($"pseudohaptic unity-package: --out {Path.Combine(file, "x", "y")}: {file} is not a folder\n"));
+    }
+
+    static int Process(string file, params string[] args)
+    {
+        var start = new System.Diagnostics.ProcessStartInfo(file) { RedirectStandardError = true, RedirectStandardOutput = true };
+        foreach (string a in args) start.ArgumentList.Add(a);
+        try
+        {
+            using var p = System.Diagnostics.Process.Start(start)!;
+            p.StandardOutput.ReadToEnd();
+            p.StandardError.ReadToEnd();
+            p.WaitForExit();
+            return p.ExitCode;
+        }
+        catch (System.ComponentModel.Win32Exception) { return -1; }
+    }
+
+    [Test]
     public void Options_given_with_an_equals_sign_and_values_that_look_like_options_are_taken()
     {
         string trace = Write("in.csv", "t,hand_y\n0,1\n0.1,1.05\n");

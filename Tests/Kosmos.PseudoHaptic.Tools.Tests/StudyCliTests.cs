@@ -264,6 +264,40 @@ public class StudyCliTests : CliTestFolder
         Assert.That(File.ReadAllLines(Path.Combine(_dir, "cmp", "comparisons.csv"))[1], Does.StartWith("self-assessment,with,without,2,0.5,"));
     }
 
+    [Test]
+    public void PsychometricAndCompareWithSvgWriteAnSvgOfTheSameSizeBesideEachChart()
+    {
+        // Issue 13: every chart through ScottPlot, "and an SVG beside each PNG when asked (--svg)"; these two refused it.
+        string examples = Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic", "Documentation~", "examples", "study");
+        var runs = new (string Name, Func<string, string[], (int, string, string)> Run)[]
+        {
+            ("psychometric", (dir, extra) => Psychometric(new[] { "--trials", Path.Combine(examples, "trials.csv"), "--out", dir, "--bootstrap", "20" }.Concat(extra).ToArray())),
+            ("compare", (dir, extra) => Compare(new[] { "--scores", Path.Combine(examples, "psychophysics.csv"), "--out", dir }.Concat(extra).ToArray())),
+        };
+        foreach (var (name, run) in runs)
+        {
+            string plain = Path.Combine(_dir, name + "-png"), both = Path.Combine(_dir, name + "-svg");
+            var (code, stderr, _) = run(plain, Array.Empty<string>());
+            Assert.That(code, Is.EqualTo(0), stderr);
+            Assert.That(Directory.GetFiles(plain, "*.svg"), Is.Empty, name + ": no SVG unless asked");
+            for (int pass = 0; pass < 2; pass++) // the second replaces the folder the first wrote, SVGs and all
+            {
+                (code, stderr, _) = run(both, new[] { "--svg" });
+                Assert.That(code, Is.EqualTo(0), name + " pass " + pass + ": " + stderr);
+            }
+            var pngs = Directory.GetFiles(both, "*.png").Select(f => Path.GetFileName(f)).OrderBy(f => f, StringComparer.Ordinal).ToArray();
+            Assert.That(pngs, Is.EqualTo(Directory.GetFiles(plain, "*.png").Select(f => Path.GetFileName(f)).OrderBy(f => f, StringComparer.Ordinal).ToArray()), name + ": the same charts");
+            Assert.That(pngs, Is.Not.Empty);
+            Assert.That(Directory.GetFiles(both, "*.svg").Select(Path.GetFileName).OrderBy(f => f, StringComparer.Ordinal),
+                Is.EqualTo(pngs.Select(f => Path.ChangeExtension(f, ".svg")).ToArray()), name + ": one SVG beside each PNG");
+            foreach (string png in pngs)
+            {
+                var (width, height) = ChartFiles.IhdrSize(File.ReadAllBytes(Path.Combine(both, png)));
+                ChartFiles.AssertSvg(Path.Combine(both, Path.ChangeExtension(png, ".svg")), width, height);
+            }
+        }
+    }
+
     static QuestionnaireCatalog QuestionnaireCatalogForTests()
     {
         string folder = Path.Combine(RepositoryRoot.Path, "Packages", "com.kosmos.pseudohaptic", "Runtime", "Evaluation", "Questionnaires");

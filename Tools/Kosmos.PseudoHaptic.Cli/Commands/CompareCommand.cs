@@ -7,10 +7,10 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// <c>pseudohaptic compare --scores S.csv --out DIR</c> (issue 11): within-participant comparisons of
+/// <c>pseudohaptic compare --scores S.csv --out DIR [--svg]</c> (issue 11; --svg in the twenty-second session, as issue 13 asks of every chart): within-participant comparisons of
 /// conditions per questionnaire (<see cref="ConditionComparison"/>): paired t, Wilcoxon signed-rank, mean
 /// difference with its 95 % t interval, d_z and r; with three or more conditions Friedman's test first and
-/// Holm-corrected Wilcoxon p. Writes DIR/comparisons.csv, DIR/report.md and a chart per questionnaire.
+/// Holm-corrected Wilcoxon p. Writes DIR/comparisons.csv, DIR/report.md and a chart per questionnaire (with --svg, an SVG beside each).
 /// Malformed input or a bad option: exit 2, one stderr line naming S.csv:LINE or the option, nothing written.
 /// </summary>
 public static class CompareCommand
@@ -26,7 +26,8 @@ public static class CompareCommand
             "pseudohaptic compare --scores Packages/com.kosmos.pseudohaptic/Documentation~/examples/study/psychophysics.csv --out out/compare",
         },
         CliCommand.Value("--scores", "S.csv", "participant,condition,questionnaire,score (what score writes from answers with a condition column)", required: true),
-        CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true));
+        CliCommand.Value("--out", "DIR", "the folder to write; it appears whole or not at all", required: true),
+        CliCommand.Flag("--svg", "write an SVG beside each PNG"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("compare").ToArray());
 
@@ -40,12 +41,16 @@ public static class CompareCommand
         var scores = ConditionScoresCsv.Read(EvaluationInputs.OpenText("--scores", scoresPath), EvaluationInputs.Name(scoresPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters);
         var rows = ConditionComparison.Compare(scores);
         var utf8 = new UTF8Encoding(false);
+        bool svg = o.Flag("--svg");
         var files = new List<(string Name, byte[] Bytes)> { ("comparisons.csv", utf8.GetBytes(ComparisonsCsv(rows))) };
         var charts = new List<(string File, string Questionnaire)>();
         foreach (string q in rows.Select(r => r.Questionnaire).Distinct())
         {
             string name = $"chart{charts.Count + 1}-{PsychometricCommand.Slug(q)}.png";
-            files.Add((name, StudyCharts.PairedLines(q, scores.Where(s => s.Questionnaire == q).ToList(), rows.Where(r => r.Questionnaire == q).ToList())));
+            var these = scores.Where(s => s.Questionnaire == q).ToList();
+            var tests = rows.Where(r => r.Questionnaire == q).ToList();
+            files.Add((name, StudyCharts.PairedLines(q, these, tests).Png()));
+            if (svg) files.Add((Path.ChangeExtension(name, ".svg"), utf8.GetBytes(StudyCharts.PairedLines(q, these, tests).Svg())));
             charts.Add((name, q));
         }
         files.Add(("report.md", utf8.GetBytes(Report(scoresPath, scores, rows, charts))));
@@ -66,7 +71,7 @@ public static class CompareCommand
         return 0;
     }
 
-    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("comparisons.csv", "report.md", "chart*.png");
+    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("comparisons.csv", "report.md", "chart*.png", "chart*.svg");
 
     static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "-";
 

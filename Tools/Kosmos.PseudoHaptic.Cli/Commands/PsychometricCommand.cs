@@ -7,10 +7,10 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// <c>pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S] [--without-catch]</c> (issue 11; --without-catch added in the twentieth session):
+/// <c>pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S] [--without-catch] [--svg]</c> (issue 11; --without-catch added in the twentieth session, --svg in the twenty-second, as issue 13 asks of every chart):
 /// the maximum-likelihood fit of a cumulative Gaussian to 2AFC answers per participant × condition × standard
 /// (<see cref="PsychometricFit"/>), PSE, JND, Weber fraction, 95 % bootstrap intervals and deviance.
-/// Writes DIR/fits.csv, DIR/report.md, a chart per participant × condition and DIR/summary.png. Malformed
+/// Writes DIR/fits.csv, DIR/report.md, a chart per participant × condition and DIR/summary.png (with --svg, an SVG beside each). Malformed
 /// input or a bad option: exit 2, one stderr line naming T.csv:LINE or the option, nothing written.
 /// </summary>
 public static class PsychometricCommand
@@ -33,7 +33,8 @@ public static class PsychometricCommand
         CliCommand.Value("--lapse", "L", "a fixed guess and lapse rate gamma = lambda, in [0, 0.5) (default 0)"),
         CliCommand.Value("--bootstrap", "N", $"parametric bootstrap resamples for the 95 % intervals, 0–{MaxResamples} (default {DefaultResamples})"),
         CliCommand.Value("--seed", "S", $"the bootstrap's seed, a whole number (default {DefaultSeed})"),
-        CliCommand.Flag("--without-catch", "leave out the rows whose catch column is 1 (attention checks, not levels of the function; one missed catch trial can double a JND without --lapse)"));
+        CliCommand.Flag("--without-catch", "leave out the rows whose catch column is 1 (attention checks, not levels of the function; one missed catch trial can double a JND without --lapse)"),
+        CliCommand.Flag("--svg", "write an SVG beside each PNG"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("psychometric").ToArray());
 
@@ -48,7 +49,7 @@ public static class PsychometricCommand
         OutputFolder.Check("--out", outDir, Owns, createParents: false, inputs);
 
         // Read and check everything, compute, render; only then does the folder appear, whole.
-        bool withoutCatch = o.Flag("--without-catch");
+        bool withoutCatch = o.Flag("--without-catch"), svg = o.Flag("--svg");
         var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters, withoutCatch, out int catchLeftOut);
         var progress = Progress.Writer;
         var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed, (done, all) => progress.Write($"\rpsychometric: fit and bootstrap {done}/{all}{(done == all ? "\n" : "")}"));
@@ -59,10 +60,12 @@ public static class PsychometricCommand
         foreach (var group in Groups(rows))
         {
             string name = $"fit-{charts.Count + 1:000}-{Slug(group.Key.Participant)}{(group.Key.Condition.Length > 0 ? "-" + Slug(group.Key.Condition) : "")}.png";
-            files.Add((name, StudyCharts.Psychometric(group.Key.Participant, group.Key.Condition, group.Value, answers)));
+            files.Add((name, StudyCharts.Psychometric(group.Key.Participant, group.Key.Condition, group.Value, answers).Png()));
+            if (svg) files.Add((Path.ChangeExtension(name, ".svg"), utf8.GetBytes(StudyCharts.Psychometric(group.Key.Participant, group.Key.Condition, group.Value, answers).Svg())));
             charts.Add((name, group.Key.Participant, group.Key.Condition));
         }
-        if (rows.Count > 0) files.Add(("summary.png", StudyCharts.PsychometricSummary(rows)));
+        if (rows.Count > 0) files.Add(("summary.png", StudyCharts.PsychometricSummary(rows).Png()));
+        if (rows.Count > 0 && svg) files.Add(("summary.svg", utf8.GetBytes(StudyCharts.PsychometricSummary(rows).Svg())));
         files.Add(("report.md", utf8.GetBytes(Report(trialsPath, answers.Count, withoutCatch ? catchLeftOut : -1, rows, lapse, resamples, seed, charts, rows.Count > 0))));
 
         OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>
@@ -81,7 +84,7 @@ public static class PsychometricCommand
         return 0;
     }
 
-    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("fits.csv", "report.md", "fit-*.png", "summary.png");
+    static readonly OutputFolder.Owns Owns = OutputFolder.FilesNamed("fits.csv", "report.md", "fit-*.png", "summary.png", "fit-*.svg", "summary.svg");
 
     static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "-";
 

@@ -24,13 +24,13 @@ static class StudyCharts
     /// levels that carry most trials; catch levels far outside are not drawn (at the edge they would look like data)
     /// but named, with their answers, in a note at the upper left.
     /// </summary>
-    public static byte[] Psychometric(string participant, string condition, IReadOnlyList<PsychometricRow> rows, IReadOnlyList<TrialAnswer> answers)
+    public static Figure Psychometric(string participant, string condition, IReadOnlyList<PsychometricRow> rows, IReadOnlyList<TrialAnswer> answers)
     {
         string title = Charts.Wrap(Messages.OneLine($"{participant}{(condition.Length > 0 ? " — " + condition : "")}: proportion judged heavier"), 70);
         var plot = Charts.Create(title, "comparison weight (kg)", "proportion judged heavier");
         var all = rows.SelectMany(r => r.Fit.Levels.Where(l => l.Trials > 0)).ToList();
         if (all.Count == 0)
-            return Charts.Png(Charts.Empty(title, "No trials to draw."), Width, Height);
+            return new Figure(Charts.Empty(title, "No trials to draw."), Width, Height);
         // The main levels: those with at least a quarter of the most trials at one level (catch trials have few).
         int most = all.Max(l => l.Trials);
         var main = all.Where(l => l.Trials * 4 >= most).ToList();
@@ -98,7 +98,7 @@ static class StudyCharts
         // The catch trials and any unfitted standard in a note at the upper left (low weights judged heavier: empty).
         if (catchNotes.Count > 0) Charts.Note(plot, xmin - 0.85 * pad, 0.99, string.Join("\n", catchNotes.Select(n => Charts.Wrap(n, 60))));
         FixedTicks(plot.Axes.Bottom, xmax - xmin + 2 * pad);
-        return Charts.Png(plot, Width, Height + 40 * (rows.Count - 1));
+        return new Figure(plot, Width, Height + 40 * (rows.Count - 1));
     }
 
     /// <summary>
@@ -106,11 +106,11 @@ static class StudyCharts
     /// by condition (a line between groups, the condition under its participants). Without an estimable fit, a
     /// sentence saying so.
     /// </summary>
-    public static byte[] PsychometricSummary(IReadOnlyList<PsychometricRow> rows)
+    public static Figure PsychometricSummary(IReadOnlyList<PsychometricRow> rows)
     {
         const string title = "PSE − standard and JND per participant (95 % bootstrap intervals)";
         if (!rows.Any(r => r.Fit.Estimable))
-            return Charts.Png(Charts.Empty(title, $"No fit is estimable ({rows.Count} participant × condition × standard groups): " +
+            return new Figure(Charts.Empty(title, $"No fit is estimable ({rows.Count} participant × condition × standard groups): " +
                 string.Join("; ", rows.Select(r => r.Fit.Reason).Distinct().Take(3)) + ". See fits.csv."), Width, 300);
         var conditions = rows.Select(r => r.Condition).Distinct().ToList();
         var ordered = rows.OrderBy(r => conditions.IndexOf(r.Condition)).ThenBy(r => r.Standard).ToList(); // stable: participants keep their order
@@ -166,7 +166,7 @@ static class StudyCharts
         var all = py.Concat(jy).Concat(pby).Concat(jby).Where(double.IsFinite).Append(0.0).ToList();
         double low = all.Min(), high = all.Max(), span = Math.Max(high - low, 1e-9);
         plot.Axes.SetLimitsY(low - 0.08 * span, high + 0.08 * span);
-        return Charts.Png(plot, SummaryWidth(ordered.Count), Height + 20 * lines);
+        return new Figure(plot, SummaryWidth(ordered.Count), Height + 20 * lines);
     }
 
     /// <summary>Widest summary, px: a two-column paper's full text width (about 7 in) at about 170 dpi, one column (3.5 in) at 340 dpi.</summary>
@@ -180,7 +180,7 @@ static class StudyCharts
     /// plot, every test with its name: Friedman's (three or more conditions) and, per pair, the mean difference with
     /// the paired t test's p and the Wilcoxon signed-rank p (Holm-corrected with three or more conditions).
     /// </summary>
-    public static byte[] PairedLines(string questionnaire, IReadOnlyList<ConditionScore> scores, IReadOnlyList<ComparisonRow> rows)
+    public static Figure PairedLines(string questionnaire, IReadOnlyList<ConditionScore> scores, IReadOnlyList<ComparisonRow> rows)
     {
         var conditions = scores.Select(s => s.Condition).Distinct().ToList();
         string title = Charts.Wrap(Messages.OneLine($"{questionnaire}: score per participant and condition"), 70);
@@ -248,9 +248,9 @@ static class StudyCharts
             string wilcoxon = conditions.Count >= 3 && double.IsFinite(r.PHolm) ? $"Wilcoxon signed-rank {NumberText.P(pr.WP)}, Holm-corrected {NumberText.P(r.PHolm)}" : $"Wilcoxon signed-rank {NumberText.P(pr.WP)}";
             tests.Add($"{pair} = {G(pr.MeanDifference)} (n = {pr.N}): paired t test {NumberText.P(pr.TP)}; {wilcoxon}");
         }
-        if (tests.Count == 0) return Charts.Png(plot, width, Height + 20 * lines);
+        if (tests.Count == 0) return new Figure(plot, width, Height + 20 * lines);
         var text = Charts.TextPanel(tests, width);
-        return Charts.PanelsPng(new[] { plot, text.Plot }, width, new[] { Height + 20 * lines, text.Height });
+        return new Figure(new[] { plot, text.Plot }, width, new[] { Height + 20 * lines, text.Height });
     }
 
     static string G(double v) => double.IsFinite(v) ? v.ToString("G4", CultureInfo.InvariantCulture) : "n/a";

@@ -55,6 +55,12 @@ public static class UnityPackageCommand
         var files = Select(package);
 
         if (File.Exists(outDir)) throw new CliException($"--out {Messages.Path(outDir)}: is a file, not a folder");
+        // The folders to create: the nearest one that exists must be a folder, and one this user can create files in
+        // (/proc exists but allows none: "does not exist" would be wrong, issue 32).
+        string existing = Path.TrimEndingDirectorySeparator(outDir);
+        while (!Directory.Exists(existing) && !File.Exists(existing) && Path.GetDirectoryName(existing) is { Length: > 0 } up) existing = up;
+        if (File.Exists(existing)) throw new CliException($"--out {Messages.Path(outDir)}: {Messages.Path(existing)} is not a folder");
+        WritableFolder.Check("--out", outDir, outDir);
         try { Directory.CreateDirectory(outDir); }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
@@ -86,7 +92,7 @@ public static class UnityPackageCommand
         try { text = File.ReadAllText(manifest); }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException)
         {
-            throw new CliException($"{Messages.Path(manifest)}: cannot read: {Messages.Reason(e)}", 2);
+            throw new CliException($"{Messages.Path(manifest)}: cannot read: {Messages.Reason(e)}", Cli.InputOutputError);
         }
         try
         {

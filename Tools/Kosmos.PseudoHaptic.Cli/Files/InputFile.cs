@@ -3,9 +3,10 @@ using System.Text;
 namespace Kosmos.PseudoHaptic.Cli.Files;
 
 /// <summary>
-/// Opens a command's input files. A missing file, a folder, an unreadable file: exit 2 with one line naming
-/// the user's path ("does not exist", "is a folder", "permission denied"). A FIFO or a device is read as a
-/// stream. Text is UTF-8 with or without a byte-order mark.
+/// Opens a command's input files. A missing file or a folder: exit 2 (an input error) with one line naming the user's
+/// path ("does not exist", "is a folder"); a file that cannot be read (no permission, a device error): exit 1, the
+/// tool's code for I/O (issue 25), "cannot read: REASON". A FIFO or a device is read as a stream. Text is UTF-8 with
+/// or without a byte-order mark.
 /// </summary>
 public static class InputFile
 {
@@ -34,7 +35,7 @@ public static class InputFile
         }
         catch (Exception e) when (e is IOException or UnauthorizedAccessException or NotSupportedException or ArgumentException)
         {
-            throw new CliException($"{shown}: cannot read: {Messages.Reason(e)}");
+            throw new CliException($"{shown}: cannot read: {Messages.Reason(e)}", Cli.InputOutputError);
         }
     }
 
@@ -68,7 +69,7 @@ public static class InputFile
             try { return inner.Read(buffer, offset, count); }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
-                throw new CliException($"{option} {Messages.Path(path)}: cannot read: {Messages.Reason(e)}");
+                throw new CliException($"{option} {Messages.Path(path)}: cannot read: {Messages.Reason(e)}", Cli.InputOutputError);
             }
         }
 
@@ -77,7 +78,7 @@ public static class InputFile
             try { return inner.Read(buffer); }
             catch (Exception e) when (e is IOException or UnauthorizedAccessException)
             {
-                throw new CliException($"{option} {Messages.Path(path)}: cannot read: {Messages.Reason(e)}");
+                throw new CliException($"{option} {Messages.Path(path)}: cannot read: {Messages.Reason(e)}", Cli.InputOutputError);
             }
         }
 

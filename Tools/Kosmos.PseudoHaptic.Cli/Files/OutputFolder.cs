@@ -178,6 +178,12 @@ public sealed class OutputFolder
     public void Build(Action<string> write)
     {
         try { write(Temp); }
+        catch (Exception e) when (e is IOException or UnauthorizedAccessException)
+        {
+            // A full device or a lost permission while writing into the temporary folder: the user's path, never the temporary one.
+            Abandon();
+            throw new CliException($"{Option} {Messages.Path(UserPath)}: cannot write: {Messages.Reason(e)}", 1);
+        }
         catch
         {
             Abandon();
