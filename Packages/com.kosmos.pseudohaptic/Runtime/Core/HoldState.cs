@@ -94,6 +94,10 @@ namespace Kosmos.PseudoHaptic
         /// far and when it got there, and whether the pace is settled (the rise paused).</summary>
         public double RiseStartLift, RiseStartTime, RiseTop, RiseTopTime;
 
+        /// <summary><see cref="FasterMovesFurther"/>: where and when the hand last left the rest band (a rise started over after
+        /// a pause keeps them): a very slow lift's pace is its mean speed since then.</summary>
+        public double RiseBandLift, RiseBandTime;
+
         /// <summary><see cref="FasterMovesFurther"/>: the steady lift last seen and when.</summary>
         public double PaceSeenLift, PaceSeenTime;
 

@@ -147,6 +147,22 @@ namespace Kosmos.PseudoHaptic.Tests
 
 
         [Test]
+        public void AFloorBeyondTheSolversCoordinatesIsRefusedWhenSet()
+        {
+            // P8: 1e39 was accepted, and the first frame of a hold then put the object there (a float's infinity on the
+            // transform): the hold's ±1e5 m guard covers later frames only.
+            foreach (double floor in new[] { 1e39, -1e39, 1.0000001e5, double.MaxValue })
+                Assert.That(() => new FloorClamp(floor), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("floor"), floor.ToString());
+            foreach (double floor in new[] { -1e5, 1e5, -2.5, 0 })
+            {
+                var solver = new WeightSolver(WeightModel.FromMass(1), Only(new FloorClamp(floor)));
+                solver.BeginHold(1, 1);
+                double y = solver.Step(new HandSample(1, true, true, 0), 1 / 90.0);
+                Assert.That(y, Is.EqualTo(Math.Max(1, floor)), "the floor holds, finite: " + floor);
+            }
+        }
+
+        [Test]
         public void TheFloorKeepsTheObjectsBottomAboveTheSupport()
         {
             var solver = new WeightSolver(WeightModel.FromMass(0.5), NamedProfiles.Paper) { BottomBelowPivot = 0.06 };

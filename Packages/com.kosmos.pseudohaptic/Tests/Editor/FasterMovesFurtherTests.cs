@@ -55,6 +55,34 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void AVerySlowLiftNeverEndsHigherThanAFasterOne([Values(1.0, 2.0)] double massKg, [Values(0.0, 0.0015)] double jitter)
+        {
+            // A rise slower than TopStep per PauseTime (under about 1.2 cm/s) read as a pause: it started over, had no pace,
+            // got the standard's gain, and a 0.2 m lift in 15–30 s ended up to 11 mm above one in 10 s (P11 reversed). With
+            // jitter, the mean end of ten seeds.
+            double End(double seconds, int seed, bool minimumJerk)
+            {
+                var path = HandPath.StartAt(1.0).Hold(0.3);
+                if (minimumJerk) path = path.MoveTo(1.2, seconds);
+                else for (int i = 1; i <= 200; i++) path = path.MoveTo(1.0 + 0.001 * i, seconds / 200); // constant speed, mm by mm
+                var frames = Run.Headset(jitterSd: jitter, seed: seed).Render(path.Hold(1.5));
+                return Run.Last(Run.Replay(Solver(massKg, 0.5, NamedProfiles.PaperExperiment), frames));
+            }
+            int seeds = jitter > 0 ? 10 : 1;
+            foreach (bool minimumJerk in new[] { false, true })
+            {
+                double previous = double.PositiveInfinity;
+                foreach (double seconds in new[] { 2.0, 5.0, 10.0, 15.0, 20.0, 30.0 })
+                {
+                    double mean = 0;
+                    for (int seed = 1; seed <= seeds; seed++) mean += End(seconds, seed, minimumJerk) / seeds;
+                    Assert.That(mean, Is.LessThan(previous), $"{massKg} kg, jitter {jitter}, {(minimumJerk ? "minimum-jerk" : "constant-speed")} lift in {seconds} s: not above a faster one");
+                    previous = mean;
+                }
+            }
+        }
+
+        [Test]
         public void TheStandardWeightAndLighterAreUntouched([Values(0.001, 0.02, 0.045)] double massKg)
         {
             var frames = Frames(HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.2, 0.3).Hold(1));

@@ -123,8 +123,8 @@ namespace Kosmos.PseudoHaptic
             if (lift <= RestBand)
             {
                 // At the base: the next rise starts from here.
-                state.RiseStartLift = state.RiseTop = lift;
-                state.RiseStartTime = state.RiseTopTime = time;
+                state.RiseStartLift = state.RiseTop = state.RiseBandLift = lift;
+                state.RiseStartTime = state.RiseTopTime = state.RiseBandTime = time;
                 state.PaceSettled = false;
                 return AtRest(ref state);
             }
@@ -136,6 +136,18 @@ namespace Kosmos.PseudoHaptic
                 {
                     state.PaceSettled = true;
                     return false;
+                }
+                if (state.RiseTop - state.RiseBandLift >= MinPacedRise)
+                {
+                    // Rises each too slow to climb MinPacedRise before a pause, MinPacedRise in all since the band: a very slow
+                    // lift, whose pace is its mean speed since the band, settled as any lift's. (Started over with no pace,
+                    // it got the standard's gain: a heavy object lifted 0.2 m in 20 s ended 11 mm above one lifted in 10 s.)
+                    double since = state.RiseTopTime - state.RiseBandTime;
+                    double slow = (state.RiseTop - state.RiseBandLift) / (since > 1.0 / 60 ? since : 1.0 / 60);
+                    state.PaceSettled = true;
+                    if (slow == state.Pace) return false;
+                    state.Pace = slow;
+                    return true;
                 }
                 // Paused before it rose MinPacedRise: not a lift but a hand at rest a little above the rest band (a creep, a
                 // hand resting where jitter no longer reaches the band). The next rise starts from here, as from the base.
@@ -181,7 +193,8 @@ namespace Kosmos.PseudoHaptic
             state.PaceGainOf = double.NaN;
             state.RiseStartLift = state.RiseTop = 0;
             state.PaceClockSkip = 0;
-            state.RiseStartTime = state.RiseTopTime = state.PaceSeenTime = state.Time;
+            state.RiseBandLift = 0;
+            state.RiseStartTime = state.RiseTopTime = state.RiseBandTime = state.PaceSeenTime = state.Time;
             state.PaceSeenLift = 0;
             state.PaceSettled = false;
         }

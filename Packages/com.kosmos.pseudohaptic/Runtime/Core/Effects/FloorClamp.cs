@@ -14,7 +14,7 @@ namespace Kosmos.PseudoHaptic
             "§3.1, confinement condition 2",
             "the object's bottom stays on or above the floor (its local y never below it)",
             s => new FloorClamp(s[0]),
-            SettingDescriptor.Number<FloorClamp>("floor", "m", 0, double.NegativeInfinity, double.PositiveInfinity, "lowest local height", e => e.Floor));
+            SettingDescriptor.Number<FloorClamp>("floor", "m", 0, -WeightSolver.MaxCoordinate, WeightSolver.MaxCoordinate, "lowest local height", e => e.Floor));
 
         public override string Name => Descriptor.Name;
         public override EffectStage Stage => Descriptor.Stage;

@@ -59,8 +59,12 @@ namespace Kosmos.PseudoHaptic
         {
             double w = Strength(gain);
             if (!(w > 0) || !(lift > 0)) return lift;
-            double a = w / Height;
-            return MinFraction * lift + (1 - MinFraction) * Math.Log(1 + a * lift) / a;
+            double a = w / Height, x = a * lift, u = 1 + x;
+            // ln(1 + x) lost its digits where x is small: 1 + x rounds, and that rounding divided by a reached the lift
+            // when a is tiny (a mass just above the standard: 45.00000001 g lagged 10 cm under xyz, 45.000001 g rose 1 cm
+            // above the hand). ln(u)·x / (u − 1) is ln(1 + x) to rounding for every x (Goldberg 1991, Theorem 4).
+            double ln = u == 1 ? x : Math.Log(u) * x / (u - 1);
+            return MinFraction * lift + (1 - MinFraction) * ln / a;
         }
 
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
