@@ -206,7 +206,11 @@ namespace Kosmos.PseudoHaptic
         /// <summary>A menu item's text: "Stage/name — summary" (a '/' in the summary would open a submenu: shown as '∕').</summary>
         public static string MenuText(EffectDescriptor d) => d.Stage + "/" + d.Name + " — " + d.Summary.Replace('/', '\u2215');
 
-        static string FirstLine(string message)
+        /// <summary>
+        /// An argument exception's message without the parameter the runtime adds: .NET's " (Parameter 'x')" at its end, Mono's
+        /// (Unity's) "\nParameter name: x" and "\nActual value was …" lines; the first line only.
+        /// </summary>
+        public static string FirstLine(string message)
         {
             int nl = message.IndexOf('\n');
             string line = nl < 0 ? message : message.Substring(0, nl);

@@ -49,7 +49,7 @@ namespace Kosmos.PseudoHaptic.Tests
             var full = new Dictionary<string, string> { ["d/user-P_1.json"] = "x" };
             for (int k = 2; k <= OwnedName.MaxCandidates; k++) full["d/user-P_1-" + k + ".json"] = "x";
             var e = Assert.Throws<IOException>(() => Find("P 1", full));
-            Assert.That(e.Message, Does.Contain("'P 1'"));
+            Assert.That(e.Message, Is.EqualTo("no free name for 'P 1' among " + OwnedName.MaxCandidates + " candidates from d/user-P_1.json"));
             full.Remove("d/user-P_1-" + OwnedName.MaxCandidates + ".json");
             Assert.That(Find("P 1", full), Is.EqualTo("d/user-P_1-" + OwnedName.MaxCandidates + ".json"), "the last candidate is tried");
         }

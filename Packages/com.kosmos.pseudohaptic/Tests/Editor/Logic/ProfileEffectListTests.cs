@@ -184,6 +184,17 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(e.Message, Is.EqualTo("limits: setting 'maxGain': maxGain must lie in [1, 100], got 0.5."));
         }
 
+        [TestCase("maxGain must lie in [1, 100], got 0.5. (Parameter 'maxGain')")]                        // .NET
+        [TestCase("maxGain must lie in [1, 100], got 0.5.\nParameter name: maxGain\nActual value was 0.5.")] // Mono: Unity's runtime
+        [TestCase("maxGain must lie in [1, 100], got 0.5.\r\nParameter name: maxGain")]
+        [TestCase("maxGain must lie in [1, 100], got 0.5.")]
+        public void ALimitsMessageIsItsFirstLineWithoutTheParameterTheRuntimeAdds(string message)
+        {
+            // The inspector and the JSON errors show one line; in Unity (Mono) the parameter comes on lines of its own.
+            Assert.That(ProfileEffectList.FirstLine(message), Is.EqualTo("maxGain must lie in [1, 100], got 0.5."));
+            Assert.That(ProfileEffectList.FirstLine("(Parameter 'x')"), Is.EqualTo("(Parameter 'x')"), "a message that is only a parenthesis keeps it");
+        }
+
         [Test]
         public void AddingToAStageThatHasEffectsPutsTheNewOneLastOfItsStage()
         {
