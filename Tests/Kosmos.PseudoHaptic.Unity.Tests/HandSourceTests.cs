@@ -41,6 +41,24 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void TheRunningHandSubsystemIsReadWhenAnotherIsListedFirst()
+        {
+            // A project with two hand subsystems (a simulator's beside OpenXR's) lists a stopped one first: the hand read as
+            // untracked for good (the first in the list was taken, running or not).
+            XRHandSubsystem stopped = XRHandsRuntime.Start(), running = XRHandsRuntime.Start();
+            stopped.Stop();
+            var source = new GameObject("hand").AddComponent<XRHandPoseSource>();
+            source.HandSide = Handedness.Right;
+            XRHandsRuntime.Joint(running, Handedness.Right, XRHandJointID.Wrist, new Vector3(0, 1, 0.3f), XRHandJointTrackingState.Pose);
+            Frames.Run(1);
+            Assert.That(source.Subsystem, Is.SameAs(running));
+            Assert.That(source.IsTracked, Is.True);
+            Assert.That(Vector3.Distance(source.Position, new Vector3(0, 1, 0.3f)), Is.LessThan(1e-5f));
+            stopped.Destroy();
+            running.Destroy();
+        }
+
+        [Test]
         public void ThePinchPointsConfidenceIsTheFingertipsNotTheWrists()
         {
             XRHandSubsystem subsystem = XRHandsRuntime.Start();

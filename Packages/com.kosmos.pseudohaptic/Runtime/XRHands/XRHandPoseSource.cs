@@ -62,7 +62,10 @@ namespace Kosmos.PseudoHaptic.XRHands
                 {
                     _nextSearch = Time.unscaledTimeAsDouble + 0.5;
                     SubsystemManager.GetSubsystems(s_subsystems);
-                    _subsystem = s_subsystems.Count > 0 ? s_subsystems[0] : null;
+                    // The running one: a project may hold several (a simulator's beside OpenXR's), the first not running.
+                    _subsystem = null;
+                    for (int i = 0; i < s_subsystems.Count && _subsystem == null; i++)
+                        if (s_subsystems[i].running) _subsystem = s_subsystems[i];
                 }
                 return _subsystem != null && _subsystem.running ? _subsystem : null;
             }
