@@ -283,4 +283,19 @@ public class ReplayThreeDimensionCliTests : CliTestFolder
         Assert.That(err, Does.Contain("xyz"));
         Assert.That(Run("t,hand_y\n0,1\n0.1,1.1\n", "--mass-kg", "1", "--profile", "xyz"), Has.Length.EqualTo(3));
     }
+
+    [Test]
+    public void ABreakAwayNoPoseCanReachIsRefused()
+    {
+        // Issue 23: "a D that can never fire under a profile is refused with a clear error"; 100 and 1e5 ran and never fired.
+        foreach (string d in new[] { "100", "1e5" })
+        {
+            var (code, err) = Replay("--trace", In("t,hand_y\n0,1\n0.1,1.1\n"), "--out", Out, "--mass-kg", "1", "--profile", "xyz", "--break-away", d);
+            Assert.That(code, Is.EqualTo(2), err);
+            Assert.That(err, Is.EqualTo($"pseudohaptic replay: option --break-away: profile 'xyz+break-away': break-away's distance {(d == "100" ? "100" : "100000")} m could never be reached: " +
+                "poses farther than the workspace radius from where the hold began are untracked, so hand and object are never more than (1 + maxGain) × workspaceRadius = 48 m apart.\n"));
+            Assert.That(File.Exists(Out), Is.False);
+        }
+        Assert.That(Run("t,hand_y\n0,1\n0.1,1.1\n", "--mass-kg", "1", "--profile", "xyz", "--break-away", "48"), Has.Length.EqualTo(3));
+    }
 }

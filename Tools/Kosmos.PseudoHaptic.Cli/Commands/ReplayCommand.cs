@@ -28,7 +28,7 @@ public static class ReplayCommand
         ProfileOption.Define($"which effects act (default {NamedProfiles.PaperName})"),
         CliCommand.Value("--user", "USER.json", "the user's file from 'pseudohaptic tune': its cueStrength s scales the cue (gain G^s; default 1)"),
         CliCommand.Value("--grab-offset", "D", "the object starts D metres below the first usable hand (default 0; negative: above)"),
-        CliCommand.Value("--break-away", "D", "let go when the hand pulls D metres too far, two poses in a row: under the offset correction (paper, xyz) D is how far the hand pulls beyond what the weight allows (the strain: the lag of an object moving at most the user's capped speed), without it (paper-experiment, gain) the hand-to-object distance beyond the grab's (default: never)"));
+        CliCommand.Value("--break-away", "D", "let go when the hand pulls D metres too far, two poses in a row: under the offset correction (paper, xyz) D is how far the hand pulls beyond what the weight allows (the strain: the lag of an object moving at most the user's capped speed), without it (paper-experiment, gain) the hand-to-object distance beyond the grab's; at most (1 + maxGain) × workspaceRadius, 48 with the default limits (default: never)"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("replay").ToArray());
 
@@ -100,7 +100,7 @@ public static class ReplayCommand
         try { return new WeightSolver3D(model, profile, speed); }
         catch (ArgumentException e) when (distance.HasValue)
         {
-            throw new CliException("option --break-away: " + e.Message); // a profile where it could never fire
+            throw new CliException("option --break-away: " + Messages.WithoutParameter(e)); // a D or a profile where it could never fire
         }
     }
 

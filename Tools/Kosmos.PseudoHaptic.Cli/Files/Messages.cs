@@ -38,6 +38,13 @@ public static class Messages
     /// <summary>C0 and C1 controls, DEL, line and paragraph separators.</summary>
     static bool NeedsEscape(char c) => c < 0x20 || (c >= 0x7F && c <= 0x9F) || c == '\u2028' || c == '\u2029';
 
+    /// <summary>An argument exception's message without the " (Parameter 'x')" .NET appends: the message says what is wrong.</summary>
+    public static string WithoutParameter(ArgumentException e)
+    {
+        string? suffix = e.ParamName != null ? " (Parameter '" + e.ParamName + "')" : null;
+        return suffix != null && e.Message.EndsWith(suffix, StringComparison.Ordinal) ? e.Message[..^suffix.Length] : e.Message;
+    }
+
     /// <summary>A user's path as messages show it: "''" for the empty path, escaped controls otherwise.</summary>
     public static string Path(string path) => path.Length == 0 ? "''" : OneLine(path);
 

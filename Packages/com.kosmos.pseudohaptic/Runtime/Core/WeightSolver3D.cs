@@ -1,4 +1,5 @@
 using System;
+using System.Globalization;
 
 namespace Kosmos.PseudoHaptic
 {
@@ -155,6 +156,16 @@ namespace Kosmos.PseudoHaptic
                 throw new ArgumentException("profile '" + profile.Name + "': under the offset correction break-away measures how far the hand " +
                     "pulls beyond what the weight allows (the speed cap's lag, or the lateral inertia's beyond its bound); with neither " +
                     "in the profile it could never fire.", nameof(profile));
+            if (breakAway != null)
+            {
+                // A pose farther than the workspace radius from where the hold began is untracked, and the object moves at most
+                // maxGain times the hand: hand and object are never farther apart than (1 + maxGain) × radius, nor is any strain.
+                double reach = (1 + profile.Limits.MaxGain) * profile.Limits.WorkspaceRadius;
+                if (breakAway.Distance > reach)
+                    throw new ArgumentException("profile '" + profile.Name + "': break-away's distance " + breakAway.Distance.ToString("R", CultureInfo.InvariantCulture) +
+                        " m could never be reached: poses farther than the workspace radius from where the hold began are untracked, so hand and " +
+                        "object are never more than (1 + maxGain) × workspaceRadius = " + reach.ToString("R", CultureInfo.InvariantCulture) + " m apart.", nameof(profile));
+            }
             var twoHands = profile.Find<TwoHands>();
             // Each hand carries its share, but sharing never makes an object lighter than the standard weight: the golf ball
             // in two hands is still rigid, and an object just heavier than it does not start to lead the hands.

@@ -106,10 +106,10 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         [Test]
         public void AMeasureOfExactlyTheDistanceIsNotPastIt([Values("paper", "paper-experiment")] string name)
         {
-            // The measure at each new pose of the high lift, from a hold that cannot break (100 m); then the distance set to
+            // The measure at each new pose of the high lift, from a hold that does not break (48 m); then the distance set to
             // exactly the first of them past 0.15 m: that pose is not past it, so the hold ends two poses later, not one.
             var f = new Headset3D().Render(HighLift, null, 2);
-            var probe = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Get(name).With(new BreakAway(100)));
+            var probe = new WeightSolver3D(WeightModel.FromMass(10), NamedProfiles.Get(name).With(new BreakAway(48)));
             probe.BeginHold(f.A[0], 0.1, f.A[0].Y, 0.2);
             var poses = new System.Collections.Generic.List<(int frame, double measure)>();
             for (int i = 1; i < f.Count; i++)
@@ -187,6 +187,19 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
                 "in the profile it could never fire.", e.Message);
             Assert.That(() => new WeightSolver3D(WeightModel.FromMass(2), withoutStrain.With(new SpeedCap())), Throws.Nothing);
             Assert.That(() => new WeightSolver3D(WeightModel.FromMass(2), withoutStrain.Without<OffsetCorrection>()), Throws.Nothing, "without the correction it is a distance");
+            // Issue 23: "a D that can never fire is refused": beyond (1 + maxGain) × workspaceRadius (48 m by default) no pose
+            // is tracked that could reach it (100 m and 1e5 m were accepted and simply never fired).
+            foreach (double far in new[] { 48.000001, 100, 1e5 })
+            {
+                var tooFar = NamedProfiles.Xyz.With(new BreakAway(far));
+                var refused = Assert.Throws<ArgumentException>(() => new WeightSolver3D(WeightModel.FromMass(2), tooFar));
+                Assert.That(refused.ParamName, Is.EqualTo("profile"));
+                StringAssert.Contains("could never be reached", refused.Message);
+                StringAssert.Contains("(1 + maxGain) × workspaceRadius = 48 m", refused.Message);
+            }
+            Assert.That(() => new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz.With(new BreakAway(48))), Throws.Nothing);
+            var wide = new WeightProfile("wide", NamedProfiles.Xyz.With(new BreakAway(100)).Effects, new SolverLimits(workspaceRadius: 30));
+            Assert.That(() => new WeightSolver3D(WeightModel.FromMass(2), wide), Throws.Nothing, "a larger workspace reaches it");
             Assert.That(() => new BreakAway(0), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("distance"));
             Assert.That(() => new BreakAway(double.NaN), Throws.InstanceOf<ArgumentOutOfRangeException>().With.Message.Contains("distance"));
         }
