@@ -86,18 +86,21 @@ public class UnityPackageCliTests : CliTestFolder
         foreach (var meta in names.Where(n => n.EndsWith(".meta", StringComparison.Ordinal)))
             Assert.That(set.Contains(meta[..^5]) || folders.Contains(meta[..^5]), Is.True, "orphaned " + meta);
 
-        // What ships: the files git tracks or would track (not ignored) in the package folder, none other (no build output, nothing hidden).
+        // What ships: the files git tracks or would track (not ignored) in the package folder, none other (no build output, nothing
+        // hidden), less Tests/ (issue 34: "no test-only or build files").
         var tracked = Git("ls-files", "-z", "--cached", "--others", "--exclude-standard", "--", "Packages/com.kosmos.pseudohaptic");
         if (tracked != null)
         {
             var expected = tracked.Split('\0', StringSplitOptions.RemoveEmptyEntries)
                 .Select(p => "package/" + p["Packages/com.kosmos.pseudohaptic/".Length..])
                 .Where(p => File.Exists(Path.Combine(Package, p["package/".Length..])))
+                .Where(p => !p.StartsWith("package/Tests/", StringComparison.Ordinal) && p != "package/Tests.meta")
                 .OrderBy(p => p, StringComparer.Ordinal).ToList();
             Assert.That(names, Is.EqualTo(expected));
         }
         Assert.That(names.Where(n => Regex.IsMatch(n, @"/(bin|obj|\.[^/]+)/|\.csproj$|/\.")), Is.Empty);
-        Assert.That(names, Does.Contain("package/Tests/Editor/Kosmos.PseudoHaptic.Tests.Editor.asmdef"), "Tests/ ships (compiled only with testables)");
+        Assert.That(names.Where(n => n.StartsWith("package/Tests", StringComparison.Ordinal)), Is.Empty, "no test-only files (issue 34)");
+        Assert.That(names, Does.Contain("package/Runtime/Core/Kosmos.PseudoHaptic.Core.asmdef"));
         Assert.That(names, Does.Contain("package/Documentation~/unity.md"));
         foreach (var e in entries)
             Assert.That(e.Data, Is.EqualTo(File.ReadAllBytes(Path.Combine(Package, e.Name["package/".Length..]))), e.Name);

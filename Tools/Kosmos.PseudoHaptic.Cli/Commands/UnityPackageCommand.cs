@@ -12,9 +12,9 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// Manager installs with <i>Add package from tarball</i> (and a manifest's <c>file:…tgz</c> dependency): an npm-style
 /// gzipped tar whose entries are <c>package/…</c>, named <c>com.kosmos.pseudohaptic-VERSION.tgz</c> from package.json.
 /// <para>What goes in (<see cref="Select"/>): every file under the package folder except hidden files and folders
-/// (a leading '.') and build output (<c>bin/</c>, <c>obj/</c>, <c>TestResults/</c>, <c>*.csproj</c>, …). Tests/ ships:
-/// its asmdefs are constrained to <c>UNITY_INCLUDE_TESTS</c>, so Unity compiles them only in a project that lists
-/// the package in <c>testables</c>, as Unity's own packages ship theirs. Every asset Unity imports (outside folders
+/// (a leading '.') and build output (<c>bin/</c>, <c>obj/</c>, <c>TestResults/</c>, <c>*.csproj</c>, …), and the package's
+/// <c>Tests/</c> (issue 34: "no test-only or build files"; the git-URL and embedded installs keep them, for <c>testables</c>).
+/// Every asset Unity imports (outside folders
 /// ending in '~') must have its .meta, or the command refuses (exit 2): an immutable package drops assets without one.</para>
 /// <para>Deterministic: entries sorted by ordinal path, files only (as npm pack writes them), ustar headers with a fixed
 /// modification time (npm's, 1985-10-26 08:15 UTC), mode 0644, owner 0:0 and no user names; the same tree gives the
@@ -23,6 +23,9 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 public static class UnityPackageCommand
 {
     public const string DefaultPackage = "Packages/com.kosmos.pseudohaptic";
+
+    /// <summary>The package's test folder, left out of the tarball with its .meta.</summary>
+    public const string TestsFolder = "Tests";
 
     /// <summary>npm pack's fixed time for every entry, so a tarball depends on the files' content only.</summary>
     public static readonly DateTimeOffset FixedTime = new(1985, 10, 26, 8, 15, 0, TimeSpan.Zero);
@@ -133,6 +136,7 @@ public static class UnityPackageCommand
         foreach (var name in entries)
         {
             if (name.StartsWith('.')) continue;
+            if (relative.Length == 0 && (name == TestsFolder || name == TestsFolder + ".meta")) continue; // test-only: not in the tarball
             string rel = relative.Length == 0 ? name : relative + "/" + name;
             string full = Path.Combine(root, rel);
             bool isFolder = Directory.Exists(full);
