@@ -348,6 +348,7 @@ namespace Kosmos.PseudoHaptic
             f1 = Reachable(f1, first, ref _reach1, dt);
             bool f2 = _twoHands != null && _grip2 && usable2 && InWorkspace(second);
             f2 = Reachable(f2, second, ref _reach2, dt);
+            double p1x = _k1x, p1y = _k1y, p1z = _k1z, p2x = _k2x, p2y = _k2y, p2z = _k2z; // each hand's last position before this frame
             if (f1) { _k1x = first.X; _k1y = first.Y; _k1z = first.Z; }
             if (f2) { _k2x = second.X; _k2y = second.Y; _k2z = second.Z; }
             // A hand joining a hand already followed waits for steady tracking (the profile's settle time); at a hold's begin
@@ -370,12 +371,16 @@ namespace Kosmos.PseudoHaptic
                 }
                 else if ((_last1 || _last2) && (n1 != _last1 || n2 != _last2))
                 {
-                    // Keep the followed point where it was: the old set's mean minus the new set's, at each hand's last position.
-                    Mean(_last1, _last2, out double ox, out double oy, out double oz);
+                    // The followed point moves as the hand followed in both sets moved since it was last followed (a set that
+                    // changes shares at most one hand; none: it stays where it was). The old set's mean would mix that hand's
+                    // fresh position with a leaving hand's stale one, keeping half its motion on the frame its partner is lost.
+                    double dx = 0, dy = 0, dz = 0;
+                    if (_last1 && n1) { dx = _k1x - p1x; dy = _k1y - p1y; dz = _k1z - p1z; }
+                    else if (_last2 && n2) { dx = _k2x - p2x; dy = _k2y - p2y; dz = _k2z - p2z; }
                     Mean(n1, n2, out double nx, out double ny, out double nz);
-                    _cx += ox - nx;
-                    _cy += oy - ny;
-                    _cz += oz - nz;
+                    _cx = _vx + dx - nx;
+                    _cy = _vy + dy - ny;
+                    _cz = _vz + dz - nz;
                 }
                 _last1 = n1;
                 _last2 = n2;

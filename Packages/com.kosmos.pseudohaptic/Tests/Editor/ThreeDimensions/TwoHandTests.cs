@@ -169,6 +169,72 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
     
         [Test]
+        public void AHandLostOnTheFrameTheOtherGetsANewPoseLeavesNoOffset([Values(PhysicalConstants.StandardMassKg, 2.0)] double massKg, [Values(0.70, 0.72)] double lossStart)
+        {
+            // Both hands lift 0.3 m together; hand 1 is lost for 0.3 s from 0.72 s (a frame with a new pose for hand 2) or from
+            // 0.70 s (a repeated pose). Re-anchored with hand 1's stale position and hand 2's fresh one, the followed point kept
+            // half of hand 2's motion on that frame and the anchor kept the rest for the whole hold (standard weight 7.8 mm low).
+            HandPath3D a = (double t, out double x, out double y, out double z) => { x = -0.15; y = 1 + 0.3 * Headset3D.MinJerk(t, 0.3, 1, 0, 1); z = 0.3; };
+            HandPath3D b = (double t, out double x, out double y, out double z) => { x = 0.15; y = 1 + 0.3 * Headset3D.MinJerk(t, 0.3, 1, 0, 1); z = 0.3; };
+            var clean = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), new Headset3D().Render(a, b, 4));
+            var lossy = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), new Headset3D().Drop(1, lossStart, 0.3).Render(a, b, 4));
+            int n = clean.Y.Length - 1;
+            Assert.That(lossy.Y[n], Is.EqualTo(clean.Y[n]).Within(massKg <= PhysicalConstants.StandardMassKg ? 0.001 : 0.01));
+            Assert.That(lossy.FollowedY[n], Is.EqualTo(1.3).Within(1e-9), "the followed point ends at the hands' midpoint");
+        }
+
+        /// <summary>P12 with two hands holding one rigid object: a loss of either hand, starting on a frame where the other hand
+        /// gets a new pose or on one where it repeats its pose, while the hands lift, carry sideways or both, ends where the clean
+        /// hold ends (standard weight within 1 mm, others within 1 cm, on every axis), and the followed point on the hands'
+        /// midpoint. Masses 1 g to 8 kg, losses of 0.1 to 1 s, 72 to 120 Hz frames with wobble.</summary>
+        [Test]
+        public void AHandLostWhileBothHandsMoveTogetherEndsWhereTheCleanHoldEnds([Values("lift", "carry", "lift-and-carry")] string motion, [Range(1, 100)] int seed)
+        {
+            var rng = new Random(seed * 7919 + motion.Length);
+            double massKg = seed % 4 == 0 ? PhysicalConstants.StandardMassKg : Math.Exp(Math.Log(0.001) + (Math.Log(8) - Math.Log(0.001)) * rng.NextDouble());
+            int lostHand = 1 + rng.Next(2);
+            bool onNewPose = seed % 2 == 0;
+            double moveStart = 0.2 + 0.3 * rng.NextDouble(), moveTime = 0.6 + 0.9 * rng.NextDouble(), lossSeconds = 0.1 + 0.9 * rng.NextDouble();
+            double rise = motion == "carry" ? 0 : 0.1 + 0.4 * rng.NextDouble();
+            double carry = motion == "lift" ? 0 : 0.1 + 0.4 * rng.NextDouble(), heading = 2 * Math.PI * rng.NextDouble();
+            double cx = carry * Math.Cos(heading), cz = carry * Math.Sin(heading);
+            HandPath3D Hand(double side) => (double t, out double x, out double y, out double z) =>
+            {
+                double s = Headset3D.MinJerk(t, moveStart, moveTime, 0, 1);
+                x = side * 0.15 + cx * s;
+                y = 1 + rise * s;
+                z = 0.3 + cz * s;
+            };
+            double[] rates = { 72, 90, 120 };
+            Headset3D Set() => new Headset3D { Seed = seed, FrameRate = rates[rng.Next(3)], Wobble = 0.2 * rng.NextDouble() };
+            var clean = Set();
+            var f = clean.Render(Hand(-1), Hand(1), 4);
+            // The loss starts on a frame within the motion where the hand that stays gets a new pose, or repeats its last one.
+            var stays = lostHand == 1 ? f.B : f.A;
+            int from = 1;
+            double want = moveStart + (moveTime - 0.1) * rng.NextDouble();
+            while (f.T[from] < want) from++;
+            while (from < f.Count - 1 && (stays[from].PoseTime != stays[from - 1].PoseTime) != onNewPose) from++;
+            var lossy = new Headset3D { Seed = clean.Seed, FrameRate = clean.FrameRate, Wobble = clean.Wobble }.Drop(lostHand, f.T[from], lossSeconds);
+            var g = lossy.Render(Hand(-1), Hand(1), 4);
+            Assert.That(g.T, Is.EqualTo(f.T), "the same frames");
+
+            var rClean = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), f);
+            var rLossy = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), g);
+            int n = f.Count - 1;
+            string name = motion + " " + massKg.ToString("0.####") + " kg, hand " + lostHand + " lost at " + f.T[from].ToString("0.###") + " s ("
+                + (onNewPose ? "the other's new pose" : "a repeated pose") + ") for " + lossSeconds.ToString("0.##") + " s: ";
+            Assert.That(rLossy.Holding, Has.All.True, name + "held");
+            double tolerance = massKg <= PhysicalConstants.StandardMassKg ? 0.001 : 0.01;
+            Assert.That(rLossy.X[n], Is.EqualTo(rClean.X[n]).Within(tolerance), name + "x");
+            Assert.That(rLossy.Y[n], Is.EqualTo(rClean.Y[n]).Within(tolerance), name + "y");
+            Assert.That(rLossy.Z[n], Is.EqualTo(rClean.Z[n]).Within(tolerance), name + "z");
+            Assert.That(rLossy.FollowedX[n], Is.EqualTo(rClean.FollowedX[n]).Within(1e-9), name + "followed x");
+            Assert.That(rLossy.FollowedY[n], Is.EqualTo(rClean.FollowedY[n]).Within(1e-9), name + "followed y");
+            Assert.That(rLossy.FollowedZ[n], Is.EqualTo(rClean.FollowedZ[n]).Within(1e-9), name + "followed z");
+        }
+
+        [Test]
         public void EachHandIsJudgedAgainstTheWorkspaceAndTheFollowedPointNotAgain()
         {
             // The smallest workspace (1 m), 3 m above the floor. Hand 2 joins 0.9 m above hand 1, hand 1 lets go, and hand 2 comes down to 0.95 m
