@@ -235,6 +235,30 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void BothHandsLostAndReturningOneAfterTheOtherEndWhereTheCleanHoldEnds([Values(1, 2)] int firstBack, [Values(PhysicalConstants.StandardMassKg, 2.0)] double massKg)
+        {
+            // Both hands lost from 0.5 s while they lift 0.2 m and carry 0.2 m sideways together; one returns at 1.4 s, the other at
+            // 1.9 s. The returning hand's whole motion across the gap is the object's (it held it rigidly with the other); the old
+            // re-anchoring took half of it (the other's stale position in the old set's mean), 0.1 m low and short for the hold.
+            HandPath3D Hand(double side) => (double t, out double x, out double y, out double z) =>
+            {
+                double s = Headset3D.MinJerk(t, 0.5, 0.8, 0, 1);
+                x = side * 0.15 + 0.2 * s;
+                y = 1 + 0.2 * s;
+                z = 0.3;
+            };
+            var clean = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), new Headset3D().Render(Hand(-1), Hand(1), 4));
+            var gap = new Headset3D().Drop(firstBack, 0.5, 0.9).Drop(3 - firstBack, 0.5, 1.4).Render(Hand(-1), Hand(1), 4);
+            var lossy = Run3D.Of(new WeightSolver3D(WeightModel.FromMass(massKg), NamedProfiles.Xyz), gap);
+            int n = clean.Y.Length - 1;
+            double tolerance = massKg <= PhysicalConstants.StandardMassKg ? 0.001 : 0.01;
+            Assert.That(lossy.X[n], Is.EqualTo(clean.X[n]).Within(tolerance), "x");
+            Assert.That(lossy.Y[n], Is.EqualTo(clean.Y[n]).Within(tolerance), "y");
+            Assert.That(lossy.FollowedX[n], Is.EqualTo(0.2).Within(1e-9), "the followed point ends at the hands' midpoint");
+            Assert.That(lossy.FollowedY[n], Is.EqualTo(1.2).Within(1e-9), "the followed point ends at the hands' midpoint");
+        }
+
+        [Test]
         public void EachHandIsJudgedAgainstTheWorkspaceAndTheFollowedPointNotAgain()
         {
             // The smallest workspace (1 m), 3 m above the floor. Hand 2 joins 0.9 m above hand 1, hand 1 lets go, and hand 2 comes down to 0.95 m
