@@ -337,7 +337,9 @@ namespace Kosmos.PseudoHaptic
                 if (_heldFor >= SolverLimits.RepeatTime) { _heldFor = 0; again = true; }
             }
             else _heldFor = 0;
-            StepHorizontal(dt, newPose || again, bridged);
+            // Across a change the steady point restarts at the followed point even on a frame with no new pose (a hand let go
+            // between two poses): the lead has just joined the lag, and the shown lag would count it twice.
+            StepHorizontal(dt, newPose || again || bridged, bridged);
             if (_breakAway != null) CheckBreakAway(newPose);
         }
 

@@ -259,6 +259,31 @@ namespace Kosmos.PseudoHaptic.Tests.ThreeDimensions
         }
 
         [Test]
+        public void AHandLettingGoOnAFrameWithNoNewPoseLeavesTheLagWhereItWas([Values(1, 2)] int frameInPose)
+        {
+            // Both hands carry a 2 kg box sideways, 1/256 m a pose (30 Hz poses, 90 Hz frames; every position exact in binary, so
+            // the re-anchoring keeps the followed point bit for bit), and hand 2 lets go. The lead the hand had on its steady point
+            // joins the lag across the change; on a frame with no new pose the steady point was not restarted, so the shown lag
+            // counted that lead twice and the box stepped back by up to a pose's motion.
+            var s = new WeightSolver3D(WeightModel.FromMass(2), NamedProfiles.Xyz);
+            s.BeginHold(Run3D.At(-0.125, 1, 0.25, 0), Run3D.At(0.125, 1, 0.25, 0), 0, 1, 0.25);
+            double most = 0, atLetGo = 0, lastX = s.ObjectX;
+            for (int i = 1; i <= 180; i++)
+            {
+                int pose = i / 3;
+                double x = pose / 256.0, t = pose / 30.0;
+                if (i == 120 + frameInPose) s.SetGrip(2, false);
+                s.Step(Run3D.At(-0.125 + x, 1, 0.25, t), Run3D.At(0.125 + x, 1, 0.25, t), 1 / 90.0);
+                double step = Math.Abs(s.ObjectX - lastX);
+                lastX = s.ObjectX;
+                if (i == 120 + frameInPose) atLetGo = step;
+                else if (i > 90) most = Math.Max(most, step);
+            }
+            Assert.That(s.FollowedHands, Is.EqualTo(1));
+            Assert.That(atLetGo, Is.LessThanOrEqualTo(most), "the box moves no more on the frame the hand lets go than on any other");
+        }
+
+        [Test]
         public void EachHandIsJudgedAgainstTheWorkspaceAndTheFollowedPointNotAgain()
         {
             // The smallest workspace (1 m), 3 m above the floor. Hand 2 joins 0.9 m above hand 1, hand 1 lets go, and hand 2 comes down to 0.95 m
