@@ -37,6 +37,8 @@ namespace Kosmos.PseudoHaptic
         double _k1x, _k1y, _k1z, _k2x, _k2y, _k2z; // each hand's last followable position
         Reach _reach1, _reach2;              // whether a hand could have got to its next pose
         double _cx, _cy, _cz;                // anchor: followed point = hands' mean + c
+        bool _hasPair;                       // both hands have been followed together since each last gripped
+        double _qx, _qy, _qz;                // the pair's anchor: c while both hands were followed together
         double _vx, _vy, _vz;                // the followed point
         int _usableHands;
 
@@ -58,6 +60,10 @@ namespace Kosmos.PseudoHaptic
         // Break-away.
         bool _hasGrab, _beyond;
         double _gx, _gy, _gz;
+
+        /// <summary>Hands followed together again whose anchor is within this of the one they had return to it as they move
+        /// relative to each other; farther, they gripped anew, m.</summary>
+        const double PairRestoreDistance = 0.10;
 
         public WeightSolver3D(WeightModel model, WeightProfile profile = null, double standardSpeed = WeightSolver.DefaultStandardSpeed)
         {
@@ -230,6 +236,7 @@ namespace Kosmos.PseudoHaptic
             _reach1.Reset();
             _reach2.Reset();
             _cx = _cy = _cz = 0;
+            _hasPair = false;
             _hHas = false;
             _ax = _az = _ex = _ez = _sx = _sz = 0;
             _steadyCount = 0;
@@ -265,7 +272,7 @@ namespace Kosmos.PseudoHaptic
             if (hand != 1 && hand != 2) throw new ArgumentOutOfRangeException(nameof(hand), hand, "hand must be 1 or 2, got " + hand + ".");
             if (hand == 1) { _grip1 = grips; if (!grips) { _holds1 = false; _reach1.Reset(); } }
             else { _grip2 = grips; if (!grips) { _holds2 = false; _reach2.Reset(); } }
-            if (!grips) Forget(hand);
+            if (!grips) { Forget(hand); _hasPair = false; } // a new grasp is a new pair
             ApplyMass(_y.StandardSpeed);
         }
 
@@ -384,6 +391,7 @@ namespace Kosmos.PseudoHaptic
                     _cy = _vy + dy - ny;
                     _cz = _vz + dz - nz;
                 }
+                if (n1 && n2) Pair(p1x, p1y, p1z, p2x, p2y, p2z);
                 _last1 = n1;
                 _last2 = n2;
                 Mean(n1, n2, out double mx, out double my, out double mz);
@@ -395,6 +403,39 @@ namespace Kosmos.PseudoHaptic
             }
             _in1 = n1;
             _in2 = n2;
+        }
+
+        /// <summary>Both hands are followed. The first time since they gripped, c is the pair's anchor. While one hand was
+        /// followed alone, its motion was taken as both hands' (the object is rigid): hands that moved relative to each other
+        /// meanwhile (a box tilted about its centre) left that motion in c. Back together within
+        /// <see cref="PairRestoreDistance"/> of the pair's anchor, c returns to it out of the hands' relative motion only: on
+        /// a frame both hands were followed before too, by at most what the farther-moving hand moved beyond their mean,
+        /// so the followed point moves no more than a hand did, and not at all while the hands rest (or move together).
+        /// Farther, the hands gripped anew: c is the pair's anchor from now.</summary>
+        void Pair(double p1x, double p1y, double p1z, double p2x, double p2y, double p2z)
+        {
+            if (!_hasPair)
+            {
+                _hasPair = true;
+                _qx = _cx; _qy = _cy; _qz = _cz;
+                return;
+            }
+            if (_cx == _qx && _cy == _qy && _cz == _qz) return;
+            double ex = _qx - _cx, ey = _qy - _cy, ez = _qz - _cz, d = Math.Sqrt(ex * ex + ey * ey + ez * ez);
+            if (!(_in1 && _in2))
+            {
+                if (d >= PairRestoreDistance) { _qx = _cx; _qy = _cy; _qz = _cz; }
+                return; // the frame they are followed together again: the point stays where it was
+            }
+            double ax = _k1x - p1x, ay = _k1y - p1y, az = _k1z - p1z, bx = _k2x - p2x, by = _k2y - p2y, bz = _k2z - p2z;
+            double mx = 0.5 * (ax + bx), my = 0.5 * (ay + by), mz = 0.5 * (az + bz);
+            double budget = Math.Max(Math.Sqrt(ax * ax + ay * ay + az * az), Math.Sqrt(bx * bx + by * by + bz * bz)) - Math.Sqrt(mx * mx + my * my + mz * mz);
+            if (!(budget > 0)) return;
+            if (d <= budget) { _cx = _qx; _cy = _qy; _cz = _qz; return; }
+            double k = budget / d;
+            _cx += ex * k;
+            _cy += ey * k;
+            _cz += ez * k;
         }
 
         /// <summary>Whether a usable hand's pose can be followed: one a hand could have got to (<see cref="Reach"/>, judged
