@@ -71,8 +71,22 @@ namespace Kosmos.PseudoHaptic
         /// explain glides.</summary>
         public double LastOffset, LastHand;
 
-        /// <summary><see cref="MotionDeadband"/>: the hand height the deadband follows.</summary>
+        /// <summary><see cref="MotionDeadband"/>: the hand height the deadband follows (the hand the weight reads), m.</summary>
         public double DeadbandReference;
+
+        /// <summary><see cref="MotionDeadband"/>: the band's half-width now, m: closed by sustained motion, regrown at rest
+        /// (at most the width for the object's gain; +∞ at the grab: full width).</summary>
+        public double DeadbandHalfWidth;
+
+        /// <summary><see cref="MotionDeadband"/>: how many steady poses the reference averages at rest (capped); 0 while it
+        /// keeps the grab's pose (no motion since the grab).</summary>
+        public int DeadbandRestCount;
+
+        /// <summary><see cref="MotionDeadband"/>: the hold's clock when the band last saw a steady pose, s.</summary>
+        public double DeadbandSteadyTime;
+
+        /// <summary><see cref="MotionDeadband"/>: the hand where the hold began, m (the reference until the hand first moves).</summary>
+        public double DeadbandAnchor;
 
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
