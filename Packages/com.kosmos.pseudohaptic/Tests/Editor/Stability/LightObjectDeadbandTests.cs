@@ -143,9 +143,12 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         }
 
         /// <summary>
-        /// P4 after a lift, not only from the grab: a lift of 3–40 cm, then 10 s at rest with 1.5 mm of jitter; from 0.5 s
-        /// after the hand stopped (the last of its motion reaches the solver 45 ms late and through the median of three poses)
-        /// the object never moves more than 1 cm from where it was, over 200 seeds for each light mass and profile.
+        /// P4 after a lift, not only from the grab (as <see cref="SolverPropertyTests.P4_NoCreepAtRest"/> judges it from the
+        /// grab): a lift or lowering of 3–40 cm, then 10 s at rest with 1.5 mm of jitter; from 0.5 s after the hand stopped
+        /// (the band regrows and the reference settles on the mean of the first poses at rest) the object ends within 1 cm of
+        /// where it was and never strays from it by more than 1 cm or than the hand's own poses strayed from theirs (at 40 g,
+        /// G ≈ 1.06, the band is 0.7 mm wide and the object follows the hand's jitter as the golf ball does), over 200 seeds
+        /// for each light mass and profile. (A plain backlash strayed up to 13.5 mm at 1 g.)
         /// </summary>
         [Test]
         public void JitterAfterALiftDoesNotCreep([Values("paper", "paper-experiment", "gain", "xyz")] string profile, [ValueSource(nameof(Masses))] double mass)
@@ -162,11 +165,17 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(path);
                 var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile)), frames);
                 int from = QuestLikeInput.FrameAt(frames, stop + 0.5);
-                double creep = 0;
-                for (int i = from; i < y.Length; i++) creep = Math.Max(creep, Math.Abs(y[i] - y[from]));
-                if (creep > worst) { worst = creep; worstCase = $"seed {seed}: lift {rise:F3} m in {seconds:F2} s"; }
+                double creep = Math.Abs(Run.Last(y) - y[from]), stray = 0, handStray = 0;
+                for (int i = from; i < y.Length; i++)
+                {
+                    stray = Math.Max(stray, Math.Abs(y[i] - y[from]));
+                    handStray = Math.Max(handStray, Math.Abs(frames[i].HandY - frames[from].HandY));
+                }
+                string what = $"{mass * 1000} g, {profile}, seed {seed}: lift {rise:F3} m in {seconds:F2} s";
+                Assert.That(stray, Is.LessThanOrEqualTo(Math.Max(0.01, handStray) + 1e-12), what + ": strays from where it was 0.5 s after the stop");
+                if (creep > worst) { worst = creep; worstCase = what; }
             }
-            Assert.That(worst, Is.LessThan(0.01), $"{mass * 1000} g, {profile}: worst creep over 200 seeds ({worstCase})");
+            Assert.That(worst, Is.LessThan(0.01), "worst creep in 10 s over 200 seeds (" + worstCase + ")");
         }
     }
 }
