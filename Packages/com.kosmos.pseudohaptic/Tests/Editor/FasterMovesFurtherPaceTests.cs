@@ -159,6 +159,20 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
+        public void SeveralCreepsThatPauseLeaveTheLiftAfterThemItsOwnPace([Values(3, 5)] int creeps)
+        {
+            // Creeps of 1.2 cm, each pausing, 3 cm and more in all: the pause after them read as a very slow lift's end and
+            // settled its pace, the heaviest gain, for the fast lift after it (a 1 kg object 36 mm lower; found in review).
+            var h = new Hold().Rest(0.3);
+            for (int k = 1; k <= creeps; k++) h.Ramp(0.005 + 0.012 * k, 0.02).Rest(0.4);
+            double start = h.Y;
+            h.Ramp(0.45, 0.5).Rest(0.5);
+            var fromBand = new Hold().Rest(0.3).Ramp(0.45 - start, 0.5).Rest(0.5);
+            Assert.That(h.Solver.State.PaceSettled, Is.True, "the fast lift settles");
+            Assert.That(h.Pace, Is.EqualTo(fromBand.Pace).Within(0.05 * fromBand.Pace), "the lift's own pace, not the creeps' 0.02 m/s");
+        }
+
+        [Test]
         public void ARiseClimbingStairsOfTheNewTopStepKeepsRising()
         {
             // "A new top needs 2 mm more": a hand that, after a quick 2 cm, climbs a staircase of exactly that step, one stair

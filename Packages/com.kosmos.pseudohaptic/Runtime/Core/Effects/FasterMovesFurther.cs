@@ -137,23 +137,19 @@ namespace Kosmos.PseudoHaptic
                     state.PaceSettled = true;
                     return false;
                 }
-                if (state.RiseTop - state.RiseBandLift >= MinPacedRise)
-                {
-                    // Rises each too slow to climb MinPacedRise before a pause, MinPacedRise in all since the band: a very slow
-                    // lift, whose pace is its mean speed since the band, settled as any lift's. (Started over with no pace,
-                    // it got the standard's gain: a heavy object lifted 0.2 m in 20 s ended 11 mm above one lifted in 10 s.)
-                    double since = state.RiseTopTime - state.RiseBandTime;
-                    double slow = (state.RiseTop - state.RiseBandLift) / (since > 1.0 / 60 ? since : 1.0 / 60);
-                    state.PaceSettled = true;
-                    if (slow == state.Pace) return false;
-                    state.Pace = slow;
-                    return true;
-                }
                 // Paused before it rose MinPacedRise: not a lift but a hand at rest a little above the rest band (a creep, a
-                // hand resting where jitter no longer reaches the band). The next rise starts from here, as from the base.
+                // hand resting where jitter no longer reaches the band), or a very slow lift. The next rise starts from here, as
+                // from the base, and reads its own pace (a fast lift after a few creeps is not given theirs).
                 state.RiseStartLift = lift;
                 state.RiseStartTime = time;
-                return AtRest(ref state);
+                if (state.RiseTop - state.RiseBandLift < MinPacedRise) return AtRest(ref state);
+                // Rises each too slow to climb MinPacedRise before a pause, MinPacedRise in all since the band: a very slow lift,
+                // whose pace is its mean speed since the band. (Started over with no pace, it got the standard's gain: a heavy
+                // object lifted 0.2 m in 20 s ended 11 mm above one lifted in 10 s.)
+                double slow = MeanSpeed(state.RiseTop - state.RiseBandLift, state.RiseTopTime - state.RiseBandTime);
+                if (slow == state.Pace) return false;
+                state.Pace = slow;
+                return true;
             }
             if (time - seenTime > GapTime && lift > seenLift)
             {
@@ -171,12 +167,15 @@ namespace Kosmos.PseudoHaptic
             state.RiseTopTime = time;
             // The mean speed from where the rise left the base to its top: a function of the two ends. At least one 60 Hz
             // pose period of time.
-            double span = time - state.RiseStartTime; // never NaN (clock times); a comparison, not Math.Max's call
-            double mean = (lift - state.RiseStartLift) / (span > 1.0 / 60 ? span : 1.0 / 60);
+            double mean = MeanSpeed(lift - state.RiseStartLift, time - state.RiseStartTime);
             if (mean == state.Pace) return false;
             state.Pace = mean;
             return true;
         }
+
+        /// <summary>A rise's mean speed, m/s, over at least one 60 Hz pose period of time (the span is never NaN: clock times;
+        /// a comparison, not Math.Max's call).</summary>
+        static double MeanSpeed(double rise, double span) => rise / (span > 1.0 / 60 ? span : 1.0 / 60);
 
         /// <summary>The hand is at rest: no rise, no pace. True when the pace changed.</summary>
         static bool AtRest(ref HoldState state)

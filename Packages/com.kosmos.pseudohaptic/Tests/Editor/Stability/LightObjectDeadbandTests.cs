@@ -34,11 +34,13 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             double snap = R(Run.Headset().Drop(1.5, 0.3).Offset(1.8, 0.1, 0.04), path);
             double heft = R(Run.Headset(), HandPath.StartAt(1).Hold(0.3).MoveTo(1.05, 0.4).Hold(0.5).MoveTo(1.08, 0.3).MoveTo(1.05, 0.3).Hold(2.0));
             double heftClean = R(Run.Headset(), HandPath.StartAt(1).Hold(0.3).MoveTo(1.05, 0.4).Hold(3.1));
+            TestContext.Progress.WriteLine($"{m * 1000} g, {p}: glitch {(glitch - clean) * 1000:F3} mm, snap {(snap - clean) * 1000:F3} mm, heft {(heft - heftClean) * 1000:F3} mm from the clean path");
+            // Within P1's millimetre (the old band left 42–48 mm).
             Assert.Multiple(() =>
             {
-                Assert.That(glitch - clean, Is.EqualTo(0).Within(0.01), "glitch");
-                Assert.That(snap - clean, Is.EqualTo(0).Within(0.01), "snap");
-                Assert.That(heft - heftClean, Is.EqualTo(0).Within(0.01), "heft");
+                Assert.That(glitch - clean, Is.EqualTo(0).Within(0.001), "glitch");
+                Assert.That(snap - clean, Is.EqualTo(0).Within(0.001), "snap");
+                Assert.That(heft - heftClean, Is.EqualTo(0).Within(0.001), "heft");
             });
         }
 
@@ -175,6 +177,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 Assert.That(stray, Is.LessThanOrEqualTo(Math.Max(0.01, handStray) + 1e-12), what + ": strays from where it was 0.5 s after the stop");
                 if (creep > worst) { worst = creep; worstCase = what; }
             }
+            TestContext.Progress.WriteLine($"creep after a lift, worst of 200 seeds: {worst * 1000:F2} mm ({worstCase})");
             Assert.That(worst, Is.LessThan(0.01), "worst creep in 10 s over 200 seeds (" + worstCase + ")");
         }
     }
