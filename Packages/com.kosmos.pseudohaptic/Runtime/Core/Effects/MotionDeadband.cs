@@ -100,8 +100,10 @@ namespace Kosmos.PseudoHaptic
             if (since > 0) e += w * since / RegrowTime;
             if (!(e <= w)) e = w; // at most the width (+∞ at the grab; a gain that fell during the hold)
             double low = h - e, high = h + e;
-            // The most the reference may move beyond the hand's own step this frame, times the gain: the object's extra step.
-            double spare = frame.AcrossGap || !(constants.Gain > 1) ? 0 : CloseStep / constants.Gain;
+            // The most the reference may move beyond the hand's own step this frame, times the gain: the object's extra step
+            // (the band is open only where the gain is above 1, its width being taken from it).
+            double perPose = CloseStep / constants.Gain;
+            double spare = frame.AcrossGap ? 0 : perPose;
             if (r < low || r > high)
             {
                 // The hand pushes the band: motion. The band closes by what the push goes beyond it, so sustained motion closes
@@ -135,9 +137,8 @@ namespace Kosmos.PseudoHaptic
                     n = n < RestPoses ? n + 1 : RestPoses;
                     state.DeadbandRestCount = n;
                     double move = (frame.SteadyHand - r) / n;
-                    double most = CloseStep / Math.Max(1, constants.Gain);
-                    if (move > most) move = most;
-                    else if (move < -most) move = -most;
+                    if (move > perPose) move = perPose;
+                    else if (move < -perPose) move = -perPose;
                     r += move;
                     if (r < low) r = low;
                     else if (r > high) r = high;
