@@ -318,7 +318,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
         static bool IsUnix => Platform != SyncPlatform.Windows;
         static bool IsDarwin => Platform == SyncPlatform.MacOS;
 
-        /// <summary>libc's open/fsync/close: plain DllImport (no marshalling beyond a string), which IL2CPP and Mono support.</summary>
+        /// <summary>libc's open/fsync/close/rename: plain DllImport (no marshalling beyond a string), which IL2CPP and Mono support.</summary>
         static class Libc
         {
             [DllImport("libc", EntryPoint = "open", SetLastError = true)]
@@ -329,6 +329,39 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
             [DllImport("libc", EntryPoint = "close", SetLastError = true)]
             public static extern int Close(int fd);
+
+            [DllImport("libc", EntryPoint = "rename", SetLastError = true)]
+            public static extern int Rename([MarshalAs(UnmanagedType.LPStr)] string from, [MarshalAs(UnmanagedType.LPStr)] string to);
+        }
+
+        /// <summary>
+        /// Set only in the edit-mode tests: <see cref="Rename"/> acts as on a runtime whose <see cref="File.Replace(string, string, string)"/>
+        /// throws <see cref="PlatformNotSupportedException"/>, so the fallback runs on this machine (AtomicFileSyscallTests).
+        /// </summary>
+        internal static bool ReplaceUnsupportedForTests { get; set; }
+
+        /// <summary>
+        /// The replace of a runtime without <see cref="File.Replace(string, string, string)"/>. On Linux, Android and macOS, libc's
+        /// <c>rename</c>, which replaces the destination in one step as File.Replace does there (removing the old file first
+        /// would leave, after a kill or power cut between the two, no answers file at all but a temporary one that the
+        /// session's next start removes). Without libc (Windows, whose .NET always has File.Replace), the old file goes,
+        /// then the new one takes its name.
+        /// </summary>
+        static void ReplaceWithoutFileReplace(string temp, string full)
+        {
+            if (IsUnix && TryLibcRename(temp, full)) return;
+            File.Delete(full);
+            File.Move(temp, full);
+        }
+
+        /// <summary>libc's <c>rename</c>; false without libc; a failure throws <see cref="IOException"/> naming the destination and the errno.</summary>
+        static bool TryLibcRename(string temp, string full)
+        {
+            int result;
+            try { result = Libc.Rename(temp, full); }
+            catch (Exception e) when (e is DllNotFoundException || e is EntryPointNotFoundException) { return false; }
+            if (result != 0) throw new IOException(full + ": could not be replaced (errno " + Marshal.GetLastWin32Error() + ")");
+            return true;
         }
 
         /// <summary>
@@ -344,12 +377,14 @@ namespace Kosmos.PseudoHaptic.Evaluation
                     if (!File.Exists(full)) File.Move(temp, full);
                     else
                     {
-                        try { File.Replace(temp, full, null); }
+                        try
+                        {
+                            if (ReplaceUnsupportedForTests) throw new PlatformNotSupportedException("File.Replace (as the tests set)");
+                            File.Replace(temp, full, null);
+                        }
                         catch (PlatformNotSupportedException)
                         {
-                            // Some runtimes lack an atomic replace: the old file goes, then the new one takes its name.
-                            File.Delete(full);
-                            File.Move(temp, full);
+                            ReplaceWithoutFileReplace(temp, full);
                         }
                     }
                     return;

@@ -123,6 +123,41 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             Assert.That(Traced(() => AtomicFile.CreateDirectory(""), _dir), Is.Empty);
         }
 
+        [Test]
+        public void WithoutFileReplaceTheOldFileIsReplacedByOneRenameNeverRemovedFirst([Values(false, true)] bool synced)
+        {
+            // A runtime whose File.Replace is not supported: the answers file must never be absent, so no unlink of it
+            // before the rename (a kill or power cut between the two would leave only a temporary file, which the
+            // session's next start removes).
+            AtomicFile.ReplaceUnsupportedForTests = true;
+            string target = Path.Combine(_dir, "responses.csv");
+            File.WriteAllText(target, "old");
+            var calls = SelfTrace.CallsUnder(() =>
+            {
+                if (synced) AtomicFile.WriteAllText(target, "a,b\n");
+                else AtomicFile.WriteWith(target, temp => File.WriteAllText(temp, "a,b\n"));
+            }, _dir, Syscalls + ",unlink,unlinkat", _dir);
+            string temp = TemporaryOf(calls);
+            Assert.That(calls, Is.EqualTo(new[] { "fsync " + temp, "rename " + temp + " -> " + target, "fsync " + _dir }));
+            Assert.That(File.ReadAllText(target), Is.EqualTo("a,b\n"));
+            Assert.That(Directory.GetFiles(_dir).Count(f => AtomicFile.IsTemporaryName(Path.GetFileName(f))), Is.Zero);
+        }
+
+        [Test]
+        public void WithoutFileReplaceARenameTheKernelRefusesIsAnErrorNamingTheFileAndTheOldOneStays()
+        {
+            AtomicFile.ReplaceUnsupportedForTests = true;
+            string target = Path.Combine(_dir, "responses.csv");
+            File.WriteAllText(target, "old");
+            IOException error = null;
+            var calls = Traced(() => error = Assert.Throws<IOException>(() => AtomicFile.WriteAllText(target, "new")), _dir, "rename:error=EACCES:when=1+");
+            Assert.That(calls.Count(c => c.StartsWith("rename ", StringComparison.Ordinal) && c.EndsWith(" = -1", StringComparison.Ordinal)), Is.EqualTo(9),
+                "tried again eight times: " + string.Join("\n", calls));
+            Assert.That(error.Message, Is.EqualTo(target + ": could not be replaced (errno 13)"));
+            Assert.That(File.ReadAllText(target), Is.EqualTo("old"));
+            Assert.That(Directory.GetFiles(_dir).Count(f => AtomicFile.IsTemporaryName(Path.GetFileName(f))), Is.Zero, "the temporary file removed");
+        }
+
         // ---- the kernel says no: strace makes this thread's first (or second) fsync after attaching fail ----------------
 
         [Test]

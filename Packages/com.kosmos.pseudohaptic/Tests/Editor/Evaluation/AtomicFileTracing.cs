@@ -29,6 +29,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             AtomicFile.Durable = true;
             AtomicFile.PlatformForTests = null;
+            AtomicFile.ReplaceUnsupportedForTests = false;
             if (Directory.Exists(_dir)) Directory.Delete(_dir, true);
         }
 
