@@ -235,6 +235,45 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         [Test]
+        public void BootstrapJndIntervalCoversTheTrueJndLessOftenWith12RepetitionsThanWith24AndMissesBelowIt()
+        {
+            // The same population as above. With 12 repetitions per level (84 trials) the maximum-likelihood σ is too small
+            // (the slope too steep: Wichmann and Hill 2001a), and the percentile interval carries that bias with it: the true
+            // JND lies above the interval for most misses. Leaving the unfittable resamples out is not the cause: they are
+            // separations, σ → 0, and counting them as JND 0 could only lower the interval's ends. With 24 repetitions the
+            // coverage nears the nominal 95 %. evaluation.md §8.3 quotes the numbers printed here.
+            foreach (int repetitions in new[] { 12, 24 })
+            {
+                var population = new SeededRandom(2024);
+                int covered = 0, above = 0, below = 0, estimable = 0, failed = 0;
+                for (int p = 0; p < 200; p++)
+                {
+                    double pse = 1.0 + 0.05 * population.NextGaussian();
+                    double sigma = 0.08 + 0.06 * population.NextDouble();
+                    double jnd = sigma * Normal.Quantile(0.75);
+                    var observer = new SimulatedObserver(pse, sigma, 1000 + p);
+                    var trials = new ConstantStimuliPlan { Standard = 1, Seed = p, Repetitions = repetitions }.Build("P" + p);
+                    observer.AnswerAll(trials);
+                    var fit = PsychometricFit.Fit(trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray());
+                    if (!fit.Estimable) continue; // counted as not covering
+                    estimable++;
+                    var boot = PsychometricBootstrap.Run(fit, 1000, 5000 + p);
+                    failed += boot.Failed;
+                    if (jnd > boot.JndHigh) above++;
+                    else if (jnd < boot.JndLow) below++;
+                    else covered++;
+                }
+                TestContext.WriteLine($"{repetitions} repetitions: JND covered {covered} of 200 ({covered / 2.0} %), true JND above the interval {above}, below {below}; estimable {estimable}; unfittable resamples {failed} of {estimable * 1000}");
+                if (repetitions == 12)
+                {
+                    Assert.That(covered, Is.InRange(168, 180), "84 to 90 %");
+                    Assert.That(above, Is.GreaterThanOrEqualTo(4 * below + 10), "the misses are the interval's being too low");
+                }
+                else Assert.That(covered, Is.InRange(184, 194), "92 to 97 %");
+            }
+        }
+
+        [Test]
         public void WilsonIntervalMatchesHandComputation()
         {
             // 7 of 12, z = 1.959964: centre (0.58333 + 0.16006)/(1.32011) = 0.56313, half 0.25035.
