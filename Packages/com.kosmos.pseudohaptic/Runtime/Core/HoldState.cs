@@ -120,6 +120,10 @@ namespace Kosmos.PseudoHaptic
         public double PaceClockSkip;
         public bool PaceSettled;
 
+        /// <summary><see cref="OffsetRelaxation"/>: the steady hand at the start of the window its stillness is judged over and
+        /// at the window's middle, m, with their times, s, and the steady hand's mean speed over the window, m/s.</summary>
+        public double RelaxFromY, RelaxFromTime, RelaxMidY, RelaxMidTime, RelaxSpeed;
+
         /// <summary><see cref="SpeedCap"/>: where the object may be at its capped speed (held height, m), the motion it
         /// may still make this pose (m), and whether it has begun.</summary>
         public double CappedY, CapBudget;

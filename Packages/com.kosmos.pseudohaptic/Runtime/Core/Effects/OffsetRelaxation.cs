@@ -7,7 +7,10 @@ namespace Kosmos.PseudoHaptic
     /// zero with time constant <see cref="TimeConstant"/> (the base rises toward the hand, dt/(τ+dt) of the way per frame:
     /// no exponential, never overshoots), so a held offset fades. Where the offset correction holds the offset at its
     /// ceiling, the visible offset starts to fade once the lift has relaxed below the ceiling's reach. "Still" is
-    /// relative to the user: hand speed below <see cref="StillFraction"/> × v_std.
+    /// relative to the user: hand speed below <see cref="StillFraction"/> × v_std, the speed being the steady hand's mean
+    /// over the last <see cref="StillWindow"/> to twice that (not the pose-to-pose speed: Quest's 1–3 mm of jitter at 30 Hz
+    /// reads 0.06–0.13 m/s from one pose to the next, above 0.1 × v_std, and slowed the relaxation to a time constant of
+    /// 2–3 τ; OffsetRelaxationJitterTests).
     /// </summary>
     public sealed class OffsetRelaxation : WeightEffect
     {
@@ -31,13 +34,42 @@ namespace Kosmos.PseudoHaptic
             StillFraction = Descriptor.Settings[1].Check(stillFraction);
         }
 
+        /// <summary>The shortest span the hand's stillness is judged over, s (the span runs from this to twice this): over it,
+        /// millimetres of jitter read a few mm/s, while a pose-to-pose speed reads them ×30. Not a whole number of pose periods
+        /// at 30 or 60 Hz, so no common pose clock sits on the boundary.</summary>
+        public const double StillWindow = 0.21;
+
         protected internal override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants)
         {
-            if (Math.Abs(state.Estimator.Speed) >= StillFraction * constants.StandardSpeed) return;
+            if (frame.SteadyTaken) FollowSteadyHand(ref state, frame.SteadyHand, state.Time);
+            if (Math.Abs(state.RelaxSpeed) >= StillFraction * constants.StandardSpeed) return;
             double dt = Math.Min(frame.Dt, constants.Limits.MaxFrameTime);
             double relax = frame.Lift * dt / (TimeConstant + dt);
             state.Base += relax;
             frame.Lift -= relax;
+        }
+
+        /// <summary>The steady hand's mean speed from the window's start (<see cref="StillWindow"/> to twice that ago) to now;
+        /// the window moves on every <see cref="StillWindow"/>. The steady hand is the median of three poses: a one-pose glitch
+        /// never reaches it.</summary>
+        static void FollowSteadyHand(ref HoldState state, double y, double time)
+        {
+            if (time - state.RelaxMidTime >= StillWindow)
+            {
+                state.RelaxFromY = state.RelaxMidY;
+                state.RelaxFromTime = state.RelaxMidTime;
+                state.RelaxMidY = y;
+                state.RelaxMidTime = time;
+            }
+            double span = time - state.RelaxFromTime;
+            state.RelaxSpeed = span > 0 ? (y - state.RelaxFromY) / span : 0;
+        }
+
+        protected internal override void Reset(ref HoldState state, double handY)
+        {
+            state.RelaxFromY = state.RelaxMidY = handY;
+            state.RelaxFromTime = state.RelaxMidTime = state.Time;
+            state.RelaxSpeed = 0;
         }
     }
 }
