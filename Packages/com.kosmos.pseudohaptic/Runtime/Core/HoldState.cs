@@ -120,6 +120,11 @@ namespace Kosmos.PseudoHaptic
         public double PaceClockSkip;
         public bool PaceSettled;
 
+        /// <summary><see cref="FasterMovesFurther"/>, with a pause time longer than <see cref="FasterMovesFurther.HeftTime"/>: the
+        /// rise's top when it first stood still that long, when it got there, and the pace then (NaN top: none). A hand that
+        /// rises on and comes back down to it was hefting: the pace is this one again.</summary>
+        public double PaceCheckTop, PaceCheckTopTime, PaceCheckPace;
+
         /// <summary><see cref="OffsetRelaxation"/>: the steady hand at the start of the window its stillness is judged over and
         /// at the window's middle, m, with their times, s, and the steady hand's mean speed over the window, m/s.</summary>
         public double RelaxFromY, RelaxFromTime, RelaxMidY, RelaxMidTime, RelaxSpeed;

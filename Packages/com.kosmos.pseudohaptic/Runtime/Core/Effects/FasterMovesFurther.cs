@@ -109,6 +109,12 @@ namespace Kosmos.PseudoHaptic
         /// otherwise give a lift of half a metre after it the creep's pace, the heaviest gain).</summary>
         public const double MinPacedRise = 0.03;
 
+        /// <summary>With a <see cref="PauseTime"/> longer than this, s (the default pause time), a rise that stands still this long
+        /// is remembered, and a hand that rises on from there and comes back down to it gets the pace it had there again: a
+        /// heft within the pause time leaves the weight as it was (P13). At 2–5 s without it, a heft 0.6–3 s after a lift read
+        /// as the lift going on, slower, and left up to 22 mm of offset (FasterMovesFurtherPaceTests).</summary>
+        public const double HeftTime = 0.16;
+
         /// <summary>Steady poses further apart than this, s, had a gap between them (a loss, and the settling after it). Not a
         /// whole number of frames at 30, 60, 72, 90 or 120 Hz, so no common frame clock sits on the boundary.</summary>
         public const double GapTime = 0.11;
@@ -126,11 +132,35 @@ namespace Kosmos.PseudoHaptic
                 state.RiseStartLift = state.RiseTop = state.RiseBandLift = lift;
                 state.RiseStartTime = state.RiseTopTime = state.RiseBandTime = time;
                 state.PaceSettled = false;
+                state.PaceCheckTop = double.NaN;
                 return AtRest(ref state);
             }
             if (state.PaceSettled) return false;
-            if (lift < state.RiseTop + TopStep)
+            // A rise that stood still for HeftTime (its top remembered) goes on only by MinPacedRise more: jitter at rest over
+            // seconds reaches 2 mm above the top, and a top it made would count the whole rest in a slower pace.
+            double step = state.RiseTop == state.PaceCheckTop ? MinPacedRise : TopStep;
+            if (lift < state.RiseTop + step)
             {
+                if (PauseTime > HeftTime)
+                {
+                    // Back down to where the rise stood still for HeftTime (within the MinPacedRise it takes to go on from there),
+                    // after rising on: that was a heft (P13), not the lift going on. The pace, the top and its time are what they
+                    // were there.
+                    if (state.RiseTop > state.PaceCheckTop && lift < state.PaceCheckTop + MinPacedRise)
+                    {
+                        state.RiseTop = state.PaceCheckTop;
+                        state.RiseTopTime = state.PaceCheckTopTime;
+                        if (state.Pace == state.PaceCheckPace) return false;
+                        state.Pace = state.PaceCheckPace;
+                        return true;
+                    }
+                    if (double.IsNaN(state.PaceCheckTop) && time - state.RiseTopTime > HeftTime && state.RiseTop - state.RiseStartLift >= MinPacedRise)
+                    {
+                        state.PaceCheckTop = state.RiseTop;
+                        state.PaceCheckTopTime = state.RiseTopTime;
+                        state.PaceCheckPace = state.Pace;
+                    }
+                }
                 if (!(time - state.RiseTopTime > PauseTime)) return false;
                 if (state.RiseTop - state.RiseStartLift >= MinPacedRise)
                 {
@@ -196,6 +226,8 @@ namespace Kosmos.PseudoHaptic
             state.RiseStartTime = state.RiseTopTime = state.RiseBandTime = state.PaceSeenTime = state.Time;
             state.PaceSeenLift = 0;
             state.PaceSettled = false;
+            state.PaceCheckTop = double.NaN;
+            state.PaceCheckTopTime = state.PaceCheckPace = 0;
         }
     }
 }
