@@ -112,7 +112,7 @@ namespace Kosmos.PseudoHaptic
         /// <summary>With a <see cref="PauseTime"/> longer than this, s (the default pause time), a rise that stands still this long
         /// is remembered, and a hand that rises on from there and comes back down to it gets the pace it had there again: a
         /// heft within the pause time leaves the weight as it was (P13). At 2–5 s without it, a heft 0.6–3 s after a lift read
-        /// as the lift going on, slower, and left up to 22 mm of offset (FasterMovesFurtherPaceTests).</summary>
+        /// as the lift going on, slower, and left up to 22 mm of offset (PauseTimeHeftTests).</summary>
         public const double HeftTime = 0.16;
 
         /// <summary>Steady poses further apart than this, s, had a gap between them (a loss, and the settling after it). Not a

@@ -113,6 +113,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             var y = Run.Replay(Run.Solver(mass, Profile(which), vStd), frames);
             double end = frames[frames.Length - 1].Time;
             double creep = QuestLikeInput.MedianOver(frames, i => y[i], end - 0.5, end) - Start;
+            TestContext.WriteLine($"creep {creep * 1000:F2} mm"); // the largest over the 200 seeds is the 3.4 mm ALGORITHM.md quotes
             Assert.That(Math.Abs(creep), Is.LessThanOrEqualTo(0.01), $"seed {seed}: {Profile(which).Name}, {mass} kg, v_std {vStd:F2}");
         }
     }

@@ -39,6 +39,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             double end = frames[frames.Length - 1].Time;
             double offsetBefore = QuestLikeInput.MedianOver(frames, i => frames[i].HandY - y[i], before - 0.3, before);
             double offsetAfter = QuestLikeInput.MedianOver(frames, i => frames[i].HandY - y[i], end - 0.3, end);
+            TestContext.WriteLine($"offset moved {(offsetAfter - offsetBefore) * 1000:F2} mm"); // the largest over the 240 seeds: the CHANGELOG's worst
             Assert.That(Math.Abs(offsetAfter - offsetBefore), Is.LessThanOrEqualTo(0.010),
                 $"seed {seed}: {mass} kg, {profile}, pause time {pause} s, v_std {vStd:F2}, lift {rise:F2} m, heft {hold:F2} s later, {bounces} bounce(s): " +
                 $"offset {offsetBefore * 1000:F1} mm before, {offsetAfter * 1000:F1} mm after");
