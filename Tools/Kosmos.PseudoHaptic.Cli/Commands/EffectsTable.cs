@@ -5,12 +5,13 @@ namespace Kosmos.PseudoHaptic.Cli.Commands;
 /// <summary>
 /// ALGORITHM.md §6's effects table, generated from the package's effects (<see cref="EffectRegistry.Package"/>: name,
 /// class, stage, source, summary, settings with defaults, units and ranges). <c>pseudohaptic profiles --markdown FILE</c>
-/// writes it between its markers; <c>EffectsTableTests</c> fails when ALGORITHM.md holds anything else. No code per effect.
+/// writes it between its markers (<see cref="Into"/>: in a file that holds them, the rest of the file kept);
+/// <c>EffectsTableTests</c> fails when ALGORITHM.md holds anything else there. No code per effect.
 /// </summary>
 public static class EffectsTable
 {
     public const string Document = "Packages/com.kosmos.pseudohaptic/Documentation~/ALGORITHM.md";
-    public const string Command = "pseudohaptic profiles --markdown -";
+    public const string Command = "pseudohaptic profiles --markdown " + Document;
     const string Marker = "effects-table";
 
     /// <summary>The table wrapped in its markers, as ALGORITHM.md holds it.</summary>
@@ -34,6 +35,37 @@ public static class EffectsTable
         }
         sb.Append("<!-- end generated: ").Append(Marker).Append(" -->\n");
         return sb.ToString();
+    }
+
+    /// <summary>The first line of the block, up to the command it names.</summary>
+    public const string StartMarker = "<!-- generated: " + Marker + " ";
+
+    /// <summary>The last line of the block.</summary>
+    public const string EndMarker = "<!-- end generated: " + Marker + " -->";
+
+    /// <summary>
+    /// What a file holding <paramref name="existing"/> becomes: the block in place of the one between its markers, the text
+    /// before and after kept; the block alone for a new or empty file. Null when the file holds text but not exactly one
+    /// start marker followed by one end marker, each at the start of a line: replacing it whole would lose that text.
+    /// </summary>
+    public static string? Into(string? existing)
+    {
+        string block = Block();
+        if (string.IsNullOrEmpty(existing)) return block;
+        int start = LineStarting(existing, StartMarker, 0);
+        if (start < 0 || LineStarting(existing, StartMarker, start + 1) >= 0) return null;
+        int end = LineStarting(existing, EndMarker, start);
+        if (end < 0 || LineStarting(existing, EndMarker, end + 1) >= 0) return null;
+        int after = existing.IndexOf('\n', end);
+        return existing.Substring(0, start) + block + (after < 0 ? "" : existing.Substring(after + 1));
+    }
+
+    /// <summary>Where the first line from <paramref name="from"/> on that starts with <paramref name="text"/> begins, or −1.</summary>
+    static int LineStarting(string s, string text, int from)
+    {
+        for (int i = s.IndexOf(text, from, StringComparison.Ordinal); i >= 0; i = s.IndexOf(text, i + 1, StringComparison.Ordinal))
+            if (i == 0 || s[i - 1] == '\n') return i;
+        return -1;
     }
 
     static string Cell(string text) => text.Replace("|", "\\|");

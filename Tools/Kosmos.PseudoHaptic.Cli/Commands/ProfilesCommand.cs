@@ -21,11 +21,11 @@ public static class ProfilesCommand
             "pseudohaptic profiles",
             "pseudohaptic profiles --show xyz",
             "pseudohaptic profiles --show paper --json --out out/paper.json",
-            "pseudohaptic profiles --markdown out/effects-table.md",
+            "pseudohaptic profiles --markdown Packages/com.kosmos.pseudohaptic/Documentation~/ALGORITHM.md",
         },
         CliCommand.Value("--show", "NAME|FILE.json", $"show one profile: a named one ({string.Join(", ", NamedProfiles.Names)}) or a profile file (default: list every profile and effect)"),
         CliCommand.Flag("--json", "with --show: write the profile as JSON, the file any --profile takes (every effect with every setting, the limits)"),
-        CliCommand.Value("--markdown", "FILE", "write ALGORITHM.md §6's generated effects table instead ('-': standard output; default: none)"),
+        CliCommand.Value("--markdown", "FILE", "write the generated effects table instead, between its markers: a file that holds them (ALGORITHM.md) keeps the rest of its text, a new or empty one gets the table alone ('-': standard output; default: none)"),
         CliCommand.Value("--out", "FILE", "where the listing or the profile goes (default '-': standard output); replaced whole or not at all"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("profiles").ToArray());
@@ -38,7 +38,13 @@ public static class ProfilesCommand
             if (o.Get("--show") != null || o.Flag("--json") || o.Get("--out") != null)
                 throw new CliException("option --markdown: writes the effects table alone; leave out --show, --json and --out");
             var table = OutputFile.Check("--markdown", markdown);
-            table.Write(w => w.Write(EffectsTable.Block()));
+            string? existing = !table.IsStandardOutput && FileIdentity.Of(markdown).Kind == FileKind.Regular
+                ? InputFile.ReadSmallText("--markdown", markdown, expected: "a Markdown file")
+                : null;
+            string page = EffectsTable.Into(existing)
+                ?? throw new CliException($"option --markdown {Messages.Path(markdown)}: holds text but not one effects table between its markers " +
+                                          $"('{EffectsTable.StartMarker}…' and '{EffectsTable.EndMarker}', each starting a line), so it is left as it is; give a new file, one that holds them, or '-'");
+            table.Write(w => w.Write(page));
             (table.IsStandardOutput ? Console.Error : Console.Out).WriteLine($"profiles: the effects table, {EffectRegistry.Package.Count} effects -> {Messages.OneLine(markdown)}");
             return 0;
         }

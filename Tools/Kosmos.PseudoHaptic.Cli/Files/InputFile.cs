@@ -47,14 +47,14 @@ public static class InputFile
     /// A small file whole (a profile, a user's file), read up to <paramref name="maxCharacters"/>: beyond it (a wrong file,
     /// /dev/zero) it is refused naming the option, so memory stays bounded whatever the file's size.
     /// </summary>
-    public static string ReadSmallText(string option, string path, int maxCharacters = MaxSmallFile)
+    public static string ReadSmallText(string option, string path, int maxCharacters = MaxSmallFile, string expected = "a small JSON file")
     {
         using var reader = OpenText(option, path);
         var buffer = new char[maxCharacters + 1];
         int read = 0, n;
         while (read < buffer.Length && (n = reader.Read(buffer, read, buffer.Length - read)) > 0) read += n;
         if (read > maxCharacters)
-            throw new CliException($"{option} {Messages.Path(path)}: longer than {maxCharacters:N0} characters; expected a small JSON file");
+            throw new CliException($"{option} {Messages.Path(path)}: longer than {maxCharacters:N0} characters; expected {expected}");
         return new string(buffer, 0, read);
     }
 
