@@ -8,7 +8,7 @@ namespace Kosmos.PseudoHaptic.Tools.Tests;
 /// accuracy-vs-time.md's figures cannot go stale (issue 25): accuracy-results.md and accuracy-pareto.png are what
 /// <see cref="AccuracyMarkdown.Command"/> writes, and this test runs that command and fails when the committed files
 /// differ. It reads ../shared/data/mocap-hand-100hz.csv (one of the page's sources) and is ignored where ../shared is
-/// absent (a user's clone); in CI it must be there. It takes about two minutes (seeded renders, long runs).
+/// absent (a user's clone); in CI it must be there. It takes about 20 seconds (seeded renders, long runs).
 /// </summary>
 public class AccuracyPageTests : CliTestFolder
 {

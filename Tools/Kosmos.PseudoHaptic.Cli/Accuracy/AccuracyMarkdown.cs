@@ -29,7 +29,7 @@ public static class AccuracyMarkdown
         w.Write("<!-- Generated: do not edit. AccuracyPageTests fails when this page differs from what the code produces. -->\n");
         // What the page was made from: the command refuses to rewrite it from other inputs (without --overwrite).
         w.Write(inputs.PageComment + "\n\n");
-        w.Write($"Written by one command, from the repository's root (the figures are seeded: the same code writes the same page; about two minutes):\n\n```sh\n{Command}\n```\n\n");
+        w.Write($"Written by one command, from the repository's root (the figures are seeded: the same code writes the same page; about 20 seconds on 2 cores):\n\n```sh\n{Command}\n```\n\n");
         w.Write("What is measured and why is in [accuracy-vs-time.md](accuracy-vs-time.md#accuracy); the columns are explained there. ");
         w.Write($"Each true hand is degraded as a Quest 2 delivers it ({Degradation.PoseRate:0} Hz poses, {Degradation.Latency * 1000:0} ms late, jitter of ");
         w.Write($"{string.Join(" and ", Degradation.JitterMm.Select(j => F(j, 0)))} mm sd, held over {string.Join(", ", Degradation.FrameRates.Select(f => F(f, 0)))} Hz frames): ");

@@ -24,7 +24,7 @@ public static class DemoCommand
 
     public static CliCommand Define() => new(
         "demo",
-        "Simulate the paper's scenes without a headset (calibration, Experiment 1's boxes, Experiment 2's bottles, the offset correction, a 3D carry): a CSV per run, a PNG per scene, a summary table",
+        "Simulate the paper's scenes without a headset (calibration, Experiment 1's boxes, Experiment 2's bottles, the offset correction, a 3D carry, Experiment 1 again under the paper's equations as printed): a CSV per run, a PNG per scene, a summary table",
         Run,
         new[]
         {
