@@ -42,8 +42,21 @@ public class EffectsTableTests : CliTestFolder
         Assert.That(File.ReadAllText(page), Is.EqualTo("x\n" + EffectsTable.Block()));
     }
 
+    [Test]
+    public void MarkersOnTheFilesFirstLineAreReplacedAndTheRestIsKept()
+    {
+        // The start marker at offset 0 has no line end before it: it still starts a line.
+        string page = Path.Combine(_dir, "first-line.md");
+        File.WriteAllText(page, EffectsTable.StartMarker + "-->\n| old |\n" + EffectsTable.EndMarker + "\ntext after\n");
+        var (code, stderr, _) = Capture(() => Cli.Cli.Run(new[] { "profiles", "--markdown", page }));
+        Assert.That(code, Is.EqualTo(0), stderr);
+        Assert.That(File.ReadAllText(page), Is.EqualTo(EffectsTable.Block() + "text after\n"));
+    }
+
     [TestCase("# a page without the markers\n", TestName = "NoMarkers")]
     [TestCase("S\nS\nt\nE\nE\n", TestName = "DoubledMarkers")]
+    [TestCase("S\nt\nS\nE\n", TestName = "DoubledStartOneEnd")]
+    [TestCase("S\nt\nE\nE\n", TestName = "OneStartDoubledEnd")]
     [TestCase("E\nt\nS\n", TestName = "EndBeforeStart")]
     [TestCase("S\nt\n", TestName = "NoEnd")]
     [TestCase("text S\nE\n", TestName = "StartNotAtALineStart")]
