@@ -44,5 +44,92 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 $"seed {seed}: {mass} kg, {profile}, pause time {pause} s, v_std {vStd:F2}, lift {rise:F2} m, heft {hold:F2} s later, {bounces} bounce(s): " +
                 $"offset {offsetBefore * 1000:F1} mm before, {offsetAfter * 1000:F1} mm after");
         }
+
+        // The rise's pace on clean 30 Hz poses (2 kg, paper) at a pause time of 3 s, read from the solver at each frame: what
+        // the rise remembers where it first stood still (FasterMovesFurther.HeftTime), and what it does with it.
+        static double[] Paces(HandPath path, double pauseTime, double jitterSd = 0)
+        {
+            var frames = Run.Headset(jitterSd: jitterSd).Render(path);
+            var s = Run.Solver(2, NamedProfiles.Paper.With(new FasterMovesFurther(pauseTime: pauseTime)));
+            int first = TraceReplay.FirstUsable(frames);
+            s.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
+            var pace = new double[frames.Length];
+            for (int i = first + 1; i < frames.Length; i++)
+            {
+                s.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+                pace[i] = s.State.Pace;
+            }
+            return pace;
+        }
+
+        /// <summary>The pace at the frame rendered at time t (90 Hz frames from 0).</summary>
+        static double At(double[] pace, double t) => pace[Math.Min(pace.Length - 1, (int)Math.Ceiling(t * 90))];
+
+        /// <summary>A lift, back to rest, then a second, faster lift hefted 1 s later: the heft is judged against the second
+        /// lift's own still top. Its pace, 0.4 m in 0.4 s (about 1.1 m/s), is the same after the heft (measured 1.085 m/s
+        /// before and after; a still top kept from the first, slow lift read the heft as the lift going on at 0.24 m/s).</summary>
+        [Test]
+        public void ASecondLiftAfterTheHandCameBackToRestIsHeftedAgainstItsOwnStillTop()
+        {
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.0, 1.5).Hold(0.5).MoveTo(0.8, 0.5).Hold(0.5).MoveTo(1.2, 0.4).Hold(1.0);
+            double before = path.Duration;
+            path.MoveTo(1.35, 1.0).MoveTo(1.2, 1.0).Hold(0.6);
+            var pace = Paces(path, 3);
+            Assert.That(At(pace, before), Is.InRange(0.9, 1.3), "the second lift's pace, 0.4 m in 0.4 s");
+            Assert.That(At(pace, path.Duration), Is.EqualTo(At(pace, before)).Within(0.001), "after the heft");
+        }
+
+        /// <summary>A rise that stands still longer than the pause time has its pace for good, at 3 s as at the default 0.16 s: a
+        /// second stage (0.2 m more in 1.5 s) leaves it at the first stage's 0.3 m in 0.5 s (measured 0.689 m/s; a rise that
+        /// never settled at the still top it remembered read 0.09 m/s, the mean over the whole rest).</summary>
+        [Test]
+        public void ARiseThatStoodStillLongerThanThePauseTimeKeepsItsPaceThroughASecondStage()
+        {
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 0.5).Hold(3.5);
+            double firstStage = path.Duration;
+            path.MoveTo(1.3, 1.5).Hold(0.5);
+            var pace = Paces(path, 3);
+            Assert.That(At(pace, firstStage), Is.InRange(0.6, 0.8), "the first stage's pace, 0.3 m in 0.5 s");
+            Assert.That(At(pace, path.Duration), Is.EqualTo(At(pace, firstStage)).Within(0.001), "after the second stage");
+            Assert.That(At(pace, path.Duration), Is.EqualTo(At(Paces(path, 0.16), path.Duration)).Within(0.001), "as at the default pause time");
+        }
+
+        /// <summary>A heft within the pause time neither starts the pause time over nor ends it: the rise goes on 2.3 s after
+        /// it first stood still (within 3 s) and 3.3 s after (beyond), each as it would without the heft (measured: 0.214 m/s,
+        /// the mean over the pause, and the first stage's 0.689 m/s). Timed from the heft's top, the later rise read 0.118 m/s;
+        /// timed from the hold's start, the earlier one kept 0.689.</summary>
+        [Test]
+        public void AHeftWithinThePauseTimeLeavesThePauseTimedFromWhereTheRiseFirstStoodStill([Values(1.0, 2.0)] double rest)
+        {
+            var heft = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 0.5).Hold(0.5).MoveTo(1.2, 0.4).MoveTo(1.1, 0.4).Hold(rest).MoveTo(1.3, 0.5).Hold(0.5);
+            var none = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 0.5).Hold(1.3 + rest).MoveTo(1.3, 0.5).Hold(0.5);
+            double withHeft = At(Paces(heft, 3), heft.Duration), without = At(Paces(none, 3), none.Duration);
+            Assert.That(without, rest == 1.0 ? Is.InRange(0.15, 0.3) : Is.InRange(0.6, 0.8), "without the heft");
+            Assert.That(withHeft, Is.EqualTo(without).Within(0.001), "with the heft");
+        }
+
+        /// <summary>Until a rise stands still for the heft time, a long pause time reads a lift as the default does: slow lifts of
+        /// 0.3 m in 1–3 s get the same pace at 3 s as at 0.16 s (measured 0.177 m/s for 2 s; remembering a top the rise passed
+        /// on a pose that rose less than TopStep, before it stood still, read 0.194).</summary>
+        [Test]
+        public void ASlowLiftGetsThePaceItGetsAtTheDefaultPauseTime([Values(1.0, 2.0, 3.0)] double seconds)
+        {
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, seconds).Hold(1.0);
+            Assert.That(At(Paces(path, 3), path.Duration), Is.EqualTo(At(Paces(path, 0.16), path.Duration)).Within(0.0005));
+        }
+
+        /// <summary>Jitter of 2 mm at rest after a lift, at a pause time of 3 s: from 0.3 s after the hand stopped the pace never
+        /// changes (measured 0.738 m/s throughout; judged by TopStep rather than MinPacedRise above the remembered top, a
+        /// jitter pose read as the rise going on, 0.319 m/s for a pose).</summary>
+        [Test]
+        public void JitterAtRestAfterALiftNeverChangesThePace()
+        {
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.1, 0.5).Hold(2.5);
+            var pace = Paces(path, 3, jitterSd: 0.002);
+            double still = At(pace, 1.2);
+            Assert.That(still, Is.InRange(0.6, 0.8), "0.3 m in 0.5 s");
+            for (double t = 1.2; t <= path.Duration; t += 1.0 / 90)
+                Assert.That(At(pace, t), Is.EqualTo(still), $"t = {t:F3} s");
+        }
     }
 }
