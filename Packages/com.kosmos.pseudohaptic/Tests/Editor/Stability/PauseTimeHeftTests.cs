@@ -131,5 +131,20 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             for (double t = 1.2; t <= path.Duration; t += 1.0 / 90)
                 Assert.That(At(pace, t), Is.EqualTo(still), $"t = {t:F3} s");
         }
+
+        /// <summary>A hand that rested 1.5 cm above the base for longer than the pause time (a creep, where the next rise starts),
+        /// crept 1 cm more and stood still, then lifted 0.3 m and hefted: the creep's 1 cm is no rise of 3 cm to remember, so the
+        /// heft is judged against the lift's still top and leaves its pace (counting the creep's start height into the rise
+        /// remembered the creep's top and read the heft as the lift going on: 0.280 m/s before, 0.159 after).</summary>
+        [Test]
+        public void AHeftAfterALiftFromACreepIsJudgedAgainstTheLiftsStillTop()
+        {
+            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(0.815, 0.3).Hold(3.5).MoveTo(0.825, 0.3).Hold(0.5).MoveTo(1.125, 0.4).Hold(1.0);
+            double before = path.Duration;
+            path.MoveTo(1.225, 0.5).MoveTo(1.125, 0.5).Hold(0.6);
+            var pace = Paces(path, 3);
+            Assert.That(At(pace, before), Is.InRange(0.2, 0.4), "the lift's pace, counted from where the creep rested (measured 0.280 m/s)");
+            Assert.That(At(pace, path.Duration), Is.EqualTo(At(pace, before)).Within(0.001), "after the heft");
+        }
     }
 }
