@@ -195,5 +195,30 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 if (frames[i].Time >= 2.2) largest = Math.Max(largest, Math.Abs(y[i] - y[i - 1]));
             Assert.That(largest, Is.LessThanOrEqualTo(0.005));
         }
+
+        /// <summary>A loss of 0.2–0.3 s while the hand lifts 3 cm: across the gap the band's reference moves no further than the
+        /// hand's step, so the band never makes the object's step across the gap larger than it is without the band (measured:
+        /// equal, or smaller where the band still held some of the hand's motion; with the per-pose spare across the gap too, up
+        /// to 1.5 mm larger).</summary>
+        [Test]
+        public void AcrossALossTheBandAddsNothingToTheObjectsStep([Values("paper", "gain")] string p, [Values(0.001, 0.01, 0.04)] double m,
+            [Values(0.2, 0.3)] double loss, [Values(0.6, 1.0)] double seconds)
+        {
+            var frames = Run.Headset().Drop(1.0, loss).Render(HandPath.StartAt(1).Hold(0.8).MoveTo(1.03, seconds).Hold(2));
+            double StepAcrossTheGap(WeightProfile profile)
+            {
+                var y = Run.Replay(Run.Solver(m, profile), frames);
+                for (int i = 0, last = -1; i < frames.Length; i++)
+                {
+                    if (!frames[i].IsUsable) continue;
+                    if (last >= 0 && frames[i].Time - frames[last].Time > 0.1) return y[i] - y[last];
+                    last = i;
+                }
+                throw new InvalidOperationException("no gap");
+            }
+            double withBand = StepAcrossTheGap(NamedProfiles.Get(p));
+            double without = StepAcrossTheGap(NamedProfiles.Get(p).Without<MotionDeadband>(p + "-without-band"));
+            Assert.That(withBand, Is.LessThanOrEqualTo(without + 1e-6));
+        }
     }
 }
