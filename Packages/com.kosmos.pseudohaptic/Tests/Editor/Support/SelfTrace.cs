@@ -86,9 +86,34 @@ namespace Kosmos.PseudoHaptic.Tests
         public List<Call> Stop()
         {
             Detach();
+            return Parse(File.ReadAllLines(_file));
+        }
+
+        /// <summary>
+        /// The completed calls of strace's output lines. With -f, a call another thread interrupts is printed in two
+        /// lines, "1234 fsync(5&lt;/a&gt; &lt;unfinished ...&gt;" and later "1234 &lt;... fsync resumed&gt;) = 0": they are
+        /// joined, so a call is never lost because the machine was busy (this test process's other threads).
+        /// </summary>
+        public static List<Call> Parse(IEnumerable<string> lines)
+        {
             var calls = new List<Call>();
-            foreach (string line in File.ReadAllLines(_file))
+            var unfinished = new Dictionary<string, string>(StringComparer.Ordinal);
+            foreach (string raw in lines)
             {
+                string line = raw;
+                var u = Unfinished.Match(line);
+                if (u.Success)
+                {
+                    unfinished[u.Groups[1].Value] = u.Groups[1].Value + " " + u.Groups[2].Value;
+                    continue;
+                }
+                var r = Resumed.Match(line);
+                if (r.Success)
+                {
+                    if (!unfinished.TryGetValue(r.Groups[1].Value, out string head)) continue;
+                    unfinished.Remove(r.Groups[1].Value);
+                    line = head + r.Groups[2].Value;
+                }
                 var m = Complete.Match(line);
                 if (m.Success) calls.Add(new Call(m.Groups[1].Value, m.Groups[2].Value, long.Parse(m.Groups[3].Value, CultureInfo.InvariantCulture)));
             }
@@ -125,6 +150,9 @@ namespace Kosmos.PseudoHaptic.Tests
 
         // "1234 fsync(5</tmp/x/.ph0a1b2c3d.tmp>) = 0", "1234 rename(\"/tmp/x/a\", \"/tmp/x/b\") = 0", "… = -1 EIO (…) (INJECTED)".
         static readonly Regex Complete = new Regex(@"^\d+\s+(\w+)\((.*)\)\s+=\s+(-?\d+)");
+        // "1234 openat(AT_FDCWD, \"/tmp/x\", O_RDONLY|O_CLOEXEC <unfinished ...>" and "1234 <... openat resumed>) = 5</tmp/x>".
+        static readonly Regex Unfinished = new Regex(@"^(\d+)\s+(.*?)\s*<unfinished \.\.\.>$");
+        static readonly Regex Resumed = new Regex(@"^(\d+)\s+<\.\.\. \w+ resumed>(.*)$");
 
         /// <summary>One completed call: its name, its arguments as strace prints them, its result (−1 on an error).</summary>
         public sealed class Call
