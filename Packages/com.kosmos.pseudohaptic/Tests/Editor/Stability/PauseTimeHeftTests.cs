@@ -26,13 +26,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             double rise = QuestLikeInput.Uniform(rng, 0.05, 0.7), top = 0.8 + rise, hold = QuestLikeInput.Uniform(rng, 0.6, 3);
             var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(top, QuestLikeInput.Uniform(rng, 0.4, 2)).Hold(hold);
             double before = path.Duration;
-            int bounces = 1 + rng.Next(3);
-            for (int b = 0; b < bounces; b++)
-            {
-                double amplitude = QuestLikeInput.Uniform(rng, 0.05, 0.15);
-                path.MoveTo(top + amplitude, QuestLikeInput.Uniform(rng, 0.1, 1.0)).MoveTo(top, QuestLikeInput.Uniform(rng, 0.1, 1.0));
-            }
-            path.Hold(0.6);
+            int bounces = QuestLikeInput.AddHeft(rng, path, top);
             var frames = QuestLikeInput.Headset(rng, seed).Render(path);
             var profileWithPause = NamedProfiles.Get(profile).With(new FasterMovesFurther(pauseTime: pause));
             var y = Run.Replay(Run.Solver(mass, profileWithPause, vStd), frames);
@@ -70,13 +64,19 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         /// before and after; a still top kept from the first, slow lift read the heft as the lift going on at 0.24 m/s).</summary>
         [Test]
         public void ASecondLiftAfterTheHandCameBackToRestIsHeftedAgainstItsOwnStillTop()
+            => AHeftLeavesThePace(HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.0, 1.5).Hold(0.5).MoveTo(0.8, 0.5).Hold(0.5).MoveTo(1.2, 0.4).Hold(1.0),
+                top: 1.2, heft: 0.15, seconds: 1.0, 0.9, 1.3, "the second lift's pace, 0.4 m in 0.4 s");
+
+        /// <summary>After <paramref name="lift"/>, which rests at <paramref name="top"/>, the hand goes <paramref name="heft"/>
+        /// higher and back, <paramref name="seconds"/> each way, and rests: the pace at the end of the lift's rest lies in
+        /// [<paramref name="low"/>, <paramref name="high"/>] and is the same after the heft.</summary>
+        static void AHeftLeavesThePace(HandPath lift, double top, double heft, double seconds, double low, double high, string what)
         {
-            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(1.0, 1.5).Hold(0.5).MoveTo(0.8, 0.5).Hold(0.5).MoveTo(1.2, 0.4).Hold(1.0);
-            double before = path.Duration;
-            path.MoveTo(1.35, 1.0).MoveTo(1.2, 1.0).Hold(0.6);
-            var pace = Paces(path, 3);
-            Assert.That(At(pace, before), Is.InRange(0.9, 1.3), "the second lift's pace, 0.4 m in 0.4 s");
-            Assert.That(At(pace, path.Duration), Is.EqualTo(At(pace, before)).Within(0.001), "after the heft");
+            double before = lift.Duration;
+            lift.MoveTo(top + heft, seconds).MoveTo(top, seconds).Hold(0.6);
+            var pace = Paces(lift, 3);
+            Assert.That(At(pace, before), Is.InRange(low, high), what);
+            Assert.That(At(pace, lift.Duration), Is.EqualTo(At(pace, before)).Within(0.001), "after the heft");
         }
 
         /// <summary>A rise that stands still longer than the pause time has its pace for good, at 3 s as at the default 0.16 s: a
@@ -138,13 +138,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         /// remembered the creep's top and read the heft as the lift going on: 0.280 m/s before, 0.159 after).</summary>
         [Test]
         public void AHeftAfterALiftFromACreepIsJudgedAgainstTheLiftsStillTop()
-        {
-            var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(0.815, 0.3).Hold(3.5).MoveTo(0.825, 0.3).Hold(0.5).MoveTo(1.125, 0.4).Hold(1.0);
-            double before = path.Duration;
-            path.MoveTo(1.225, 0.5).MoveTo(1.125, 0.5).Hold(0.6);
-            var pace = Paces(path, 3);
-            Assert.That(At(pace, before), Is.InRange(0.2, 0.4), "the lift's pace, counted from where the creep rested (measured 0.280 m/s)");
-            Assert.That(At(pace, path.Duration), Is.EqualTo(At(pace, before)).Within(0.001), "after the heft");
-        }
+            => AHeftLeavesThePace(HandPath.StartAt(0.8).Hold(0.4).MoveTo(0.815, 0.3).Hold(3.5).MoveTo(0.825, 0.3).Hold(0.5).MoveTo(1.125, 0.4).Hold(1.0),
+                top: 1.125, heft: 0.1, seconds: 0.5, 0.2, 0.4, "the lift's pace, counted from where the creep rested (measured 0.280 m/s)");
     }
 }

@@ -31,6 +31,20 @@ namespace Kosmos.PseudoHaptic.Tests
 
         public static double Uniform(Random rng, double min, double max) => min + (max - min) * rng.NextDouble();
 
+        /// <summary>Issue 22's heft, appended to <paramref name="path"/> resting at <paramref name="top"/>: 1–3 bounces of 5–15 cm
+        /// up and back, 0.1–1 s each way, then 0.6 s of rest. Returns the number of bounces.</summary>
+        public static int AddHeft(Random rng, HandPath path, double top)
+        {
+            int bounces = 1 + rng.Next(3);
+            for (int b = 0; b < bounces; b++)
+            {
+                double amplitude = Uniform(rng, 0.05, 0.15);
+                path.MoveTo(top + amplitude, Uniform(rng, 0.1, 1.0)).MoveTo(top, Uniform(rng, 0.1, 1.0));
+            }
+            path.Hold(0.6);
+            return bounces;
+        }
+
         /// <summary>Index of the first frame at or after <paramref name="time"/> (the last frame if none).</summary>
         public static int FrameAt(TraceFrame[] frames, double time)
         {

@@ -35,13 +35,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             double rise = QuestLikeInput.Uniform(rng, 0.05, 0.7), top = 0.8 + rise;
             var path = HandPath.StartAt(0.8).Hold(0.4).MoveTo(top, QuestLikeInput.Uniform(rng, 0.4, 2)).Hold(0.6);
             double before = path.Duration;
-            int bounces = 1 + rng.Next(3);
-            for (int b = 0; b < bounces; b++)
-            {
-                double amplitude = QuestLikeInput.Uniform(rng, 0.05, 0.15);
-                path.MoveTo(top + amplitude, QuestLikeInput.Uniform(rng, 0.1, 1.0)).MoveTo(top, QuestLikeInput.Uniform(rng, 0.1, 1.0));
-            }
-            path.Hold(0.6);
+            int bounces = QuestLikeInput.AddHeft(rng, path, top);
             var frames = QuestLikeInput.Headset(rng, seed).Render(path);
             var y = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile), vStd).At(s), frames);
             // hand − object at rest before and after: the median over the last 0.3 s of each rest (a glitched pose is one
