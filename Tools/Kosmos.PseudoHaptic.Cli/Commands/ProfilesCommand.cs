@@ -21,7 +21,7 @@ public static class ProfilesCommand
             "pseudohaptic profiles",
             "pseudohaptic profiles --show xyz",
             "pseudohaptic profiles --show paper --json --out out/paper.json",
-            "pseudohaptic profiles --markdown Packages/com.kosmos.pseudohaptic/Documentation~/ALGORITHM.md",
+            "pseudohaptic profiles --markdown out/effects-table.md",
         },
         CliCommand.Value("--show", "NAME|FILE.json", $"show one profile: a named one ({string.Join(", ", NamedProfiles.Names)}) or a profile file (default: list every profile and effect)"),
         CliCommand.Flag("--json", "with --show: write the profile as JSON, the file any --profile takes (every effect with every setting, the limits)"),
