@@ -111,6 +111,33 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             Assert.That(withBand[i] - without[i], Is.EqualTo(0).Within(0.001));
         }
 
+        /// <summary>A scene's own hand-motion effect, ahead of the band, that reports every step as unknown (+∞): the package
+        /// itself never does (a usable pose is a height within ±100 km, its step finite), but a scene's effect may.</summary>
+        sealed class UnknownStep : WeightEffect
+        {
+            public override string Name => "unknown-step";
+            public override EffectStage Stage => EffectStage.HandMotion;
+            protected override void Apply(ref MotionFrame frame, ref HoldState state, in SolverConstants constants) => frame.HandDelta = double.PositiveInfinity;
+        }
+
+        /// <summary>With every hand step reported as unknown (+∞) by a scene's effect ahead of the band, a light object still
+        /// never steps more than G × the hand's own step plus the band's catching up (4 mm, as in
+        /// <see cref="AfterASlowDriftPushesTheBandTheObjectCatchesUpWithoutAJump"/>): an unknown step closes the band no
+        /// faster than no step at all (measured at most 2.0–4.0 mm beyond G × the hand's step on a 5 cm lift; had an infinite
+        /// step closed the band by the whole push, the reference would move twice the push: 6.4–20.5 mm beyond).</summary>
+        [Test]
+        public void AnUnknownHandStepMovesALightObjectNoFurtherThanAKnownOne([Values(0.001, 0.01, 0.02)] double m, [Values(0.4, 1.0)] double seconds)
+        {
+            var frames = Run.Headset().Render(HandPath.StartAt(1).Hold(0.3).MoveTo(1.05, seconds).Hold(1));
+            var solver = new WeightSolver(WeightModel.FromMass(m), new WeightProfile("unknown-step", new WeightEffect[] { new UnknownStep(), new MotionDeadband(), new WeightGain() }), 0.5);
+            var y = Run.Replay(solver, frames);
+            double beyond = 0;
+            for (int i = 1; i < frames.Length; i++)
+                beyond = Math.Max(beyond, Math.Abs(y[i] - y[i - 1]) - solver.Gain * Math.Abs(frames[i].HandY - frames[i - 1].HandY));
+            TestContext.Progress.WriteLine($"{m * 1000} g, lift in {seconds} s: at most {beyond * 1000:F3} mm beyond G × the hand's step");
+            Assert.That(beyond, Is.LessThanOrEqualTo(0.005));
+        }
+
         enum Artifact { GlitchAtRest, GlitchInMotion, LossWhileMoving, LowConfidence, Snap }
 
         /// <summary>
