@@ -84,10 +84,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 double stop = path.Duration;
                 path.Hold(1.5);
                 var frames = Run.Headset().Render(path);
-                int i = QuestLikeInput.FrameAt(frames, stop + 1);
-                var withBand = Run.Replay(Run.Solver(m, NamedProfiles.Get(p)), frames);
-                var without = Run.Replay(Run.Solver(m, NamedProfiles.Get(p).Without<MotionDeadband>(p + "-without-band")), frames);
-                return Math.Abs(withBand[i] - without[i]);
+                return Math.Abs(BandMinusWithout(m, p, frames, QuestLikeInput.FrameAt(frames, stop + 1)));
             }
             double nearTheGrab = ShortOneSecondAfter(HandPath.StartAt(1).Hold(0.3).MoveTo(1.03, 0.2).MoveTo(1.0, 0.2).Hold(2).MoveTo(1.012, 0.8));
             double afterALift = ShortOneSecondAfter(HandPath.StartAt(1).Hold(0.3).MoveTo(1.05, 0.4).Hold(1.5).MoveTo(1.062, 0.8));
@@ -105,11 +102,14 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             double settled = path.Duration;
             path.Hold(4.5);
             var frames = Run.Headset().Render(path);
-            int i = QuestLikeInput.FrameAt(frames, settled + 4);
-            var withBand = Run.Replay(Run.Solver(m, NamedProfiles.Get(p)), frames);
-            var without = Run.Replay(Run.Solver(m, NamedProfiles.Get(p).Without<MotionDeadband>(p + "-without-band")), frames);
-            Assert.That(withBand[i] - without[i], Is.EqualTo(0).Within(0.001));
+            Assert.That(BandMinusWithout(m, p, frames, QuestLikeInput.FrameAt(frames, settled + 4)), Is.EqualTo(0).Within(0.001));
         }
+
+        /// <summary>The object's height at frame <paramref name="i"/> under profile <paramref name="p"/> less its height under the
+        /// same profile without the band: how far the band leaves it from where the weight puts it.</summary>
+        static double BandMinusWithout(double m, string p, TraceFrame[] frames, int i)
+            => Run.Replay(Run.Solver(m, NamedProfiles.Get(p)), frames)[i]
+               - Run.Replay(Run.Solver(m, NamedProfiles.Get(p).Without<MotionDeadband>(p + "-without-band")), frames)[i];
 
         /// <summary>A scene's own hand-motion effect, ahead of the band, that reports every step as unknown (+∞): the package
         /// itself never does (a usable pose is a height within ±100 km, its step finite), but a scene's effect may.</summary>
