@@ -1,3 +1,4 @@
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Cli.Personalization;
 using NUnit.Framework;
 
@@ -41,5 +42,8 @@ public class PersonalizationPageTests : CliTestFolder
         var table = PersonalizationPage.Blocks().Single(b => b.Name == block).Table();
         Assert.That(text, Does.Contain(PersonalizationPage.Block(block, table)),
             $"{document}'s block '{block}' is stale or missing: copy it from {PersonalizationPage.PagePath} after rerunning {PersonalizationPage.Command}");
+        // Exactly one pair of markers around exactly that block (Does.Contain alone passes a block written twice).
+        Assert.That(GeneratedBlock.Replace(text, block, PersonalizationPage.Block(block, table)), Is.EqualTo(text),
+            $"{document} must hold block '{block}' once, between one start and one end marker");
     }
 }

@@ -1,4 +1,5 @@
 using System.Text;
+using Kosmos.PseudoHaptic.Cli.Files;
 
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
@@ -38,35 +39,18 @@ public static class EffectsTable
     }
 
     /// <summary>The first line of the block, up to the command it names.</summary>
-    public const string StartMarker = "<!-- generated: " + Marker + " ";
+    public static readonly string StartMarker = GeneratedBlock.StartMarker(Marker);
 
     /// <summary>The last line of the block.</summary>
-    public const string EndMarker = "<!-- end generated: " + Marker + " -->";
+    public static readonly string EndMarker = GeneratedBlock.EndMarker(Marker);
 
     /// <summary>
     /// What a file holding <paramref name="existing"/> becomes: the block in place of the one between its markers, the text
-    /// before and after kept; the block alone for a new or empty file. Null when the file holds text but not exactly one
-    /// start marker followed by one end marker, each at the start of a line: replacing it whole would lose that text.
+    /// before and after kept (<see cref="GeneratedBlock.Replace"/>); the block alone for a new or empty file. Null when the
+    /// file holds text but not exactly one pair of markers: replacing it whole would lose that text.
     /// </summary>
     public static string? Into(string? existing)
-    {
-        string block = Block();
-        if (string.IsNullOrEmpty(existing)) return block;
-        int start = LineStarting(existing, StartMarker, 0);
-        if (start < 0 || LineStarting(existing, StartMarker, start + 1) >= 0) return null;
-        int end = LineStarting(existing, EndMarker, start);
-        if (end < 0 || LineStarting(existing, EndMarker, end + 1) >= 0) return null;
-        int after = existing.IndexOf('\n', end);
-        return existing.Substring(0, start) + block + (after < 0 ? "" : existing.Substring(after + 1));
-    }
-
-    /// <summary>Where the first line from <paramref name="from"/> on that starts with <paramref name="text"/> begins, or −1.</summary>
-    static int LineStarting(string s, string text, int from)
-    {
-        for (int i = s.IndexOf(text, from, StringComparison.Ordinal); i >= 0; i = s.IndexOf(text, i + 1, StringComparison.Ordinal))
-            if (i == 0 || s[i - 1] == '\n') return i;
-        return -1;
-    }
+        => string.IsNullOrEmpty(existing) ? Block() : GeneratedBlock.Replace(existing, Marker, Block());
 
     static string Cell(string text) => text.Replace("|", "\\|");
 }

@@ -1,4 +1,5 @@
 using System.Text;
+using Kosmos.PseudoHaptic.Cli.Files;
 using Kosmos.PseudoHaptic.Evaluation;
 
 namespace Kosmos.PseudoHaptic.Cli.Personalization;
@@ -45,7 +46,7 @@ public static class PersonalizationPage
     };
 
     /// <summary>A table wrapped in its markers, as it appears in the page and the documents.</summary>
-    public static string Block(string name, string table) => $"<!-- generated: {name} -->\n{table}<!-- end generated: {name} -->\n";
+    public static string Block(string name, string table) => $"{GeneratedBlock.StartMarker(name)}-->\n{table}{GeneratedBlock.EndMarker(name)}\n";
 
     // ---- the paper table -------------------------------------------------------------------------------------------
 
