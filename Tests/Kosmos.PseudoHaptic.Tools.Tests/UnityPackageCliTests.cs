@@ -219,6 +219,29 @@ public class UnityPackageCliTests : CliTestFolder
         Assert.That(result.Stdout, Does.StartWith("unity-package: com.kosmos.pseudohaptic "));
     }
 
+    /// <summary>
+    /// A package installed by version: every git URL's <c>#tag</c> and every tarball name the install instructions show
+    /// (README.md, unity.md) is the version <c>package.json</c> holds, the CHANGELOG has a section for it, and where the clone
+    /// has tags, the tag exists (the docs once pinned <c>#0.2.0</c>, a tag that did not exist, while the package said 0.3.0).
+    /// </summary>
+    [Test]
+    public void The_install_instructions_pin_the_packages_version_and_its_tag()
+    {
+        string version = Version(Path.Combine(Package, "package.json"));
+        foreach (var doc in new[] { Path.Combine(RepositoryRoot.Path, "README.md"), Path.Combine(Package, "Documentation~", "unity.md") })
+        {
+            string text = File.ReadAllText(doc);
+            var pins = Regex.Matches(text, @"\.git\?path=/?Packages/com\.kosmos\.pseudohaptic#([^\s`""]+)").Select(m => m.Groups[1].Value).ToList();
+            var tarballs = Regex.Matches(text, @"com\.kosmos\.pseudohaptic-(\d[^\s`""/]*)\.tgz").Select(m => m.Groups[1].Value).ToList();
+            Assert.That(pins, Is.Not.Empty, doc + " shows no git URL with a version's tag");
+            Assert.That(pins.Concat(tarballs), Is.All.EqualTo(version), doc + ": package.json says " + version);
+        }
+        Assert.That(File.ReadAllText(Path.Combine(Package, "CHANGELOG.md")), Does.Contain("## [" + version + "] - "), "the CHANGELOG's section of the version");
+        var tags = Git("tag", "-l");
+        if (tags != null)
+            Assert.That(tags.Split('\n', StringSplitOptions.RemoveEmptyEntries), Does.Contain(version), "git tag -l: the version's tag");
+    }
+
     [Test]
     public void The_tools_version_is_the_packages_major_and_minor()
     {
