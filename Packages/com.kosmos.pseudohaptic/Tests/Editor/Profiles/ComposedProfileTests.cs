@@ -1,0 +1,100 @@
+using System;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests
+{
+    /// <summary>
+    /// Cases the generated properties over composed profiles found (Tests/Kosmos.PseudoHaptic.Properties.Tests,
+    /// ComposedProfileProperties), each shrunk and fixed here.
+    /// </summary>
+    public class ComposedProfileTests
+    {
+        /// <summary>
+        /// OPEN (reported, not fixed): the solver's finite guard (ALGORITHM.md §3, step 11) keeps the point the hand holds
+        /// (<see cref="MotionFrame.NewObjectY"/>: the object plus the grab offset) within ±10⁵ m, not the object: an object
+        /// that begins far from the hand leaves ±10⁵ m once the hand moves toward it. Here the object begins at 99,999 m with
+        /// the hand at 0 (both valid: <see cref="WeightSolver.BeginHold"/> accepts either within ±10⁵ m) and the hand lifts
+        /// 12 m; the 1 g object ends at 100,034.97 m under <c>gain</c> (100,011.17 under <c>paper</c>), and in 3D the x of
+        /// an object grabbed 99,999 m aside ends at 100,011 m under every named profile. A composed profile reaches it with a
+        /// floor near 10⁵ m (floor-clamp's range is ±10⁵ m): the floor raises the object at the grab, and any lift takes it
+        /// past. Not fixed because checking the object's own height in the guard (and x, z in 3D) changes the named profiles'
+        /// output on such holds (the brief: stop and report).
+        /// </summary>
+        [Test, Explicit("open defect, reported: the finite guard judges the held point, not the object")]
+        public void AnObjectThatBeginsFarFromTheHandStaysWithinTheCoordinateRange([Values("paper", "paper-experiment", "gain", "xyz")] string profile)
+        {
+            var solver = new WeightSolver(WeightModel.FromMass(0.001), NamedProfiles.Get(profile));
+            solver.BeginHold(0, 99999, 0);
+            double highest = double.NegativeInfinity;
+            for (int i = 1; i <= 1800; i++)
+                highest = Math.Max(highest, solver.Step(new HandSample(Math.Min(12.0, 12.0 * i / 900), true, true, i / 90.0), 1 / 90.0));
+            Assert.That(highest, Is.LessThanOrEqualTo(WeightSolver.MaxCoordinate));
+        }
+
+        /// <summary>
+        /// OPEN (reported, not fixed), the same guard in 3D: <see cref="WeightSolver3D"/> keeps x and z of no hand's point
+        /// within ±10⁵ m. With the workspace radius at its largest (10⁵ m, valid), two hands followed in turn 10⁵ m apart
+        /// re-anchor the followed point (hands' mean plus the anchor that keeps it from stepping) 2 × 10⁵ m away. Shrunk by
+        /// FsCheck from a garbage hold (ComposedProfileProperties.GarbageNeverReachesTheObjectUnderAnyComposedProfile, seed 3).
+        /// </summary>
+        [Test, Explicit("open defect, reported: no finite guard on x and z in WeightSolver3D")]
+        public void TwoHandsFollowedInTurnAcrossTheLargestWorkspaceKeepTheObjectWithinTheCoordinateRange()
+        {
+            var profile = new WeightProfile("two-hands-wide", new WeightEffect[] { new TwoHands() }, new SolverLimits(maxHandSpeed: double.MaxValue, workspaceRadius: 1e5));
+            var solver = new WeightSolver3D(WeightModel.FromMass(1), profile);
+            solver.BeginHold(new HandPose(0, 1.725, 0), new HandPose(0.3, 1.725, 0), 0.15, 1.725, 0);
+            var a = new HandPose(-0.0, 1.58632, 99999.99, true, true, 54.522);
+            var b = new HandPose(double.NegativeInfinity, 1.33078, 0.92358, true, true, 19.061);
+            var c = new HandPose(0, 1, 0, true, true, 29.781);
+            solver.SetGrip(1, true); solver.Step(a, b, 1 / 72.0);
+            solver.SetGrip(2, true); solver.Step(b, c, 1 / 72.0);
+            solver.SetGrip(1, true); solver.Step(c, a, 1 / 90.0);
+            Assert.That(Math.Abs(solver.ObjectZ), Is.LessThanOrEqualTo(WeightSolver.MaxCoordinate), "z " + solver.ObjectZ);
+        }
+
+        /// <summary>
+        /// OPEN (reported, not fixed): with a glide far slower than the default (glideSpeed 5e-324, valid: "> 0"), the base's
+        /// own small moves at rest (the lowering guard at slack 0 following jitter down, a fast relaxation pulling it back up)
+        /// are taken into the glide faster than it glides away, with a bias: 1 kg, experimental-blend, lowered 0.2 m, then 10 s
+        /// at rest with 1.5 mm of jitter, the glide grows 0.4 → 7.5 mm and the object creeps 6.4 mm below where it rested 0.5 s after the lowering
+        /// (shrunk by FsCheck, ComposedProfileProperties.OnCleanInputAComposedProfileNeitherJumpsNorCreeps, seed 1). At the
+        /// default 0.3 m/s the same moves glide away at once (the glide stays 0).
+        /// </summary>
+        [Test, Explicit("open defect, reported: the glide ratchets when it is slower than the base's moves at rest")]
+        public void ASlowGlideDoesNotRatchetTheBasesMovesAtRestIntoACreep()
+        {
+            var path = Simulation.HandPath.StartAt(0.8).Hold(0.5).MoveTo(0.6, 1.0).Hold(10.5);
+            var frames = new Simulation.HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.0015, LowConfidenceAboveSpeed = 0.6, LowConfidenceChance = 0.3, Seed = 90709 }.Render(path);
+            var profile = new WeightProfile("slow-glide", new WeightEffect[] { new LoweringGuard(0), new OffsetRelaxation(0.01, 0.1), new ExperimentalBlend() }, new SolverLimits(glideSpeed: double.Epsilon));
+            var y = Simulation.TraceReplay.Run(new WeightSolver(WeightModel.FromMass(1), profile), frames);
+            int from = Array.FindIndex(frames, f => f.Time >= 2.0);
+            Assert.That(Math.Abs(y[y.Length - 1] - y[from]), Is.LessThan(0.005), "the object creeps at rest");
+        }
+
+        /// <summary>
+        /// OPEN (reported, not fixed): issue 22's step rule (ALGORITHM.md §2: no frame's step beyond max(G, 1) × the hand's
+        /// largest step within 100 ms + 1 cm) does not hold where the weight's map changes while the hand moves: §3 step 9
+        /// counts an offset change of up to |Δhand| × |1 − G| as the hand's, in either direction, so such a change passes
+        /// unglided and the object steps up to (2 − G) × the hand's step. Shrunk by FsCheck: 22.6 kg, faster-moves-further at
+        /// sensitivity 2 (fastExponent 0.087, restBand 0.05) with experimental-blend, a 0.4 m lift in 0.378 s: a step of
+        /// 81.7 mm where the hand's largest within 100 ms is 68.3 mm (seed 4); and 1000 kg with offset-relaxation (τ 0.01 s,
+        /// stillFraction 2.7): 20.2 mm against 9.6 mm (seed 3).
+        /// </summary>
+        [Test, Explicit("open defect, reported: the glide's explained budget is blind to the direction of the change")]
+        public void AMapThatChangesWhileTheHandMovesStepsNoFurtherThanTheStepRule()
+        {
+            var path = Simulation.HandPath.StartAt(0.8).Hold(0.5).MoveTo(1.2, 0.378).Hold(10.5);
+            var frames = new Simulation.HeadsetSimulator { FrameRate = 90, PoseRate = 30, Latency = 0.045, JitterSd = 0.0015, LowConfidenceAboveSpeed = 0.6, LowConfidenceChance = 0.3, Seed = 1 }.Render(path);
+            var profile = new WeightProfile("strong-pace", new WeightEffect[] { new FasterMovesFurther(0.08727519618542848, 1.5, 0.05, 0.16, 2), new ExperimentalBlend() });
+            var solver = new WeightSolver(WeightModel.FromMass(22.645093056028553), profile);
+            var y = Simulation.TraceReplay.Run(solver, frames);
+            for (int i = 1; i < frames.Length; i++)
+            {
+                double near = 0;
+                for (int j = 1; j < frames.Length; j++)
+                    if (Math.Abs(frames[j].Time - frames[i].Time) <= 0.1 + 1e-9) near = Math.Max(near, Math.Abs(frames[j].HandY - frames[j - 1].HandY));
+                Assert.That(Math.Abs(y[i] - y[i - 1]), Is.LessThanOrEqualTo(Math.Max(1, solver.Gain) * near + 0.01), "frame " + i);
+            }
+        }
+    }
+}
