@@ -53,19 +53,18 @@ public sealed class GarbageHold
         from grip in Gen.Frequency((9, Gen.Constant(true)), (1, Gen.Constant(false)))
         select new GarbageFrame(x, y, z, tracked, high, time, dt, grip);
 
-    public static Arbitrary<GarbageHold> Arbitrary(IReadOnlyList<string> profiles)
-    {
-        var gen =
-            from profile in Gen.Elements(profiles.ToArray())
-            from grams in Gen.Elements(1, 10, 45, 100, 500, 1000, 2000, 5000, 100000, 1000000)
-            from start in Gen.Choose(0, 2000)
-            from frames in Gen.Sized(size => Gen.Choose(1, 20 + 20 * size).SelectMany(n => Gen.ArrayOf(Frame(), n)))
-            select new GarbageHold { Profile = profile, MassKg = grams / 1000.0, StartY = start / 1000.0, Frames = frames };
-        return Arb.From(gen, Shrink);
-    }
+    public static Arbitrary<GarbageHold> Arbitrary(IReadOnlyList<string> profiles) => Arb.From(Generator(profiles), Shrink);
+
+    /// <summary>Holds under <paramref name="profiles"/>, 1 g to 1 t, from 0–2 m, of 1 to 20 + 20 × size garbage frames.</summary>
+    public static Gen<GarbageHold> Generator(IReadOnlyList<string> profiles) =>
+        from profile in Gen.Elements(profiles.ToArray())
+        from grams in Gen.Elements(1, 10, 45, 100, 500, 1000, 2000, 5000, 100000, 1000000)
+        from start in Gen.Choose(0, 2000)
+        from frames in Gen.Sized(size => Gen.Choose(1, 20 + 20 * size).SelectMany(n => Gen.ArrayOf(Frame(), n)))
+        select new GarbageHold { Profile = profile, MassKg = grams / 1000.0, StartY = start / 1000.0, Frames = frames };
 
     /// <summary>Shorter runs (halves, then one frame less), then each frame made ordinary in turn.</summary>
-    static IEnumerable<GarbageHold> Shrink(GarbageHold h)
+    public static IEnumerable<GarbageHold> Shrink(GarbageHold h)
     {
         int n = h.Frames.Length;
         if (n > 1)
