@@ -94,6 +94,8 @@ public sealed class ComposedRun
     public double[] FX, FY, FZ;
     /// <summary>…and, in 3D, the hand the y solver follows (filtered, with a hand filter), m.</summary>
     public double[] HY;
+    /// <summary>The glide the y solver still has to make (<see cref="HoldState.Glide"/>), m.</summary>
+    public double[] Glide;
     /// <summary>The object's height once the hold began (the floor may have raised it).</summary>
     public double StartY;
 
@@ -169,12 +171,12 @@ public sealed class ComposedRun
         if (solver == null) return null;
         var frames = hands[0];
         int n = frames.Length;
-        var r = new ComposedRun { X = new double[n], Y = new double[n], Z = new double[n], Gain = new double[n], FX = new double[n], FY = new double[n], FZ = new double[n], HY = new double[n] };
+        var r = new ComposedRun { X = new double[n], Y = new double[n], Z = new double[n], Gain = new double[n], FX = new double[n], FY = new double[n], FZ = new double[n], HY = new double[n], Glide = new double[n] };
         if (solver is WeightSolver y)
         {
             y.BeginHold(frames[0].HandY, frames[0].HandY, frames[0].PoseTime);
-            r.Y[0] = y.ObjectY; r.Gain[0] = y.Gain; r.FY[0] = r.HY[0] = y.HandY;
-            for (int i = 1; i < n; i++) { r.Y[i] = y.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time); r.Gain[i] = y.Gain; r.FY[i] = r.HY[i] = y.HandY; }
+            r.Y[0] = y.ObjectY; r.Gain[0] = y.Gain; r.FY[0] = r.HY[0] = y.HandY; r.Glide[0] = y.State.Glide;
+            for (int i = 1; i < n; i++) { r.Y[i] = y.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time); r.Gain[i] = y.Gain; r.FY[i] = r.HY[i] = y.HandY; r.Glide[i] = y.State.Glide; }
             return r;
         }
         var s = (WeightSolver3D)solver;
@@ -184,7 +186,7 @@ public sealed class ComposedRun
         {
             if (i > 0) s.Step(Pose(hands, 0, i), two ? Pose(hands, 1, i) : HandPose.Lost, frames[i].Time - frames[i - 1].Time);
             r.X[i] = s.ObjectX; r.Y[i] = s.ObjectY; r.Z[i] = s.ObjectZ; r.Gain[i] = s.Vertical.Gain;
-            r.FX[i] = s.FollowedX; r.FY[i] = s.FollowedY; r.FZ[i] = s.FollowedZ; r.HY[i] = s.Vertical.HandY;
+            r.FX[i] = s.FollowedX; r.FY[i] = s.FollowedY; r.FZ[i] = s.FollowedZ; r.HY[i] = s.Vertical.HandY; r.Glide[i] = s.Vertical.State.Glide;
         }
         return r;
     }

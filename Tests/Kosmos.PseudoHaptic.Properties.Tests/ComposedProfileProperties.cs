@@ -200,6 +200,10 @@ public class ComposedProfileProperties
         // A band wider than the named profiles' (whose P4 tests pin 1 cm from 0.5 s after the stop) lags the hand by up to its
         // half-width w when a slow motion ends (it regrows faster than a slow hand closes it: MotionDeadband), and its
         // reference makes that up at rest, the object G times: the band's lag beyond the default band's, G × (w − w_default).
+        // What still glides when the rest begins moves the object while the hand rests, by design (§3 step 9: a change of the
+        // offset the hand's motion did not make, such as the pace settling, glides away at GlideSpeed); a slow glide, or a
+        // large change, is still under way: the glide left is allowed, and creep is what moves beyond it.
+        allowance += Math.Abs(run.Glide[from]);
         var band = profile.Find<MotionDeadband>();
         if (band != null)
             allowance += gain * Math.Max(0, band.WidthFor(c.Profile.StandardSpeed, gain) - new MotionDeadband().WidthFor(c.Profile.StandardSpeed, gain));
