@@ -345,9 +345,11 @@ namespace Kosmos.PseudoHaptic
             if (effects.Length > 0) effects[0].Apply(ref f, ref _state, in _constants);
             for (int i = 1; i < effects.Length; i++) effects[i].Apply(ref f, ref _state, in _constants);
 
-            // Only a height a pose could have (finite, within ±MaxCoordinate: a float transform holds it): a scene's own effect
-            // that wrote an absurd offset, however finite, leaves the object where it was for that frame.
-            if (Math.Abs(f.NewObjectY) <= MaxCoordinate)
+            // Only a height a pose could have (finite, within ±MaxCoordinate: a float transform holds it), for the point the hand
+            // holds and for the object (the grab offset apart: an object begun far from the hand would otherwise leave the range
+            // as the hand moved toward it): a scene's own effect that wrote an absurd offset, however finite, leaves the object
+            // where it was for that frame.
+            if (Math.Abs(f.NewObjectY) <= MaxCoordinate && Math.Abs(f.NewObjectY - _state.GrabOffset) <= MaxCoordinate)
             {
                 _state.HeldY = f.NewObjectY;
                 _state.ObjectY = f.NewObjectY - _state.GrabOffset;

@@ -547,7 +547,9 @@ namespace Kosmos.PseudoHaptic
 
             if (!_hHas) return; // no hand seen yet: the object stays where the hold began
             double x = _vx + _ax - _sx, z = _vz + _az - _sz;
-            if (double.IsFinite(x) && double.IsFinite(z)) { _objX = x; _objZ = z; }
+            // Only coordinates a float transform holds, as on y (NaN and ±∞ compare false): two hands followed in turn across
+            // the widest workspace re-anchor the followed point beyond it.
+            if (Math.Abs(x) <= WeightSolver.MaxCoordinate && Math.Abs(z) <= WeightSolver.MaxCoordinate) { _objX = x; _objZ = z; }
         }
 
         /// <summary>Keeps the last three followed points (restarting after a gap) and their median; true once it moved.</summary>

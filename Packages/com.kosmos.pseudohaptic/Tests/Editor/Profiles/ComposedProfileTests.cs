@@ -5,22 +5,19 @@ namespace Kosmos.PseudoHaptic.Tests
 {
     /// <summary>
     /// Cases the generated properties over composed profiles found (Tests/Kosmos.PseudoHaptic.Properties.Tests,
-    /// ComposedProfileProperties), each shrunk and fixed here.
+    /// ComposedProfileProperties), each shrunk: the fixed ones as tests, the open ones explicit, each saying why.
     /// </summary>
     public class ComposedProfileTests
     {
         /// <summary>
-        /// OPEN (reported, not fixed): the solver's finite guard (ALGORITHM.md §3, step 11) keeps the point the hand holds
-        /// (<see cref="MotionFrame.NewObjectY"/>: the object plus the grab offset) within ±10⁵ m, not the object: an object
-        /// that begins far from the hand leaves ±10⁵ m once the hand moves toward it. Here the object begins at 99,999 m with
-        /// the hand at 0 (both valid: <see cref="WeightSolver.BeginHold"/> accepts either within ±10⁵ m) and the hand lifts
-        /// 12 m; the 1 g object ends at 100,034.97 m under <c>gain</c> (100,011.17 under <c>paper</c>), and in 3D the x of
-        /// an object grabbed 99,999 m aside ends at 100,011 m under every named profile. A composed profile reaches it with a
-        /// floor near 10⁵ m (floor-clamp's range is ±10⁵ m): the floor raises the object at the grab, and any lift takes it
-        /// past. Not fixed because checking the object's own height in the guard (and x, z in 3D) changes the named profiles'
-        /// output on such holds (the brief: stop and report).
+        /// The finite guard (ALGORITHM.md §3, step 11) keeps the object, not only the point the hand holds
+        /// (<see cref="MotionFrame.NewObjectY"/>: the object plus the grab offset), within ±10⁵ m. Here the object begins at
+        /// 99,999 m with the hand at 0 (both valid: <see cref="WeightSolver.BeginHold"/> accepts either within ±10⁵ m) and
+        /// the hand lifts 12 m: the 1 g object ended at 100,034.97 m under <c>gain</c> (100,011.17 under <c>paper</c>) when
+        /// the guard judged the held point alone. A composed profile reached it with a floor near 10⁵ m (floor-clamp's range
+        /// is ±10⁵ m): the floor raises the object at the grab, and any lift takes it past.
         /// </summary>
-        [Test, Explicit("open defect, reported: the finite guard judges the held point, not the object")]
+        [Test]
         public void AnObjectThatBeginsFarFromTheHandStaysWithinTheCoordinateRange([Values("paper", "paper-experiment", "gain", "xyz")] string profile)
         {
             var solver = new WeightSolver(WeightModel.FromMass(0.001), NamedProfiles.Get(profile));
@@ -31,13 +28,31 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(highest, Is.LessThanOrEqualTo(WeightSolver.MaxCoordinate));
         }
 
+        /// <summary>The same in 3D, sideways: an object grabbed 99,999 m aside of the hand, which then moves 12 m toward it, stays
+        /// within ±10⁵ m on x (it ended at 100,011 m under every named profile), and keeps its height's guard too.</summary>
+        [Test]
+        public void AnObjectGrabbedFarAsideStaysWithinTheCoordinateRange([Values("paper", "paper-experiment", "gain", "xyz")] string profile)
+        {
+            var solver = new WeightSolver3D(WeightModel.FromMass(0.001), NamedProfiles.Get(profile));
+            solver.BeginHold(new HandPose(0, 1, 0, true, true, 0), 99999, 1, 0);
+            double farthest = 0;
+            for (int i = 1; i <= 1800; i++)
+            {
+                double x = Math.Min(12.0, 12.0 * i / 900);
+                solver.Step(new HandPose(x, 1, 0, true, true, i / 90.0), 1 / 90.0);
+                farthest = Math.Max(farthest, Math.Abs(solver.ObjectX));
+            }
+            Assert.That(farthest, Is.LessThanOrEqualTo(WeightSolver.MaxCoordinate));
+            Assert.That(farthest, Is.GreaterThan(99999), "the object moved with the hand until the range's edge");
+        }
+
         /// <summary>
-        /// OPEN (reported, not fixed), the same guard in 3D: <see cref="WeightSolver3D"/> keeps x and z of no hand's point
-        /// within ±10⁵ m. With the workspace radius at its largest (10⁵ m, valid), two hands followed in turn 10⁵ m apart
-        /// re-anchor the followed point (hands' mean plus the anchor that keeps it from stepping) 2 × 10⁵ m away. Shrunk by
-        /// FsCheck from a garbage hold (ComposedProfileProperties.GarbageNeverReachesTheObjectUnderAnyComposedProfile, seed 3).
+        /// The same guard in 3D, on x and z: with the workspace radius at its largest (10⁵ m, valid), two hands followed in
+        /// turn 10⁵ m apart re-anchor the followed point (the hands' mean plus the anchor that keeps it from stepping)
+        /// 2 × 10⁵ m away; z was 199,999.98 m before <see cref="WeightSolver3D"/> kept x and z within ±10⁵ m. Shrunk by FsCheck
+        /// from a garbage hold (ComposedProfileProperties.GarbageNeverReachesTheObjectUnderAnyComposedProfile, seed 3).
         /// </summary>
-        [Test, Explicit("open defect, reported: no finite guard on x and z in WeightSolver3D")]
+        [Test]
         public void TwoHandsFollowedInTurnAcrossTheLargestWorkspaceKeepTheObjectWithinTheCoordinateRange()
         {
             var profile = new WeightProfile("two-hands-wide", new WeightEffect[] { new TwoHands() }, new SolverLimits(maxHandSpeed: double.MaxValue, workspaceRadius: 1e5));
