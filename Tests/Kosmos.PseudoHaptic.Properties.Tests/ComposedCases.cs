@@ -64,15 +64,9 @@ public sealed class CleanLift
     /// hand's own step, no creep at rest) is about the hand. Garbage and the round trip draw the whole range.</summary>
     public const double SlowestRealHandLimit = 2;
 
-    /// <summary>The slowest glideSpeed a clean run draws, m/s (a centimetre a second). Open: with a glide much slower than
-    /// this, the base's own small moves at rest (the lowering guard following jitter down, the relaxation pulling it up) are
-    /// absorbed into the glide faster than it glides away and ratchet the object away from the hand (7.5 mm in 10 s at 1 kg
-    /// with glideSpeed 5e-324: ComposedProfileTests, explicit); at the default 0.3 m/s they glide away at once.</summary>
-    public const double SlowestGlide = 0.01;
-
     static ComposedProfile RealHandsPass(ComposedProfile p)
-        => p.Limits == null || (p.Limits[1] >= SlowestRealHandLimit && p.Limits[3] >= SlowestGlide) ? p
-            : p.With(x => { x.Limits[1] = Math.Max(x.Limits[1], SlowestRealHandLimit); x.Limits[3] = Math.Max(x.Limits[3], SlowestGlide); });
+        => p.Limits == null || p.Limits[1] >= SlowestRealHandLimit ? p
+            : p.With(x => x.Limits[1] = Math.Max(x.Limits[1], SlowestRealHandLimit));
 
     public static IEnumerable<CleanLift> Shrink(CleanLift c)
     {

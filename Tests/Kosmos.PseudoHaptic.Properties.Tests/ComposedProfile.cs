@@ -107,6 +107,14 @@ public sealed class ComposedProfile
             choices.Add((4, LogUniform(1e-4, 1e4)));
             choices.Add((3, LogUniform(s.Default / 10, s.Default * 10)));
         }
+        else if (double.IsPositiveInfinity(s.Max))
+        {
+            // A least value and no greatest (glideSpeed): the least, the largest finite, and log-uniform above the least.
+            choices.Add((3, Gen.Constant(s.Min)));
+            choices.Add((2, Gen.Constant(double.MaxValue)));
+            choices.Add((4, LogUniform(s.Min, s.Min * 1e6)));
+            choices.Add((3, LogUniform(s.Default / 10, s.Default * 10)));
+        }
         else
         {
             double lo = s.MinExclusive ? Math.BitIncrement(s.Min) : s.Min, hi = s.Max;

@@ -13,7 +13,7 @@ namespace Kosmos.PseudoHaptic
             SettingDescriptor.Number<SolverLimits>("maxGain", "", 3.0, 1.0, 100.0, "largest gain on the hand's motion (P3)", l => l.MaxGain),
             SettingDescriptor.Positive<SolverLimits>("maxHandSpeed", "m/s", 10.0, "a pose that implies a faster hand is not followed", l => l.MaxHandSpeed),
             SettingDescriptor.Positive<SolverLimits>("maxFrameTime", "s", 0.025, "a frame counts for at most this long in anything done with time", l => l.MaxFrameTime),
-            SettingDescriptor.Positive<SolverLimits>("glideSpeed", "m/s", 0.3, "how fast an offset the hand's motion did not make glides away", l => l.GlideSpeed),
+            SettingDescriptor.Number<SolverLimits>("glideSpeed", "m/s", 0.3, MinGlideSpeed, double.PositiveInfinity, "how fast an offset the hand's motion did not make glides away", l => l.GlideSpeed),
             SettingDescriptor.Number<SolverLimits>("workspaceRadius", "m", DefaultWorkspaceRadius, MinWorkspaceRadius, WeightSolver.MaxCoordinate, "a pose farther than this from where the hold began is not tracked", l => l.WorkspaceRadius),
         };
 
@@ -33,6 +33,13 @@ namespace Kosmos.PseudoHaptic
         /// <summary>How fast an offset the hand's motion did not make (a change of mass or profile during the hold, such as
         /// a second hand joining) glides back to the weight's own, m/s.</summary>
         public double GlideSpeed { get; }
+
+        /// <summary>The slowest glide, m/s: a centimetre a second, so a change of a few centimetres glides away within a hold.
+        /// Slower, the glide outlasts the hold and keeps what it takes in: the base's own small moves at rest (the lowering
+        /// guard following jitter down, the relaxation pulling it up) pile up in it and move the object at rest (1 kg under a
+        /// guard at slack 0 and a fast relaxation, 5e-324 m/s let the object creep 6.4 mm in 10 s; at 0.01 m/s it rests within
+        /// a millimetre of where the default leaves it: ComposedProfileTests).</summary>
+        public const double MinGlideSpeed = 0.01;
 
         /// <summary>The plausibility gate's workspace, m: a pose farther than this from where the hold began (the hand that
         /// grabbed, or the first one seen) is no hand's and is treated as not tracked, however long tracking was lost
