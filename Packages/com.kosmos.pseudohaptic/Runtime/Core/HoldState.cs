@@ -78,8 +78,8 @@ namespace Kosmos.PseudoHaptic
         /// (at most the width for the object's gain; +∞ at the grab: full width).</summary>
         public double DeadbandHalfWidth;
 
-        /// <summary><see cref="MotionDeadband"/>: how many steady poses the reference averages at rest (capped); 0 while it
-        /// keeps the grab's pose (no motion since the grab).</summary>
+        /// <summary><see cref="MotionDeadband"/>: how many steady poses the reference averages at rest (capped; until the hand
+        /// has shown it moved, the rest rule's reference run alongside the grab's backlash).</summary>
         public int DeadbandRestCount;
 
         /// <summary><see cref="MotionDeadband"/>: the hold's clock when the band last saw a steady pose, s.</summary>
@@ -87,6 +87,23 @@ namespace Kosmos.PseudoHaptic
 
         /// <summary><see cref="MotionDeadband"/>: the hand where the hold began, m (the reference until the hand first moves).</summary>
         public double DeadbandAnchor;
+
+        /// <summary><see cref="MotionDeadband"/>, from the grab until the hand has moved: the band's backlash reference (the grab's
+        /// pose, dragged by pushes), m.</summary>
+        public double DeadbandGrabReference;
+
+        /// <summary><see cref="MotionDeadband"/>, from the grab until the hand has moved: the reference the rest rule would give
+        /// (the steady hand's mean since the last push), m.</summary>
+        public double DeadbandRestMean;
+
+        /// <summary><see cref="MotionDeadband"/>: the mean of the steady hand since the grab, fading over 30 poses, m; the mean of
+        /// the hold's first steady poses, m; and how many steady poses the hold has seen (capped at 30).</summary>
+        public double DeadbandGrabMean, DeadbandEarlyMean;
+        public int DeadbandGrabCount;
+
+        /// <summary><see cref="MotionDeadband"/>: how far the hand has shown it moved since the grab, 0–1 (never decreasing): the
+        /// share of the way from the grab's backlash reference to the steady hand's mean.</summary>
+        public double DeadbandMoved;
 
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
