@@ -137,6 +137,11 @@ namespace Kosmos.PseudoHaptic
         public double PaceClockSkip;
         public bool PaceSettled;
 
+        /// <summary><see cref="FasterMovesFurther"/>: since the hand last left the rest band, a rise paused before it climbed
+        /// <see cref="FasterMovesFurther.MinPacedRise"/> with the climb since the band that much or more (a very slow lift): a new
+        /// top of a rise still under MinPacedRise reads the mean speed since the band, the pace a pause there keeps.</summary>
+        public bool PaceSlowSinceBand;
+
         /// <summary><see cref="FasterMovesFurther"/>, with a pause time longer than <see cref="FasterMovesFurther.HeftTime"/>: the
         /// rise's top when it first stood still that long, when it got there, and the pace then (NaN top: none). A hand that
         /// rises on and comes back down to it was hefting: the pace is this one again.</summary>

@@ -10,7 +10,9 @@ namespace Kosmos.PseudoHaptic
     /// <code>G_p = G^r,  r = clamp(x^(−s), <see cref="FastExponent"/>, <see cref="SlowExponent"/>),  x = κ · p / v_std</code>
     /// (s = <see cref="Sensitivity"/>, 0.06 by default)
     /// where p is the lift's pace: the mean speed of its rise from the base to its highest point so far, which settles
-    /// once the rise pauses for <see cref="PauseTime"/> and starts over when the hand is back at the base. κ =
+    /// once the rise pauses for <see cref="PauseTime"/> and starts over when the hand is back at the base. It changes only
+    /// when the steady hand reaches a new top or the base, never while the hand rests: a pause decides only where the next
+    /// rise starts and how it reads its pace (<see cref="MinPacedRise"/>), so nothing moves while the hand is still. κ =
     /// <see cref="StandardLiftRatio"/> makes a lift at the user's standard speed read x = 1, where G_p = G (Eq. 4–6);
     /// faster, r &lt; 1 and the gain moves toward 1 (the object rises further); slower, r &gt; 1 and it moves away from 1.
     /// Bounded both ways (G^SlowExponent ≤ G_p ≤ G^FastExponent &lt; 1), continuous, monotone in G at every pace (heavier
@@ -105,8 +107,11 @@ namespace Kosmos.PseudoHaptic
         public const double TopStep = 0.002;
 
         /// <summary>A rise that pauses before it has climbed this far, m, was a hand at rest a little above the rest band, not a
-        /// lift: its pace does not settle, and the next rise starts where it paused (a creep of a centimetre and a pause would
-        /// otherwise give a lift of half a metre after it the creep's pace, the heaviest gain).</summary>
+        /// lift: its pace does not settle, and the next rise starts where it paused and reads its own pace from its first new
+        /// top (a creep of a centimetre and a pause would otherwise give a lift of half a metre after it the creep's pace, the
+        /// heaviest gain). While the hand rests the pace stays the creep's: changing it there moved the object with the hand
+        /// still. Once the climb since the rest band is this much too, it is a very slow lift, and the next rise reads the mean
+        /// speed since the band until it has itself climbed this far.</summary>
         public const double MinPacedRise = 0.03;
 
         /// <summary>With a <see cref="PauseTime"/> longer than this, s (the default pause time), a rise that stands still this long
@@ -132,6 +137,7 @@ namespace Kosmos.PseudoHaptic
                 state.RiseStartLift = state.RiseTop = state.RiseBandLift = lift;
                 state.RiseStartTime = state.RiseTopTime = state.RiseBandTime = time;
                 state.PaceSettled = false;
+                state.PaceSlowSinceBand = false;
                 state.PaceCheckTop = double.NaN;
                 return AtRest(ref state);
             }
@@ -169,17 +175,18 @@ namespace Kosmos.PseudoHaptic
                 }
                 // Paused before it rose MinPacedRise: not a lift but a hand at rest a little above the rest band (a creep, a
                 // hand resting where jitter no longer reaches the band), or a very slow lift. The next rise starts from here, as
-                // from the base, and reads its own pace (a fast lift after a few creeps is not given theirs).
+                // from the base, and reads its own pace from its first new top (a fast lift after a few creeps is not given
+                // theirs). The pace is not changed here: the hand is at rest, and the object with it (the offset is a function
+                // of where the hand is for a given pace; changing it now moved a heavy object at the glide's speed while the
+                // hand was still, up to 16 mm over a lift in eight stages: HandAtRestObjectAtRestTests).
                 state.RiseStartLift = lift;
                 state.RiseStartTime = time;
-                if (state.RiseTop - state.RiseBandLift < MinPacedRise) return AtRest(ref state);
                 // Rises each too slow to climb MinPacedRise before a pause, MinPacedRise in all since the band: a very slow lift,
-                // whose pace is its mean speed since the band. (Started over with no pace, it got the standard's gain: a heavy
-                // object lifted 0.2 m in 20 s ended 11 mm above one lifted in 10 s.)
-                double slow = MeanSpeed(state.RiseTop - state.RiseBandLift, state.RiseTopTime - state.RiseBandTime);
-                if (slow == state.Pace) return false;
-                state.Pace = slow;
-                return true;
+                // whose pace is its mean speed since the band. From the next new top on, a rise still under MinPacedRise reads
+                // that mean, which is what the pace stays at when it pauses. (Started over with no pace, it got the standard's
+                // gain: a heavy object lifted 0.2 m in 20 s ended 11 mm above one lifted in 10 s.)
+                if (state.RiseTop - state.RiseBandLift >= MinPacedRise) state.PaceSlowSinceBand = true;
+                return false;
             }
             if (time - seenTime > GapTime && lift > seenLift)
             {
@@ -197,7 +204,10 @@ namespace Kosmos.PseudoHaptic
             state.RiseTopTime = time;
             // The mean speed from where the rise left the base to its top: a function of the two ends. At least one 60 Hz
             // pose period of time.
-            double mean = MeanSpeed(lift - state.RiseStartLift, time - state.RiseStartTime);
+            // A very slow lift (PaceSlowSinceBand) whose current rise is still under MinPacedRise: the mean since the band.
+            double mean = state.PaceSlowSinceBand && lift - state.RiseStartLift < MinPacedRise
+                ? MeanSpeed(lift - state.RiseBandLift, time - state.RiseBandTime)
+                : MeanSpeed(lift - state.RiseStartLift, time - state.RiseStartTime);
             if (mean == state.Pace) return false;
             state.Pace = mean;
             return true;
@@ -226,6 +236,7 @@ namespace Kosmos.PseudoHaptic
             state.RiseStartTime = state.RiseTopTime = state.RiseBandTime = state.PaceSeenTime = state.Time;
             state.PaceSeenLift = 0;
             state.PaceSettled = false;
+            state.PaceSlowSinceBand = false;
             state.PaceCheckTop = double.NaN;
             state.PaceCheckTopTime = state.PaceCheckPace = 0;
         }
