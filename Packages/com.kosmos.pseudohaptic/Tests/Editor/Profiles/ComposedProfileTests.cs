@@ -101,6 +101,26 @@ namespace Kosmos.PseudoHaptic.Tests
         public void AGlideSlowerThanACentimetreASecondIsRefused(double glideSpeed)
             => Assert.That(Assert.Throws<ArgumentOutOfRangeException>(() => new SolverLimits(glideSpeed: glideSpeed)).ParamName, Is.EqualTo("glideSpeed"));
 
+        /// <summary>The slowest glide is a centimetre a second, and every finite glide from there up is one (the range has a
+        /// least value and no greatest).</summary>
+        [TestCase(0.01)]
+        [TestCase(0.3)]
+        [TestCase(double.MaxValue)]
+        public void AGlideOfACentimetreASecondOrFasterIsAccepted(double glideSpeed)
+            => Assert.That(new SolverLimits(glideSpeed: glideSpeed).GlideSpeed, Is.EqualTo(glideSpeed));
+
+        /// <summary>In 3D as on y, ±10⁵ m itself is a coordinate: an object grabbed 99,999 m aside (on x or z) whose hand then
+        /// moves 1 m toward the far side ends exactly 10⁵ m aside, followed to the range's edge.</summary>
+        [Test]
+        public void AnObjectMovedToExactly1E5AsideIsFollowedThere([Values(0, 2)] int axis, [Values(1.0, -1.0)] double sign)
+        {
+            var solver = new WeightSolver3D(WeightModel.FromMass(0.045), NamedProfiles.Get("paper"));
+            HandPose Hand(double d, double t) => new HandPose(axis == 0 ? sign * d : 0, 1, axis == 2 ? sign * d : 0, true, true, t);
+            solver.BeginHold(Hand(0, 0), axis == 0 ? sign * 99999 : 0, 1, axis == 2 ? sign * 99999 : 0);
+            for (int i = 1; i <= 180; i++) solver.Step(Hand(Math.Min(1.0, i / 90.0), i / 90.0), 1 / 90.0);
+            Assert.That(axis == 0 ? solver.ObjectX : solver.ObjectZ, Is.EqualTo(sign * WeightSolver.MaxCoordinate));
+        }
+
         /// <summary>
         /// OPEN (reported, not fixed): issue 22's step rule (ALGORITHM.md §2: no frame's step beyond max(G, 1) × the hand's
         /// largest step within 100 ms + 1 cm) does not hold where the weight's map changes while the hand moves: §3 step 9
