@@ -90,6 +90,55 @@ public class StudyCliTests : CliTestFolder
         Assert.That(otherLines[1].Split(',')[8], Is.Not.EqualTo(lines[1].Split(',')[8]));
     }
 
+    /// <summary>
+    /// --interval: BCa by default, the plain percentiles on request; the same resamples (same seed) either way, so the fits,
+    /// the unfittable counts and everything but the interval columns are equal, and each interval is the engine's for its kind.
+    /// report.md says which kind it holds.
+    /// </summary>
+    [Test]
+    public void TheIntervalOptionChoosesBcaOrThePlainPercentilesOfTheSameResamples()
+    {
+        string trials = Write("T.csv", SimulatedTrials(out _));
+        string bca = Path.Combine(_dir, "bca"), named = Path.Combine(_dir, "named"), percentile = Path.Combine(_dir, "percentile");
+        Assert.That(Psychometric("--trials", trials, "--out", bca, "--bootstrap", "200", "--seed", "5").code, Is.EqualTo(0));
+        Assert.That(Psychometric("--trials", trials, "--out", named, "--bootstrap", "200", "--seed", "5", "--interval", "bca").code, Is.EqualTo(0));
+        Assert.That(Psychometric("--trials", trials, "--out", percentile, "--bootstrap", "200", "--seed", "5", "--interval", "percentile").code, Is.EqualTo(0));
+        string fits(string dir) => File.ReadAllText(Path.Combine(dir, "fits.csv"));
+        Assert.That(fits(named), Is.EqualTo(fits(bca)), "bca is the default");
+        var b = File.ReadAllLines(Path.Combine(bca, "fits.csv"));
+        var p = File.ReadAllLines(Path.Combine(percentile, "fits.csv"));
+        Assert.That(p.Length, Is.EqualTo(b.Length));
+        var rows = PsychometricAnalysis.Fit(TrialsCsv.Read(new StringReader(File.ReadAllText(trials)), "T.csv"), 0, 200, 5);
+        int moved = 0;
+        for (int i = 1; i < b.Length; i++)
+        {
+            var fb = b[i].Split(',');
+            var fp = p[i].Split(',');
+            Assert.That(fp.Take(8).Concat(fp.Skip(12)), Is.EqualTo(fb.Take(8).Concat(fb.Skip(12))), "line " + (i + 1) + ": all but the intervals");
+            if (fb[13] != "yes") continue;
+            var fit = rows[i - 1].Fit;
+            var engine = PsychometricBootstrap.Run(fit, 200, SeedOf(5, i - 1), 0.95, BootstrapInterval.Percentile);
+            Assert.That(fp.Skip(8).Take(4).Select(v => double.Parse(v, CultureInfo.InvariantCulture)),
+                Is.EqualTo(new[] { engine.PseLow, engine.PseHigh, engine.JndLow, engine.JndHigh }), "line " + (i + 1) + ": the engine's percentiles");
+            Assert.That(fb.Skip(8).Take(4).Select(v => double.Parse(v, CultureInfo.InvariantCulture)),
+                Is.EqualTo(new[] { rows[i - 1].Bootstrap.PseLow, rows[i - 1].Bootstrap.PseHigh, rows[i - 1].Bootstrap.JndLow, rows[i - 1].Bootstrap.JndHigh }),
+                "line " + (i + 1) + ": the engine's BCa ends");
+            if (fb[10] != fp[10] || fb[11] != fp[11]) moved++;
+        }
+        Assert.That(moved, Is.EqualTo(8), "every estimable JND interval moved");
+        Assert.That(File.ReadAllText(Path.Combine(bca, "report.md")), Does.Contain("bias-corrected and accelerated percentiles, BCa"));
+        Assert.That(File.ReadAllText(Path.Combine(percentile, "report.md")), Does.Contain("percentiles 2.5 and 97.5 (--interval percentile)"));
+    }
+
+    /// <summary>The bootstrap seed of the <paramref name="group"/>-th group (from 0) of a file run with --seed <paramref name="seed"/>.</summary>
+    static long SeedOf(long seed, int group)
+    {
+        var seeds = new SeededRandom(seed);
+        long s = 0;
+        for (int g = 0; g <= group; g++) s = unchecked((long)seeds.NextUInt64());
+        return s;
+    }
+
     [Test]
     public void LapseOptionFixesGammaAndLambda()
     {
@@ -135,6 +184,8 @@ public class StudyCliTests : CliTestFolder
     [TestCase("--bootstrap", "-1", "option --bootstrap")]
     [TestCase("--bootstrap", "1.5", "option --bootstrap")]
     [TestCase("--seed", "abc", "option --seed")]
+    [TestCase("--interval", "BCa", "option --interval: 'BCa' is neither bca nor percentile")]
+    [TestCase("--interval", "student", "option --interval: 'student' is neither bca nor percentile")]
     [TestCase("--colour", "red", "unknown option '--colour'")]
     public void BadOptionsAreRefusedNamingTheOption(string option, string value, string expected)
     {

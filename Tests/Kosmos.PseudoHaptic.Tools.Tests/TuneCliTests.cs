@@ -73,6 +73,29 @@ public class TuneCliTests : CliTestFolder
         }
     }
 
+    /// <summary>--interval: the JND's upper bound is the BCa one by default (the engine's, at the one-sided confidence), the
+    /// plain percentile's with --interval percentile; the fit itself is the same.</summary>
+    [Test]
+    public void TheBoundIsBcaByDefaultAndThePercentileOnRequest()
+    {
+        string bca = Path.Combine(_dir, "bca.json"), percentile = Path.Combine(_dir, "percentile.json");
+        Assert.That(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--out", bca).code, Is.EqualTo(0));
+        Assert.That(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--interval", "percentile", "--out", percentile).code, Is.EqualTo(0));
+        using var b = JsonDocument.Parse(File.ReadAllText(bca));
+        using var p = JsonDocument.Parse(File.ReadAllText(percentile));
+        double fitted = b.RootElement.GetProperty("fittedCue").GetDouble();
+        Assert.That(p.RootElement.GetProperty("fittedCue").GetDouble(), Is.EqualTo(fitted), "the same fit");
+        var answers = TrialsCsv.Read(new StringReader(File.ReadAllText(Trials)), "trials.csv", int.MaxValue, long.MaxValue, leaveOutCatch: true, out _);
+        var (_, fit, _, _, _, _) = TuneCommand.Tune(answers, "P3", "pseudo-haptic", CueStrengthTuning.ExperimentOneBoxes, "trials.csv");
+        Assert.That(fit.Jnd, Is.EqualTo(fitted), "the command's fit (catch trials left out)");
+        foreach (var (doc, kind) in new[] { (b, BootstrapInterval.Bca), (p, BootstrapInterval.Percentile) })
+        {
+            var boot = PsychometricBootstrap.Run(fit, TuneCommand.Resamples, TuneCommand.BootstrapSeed, 0.9, kind);
+            Assert.That(doc.RootElement.GetProperty("thresholdCue").GetDouble(), Is.EqualTo(Math.Max(fit.Jnd, boot.JndHigh)), kind.ToString());
+        }
+        Assert.That(b.RootElement.GetProperty("thresholdCue").GetDouble(), Is.Not.EqualTo(p.RootElement.GetProperty("thresholdCue").GetDouble()));
+    }
+
     [Test]
     public void AnUnreachableStrengthIsTheBoundWithOneStderrLine()
     {
@@ -106,9 +129,10 @@ public class TuneCliTests : CliTestFolder
         OneLineNamingAndNothingWritten(Run("tune", "--trials", broken, "--participant", "Q", "--out", output), "tune", new[] { "broken.csv:2" }, output);
         OneLineNamingAndNothingWritten(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--confidence", "0.4", "--out", output), "tune", new[] { "--confidence", "0.4" }, output);
         OneLineNamingAndNothingWritten(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--confidence", "x", "--out", output), "tune", new[] { "--confidence", "'x'" }, output);
+        OneLineNamingAndNothingWritten(Run("tune", "--trials", Trials, "--participant", "P3", "--condition", "pseudo-haptic", "--interval", "basic", "--out", output), "tune", new[] { "--interval", "'basic'" }, output);
         var (help, _, text) = Run("tune", "--help");
         Assert.That(help, Is.EqualTo(0));
-        Assert.That(text, Does.Contain("--trials").And.Contain("--participant").And.Contain("--condition").And.Contain("--masses").And.Contain("--out").And.Contain("--confidence"));
+        Assert.That(text, Does.Contain("--trials").And.Contain("--participant").And.Contain("--condition").And.Contain("--masses").And.Contain("--out").And.Contain("--confidence").And.Contain("--interval"));
     }
 
     [TestCase("{\"participant\": \"P\"}", "field cueStrength is missing")]

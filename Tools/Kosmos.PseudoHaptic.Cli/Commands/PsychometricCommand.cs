@@ -7,7 +7,7 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli;
 
 /// <summary>
-/// <c>pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S] [--without-catch] [--svg]</c> (issue 11; --without-catch added in the twentieth session, --svg in the twenty-second, as issue 13 asks of every chart):
+/// <c>pseudohaptic psychometric --trials T.csv --out DIR [--lapse L] [--bootstrap N] [--seed S] [--interval bca|percentile] [--without-catch] [--svg]</c> (issue 11; --without-catch added in the twentieth session, --svg in the twenty-second, as issue 13 asks of every chart, --interval in the twenty-fifth):
 /// the maximum-likelihood fit of a cumulative Gaussian to 2AFC answers per participant × condition × standard
 /// (<see cref="PsychometricFit"/>), PSE, JND, Weber fraction, 95 % bootstrap intervals and deviance.
 /// Writes DIR/fits.csv, DIR/report.md, a chart per participant × condition and DIR/summary.png (with --svg, an SVG beside each). Malformed
@@ -33,6 +33,7 @@ public static class PsychometricCommand
         CliCommand.Value("--lapse", "L", "a fixed guess and lapse rate gamma = lambda, in [0, 0.5) (default 0)"),
         CliCommand.Value("--bootstrap", "N", $"parametric bootstrap resamples for the 95 % intervals, 0–{MaxResamples} (default {DefaultResamples})"),
         CliCommand.Value("--seed", "S", $"the bootstrap's seed, a whole number (default {DefaultSeed})"),
+        CliCommand.Value("--interval", "KIND", "bca: bias-corrected and accelerated percentiles (default; Efron 1987, as Wichmann and Hill 2001b recommend); percentile: plain percentiles, the only kind up to version 0.4.0"),
         CliCommand.Flag("--without-catch", "leave out the rows whose catch column is 1 (attention checks, not levels of the function; one missed catch trial can double a JND without --lapse)"),
         CliCommand.Flag("--svg", "write an SVG beside each PNG"));
 
@@ -45,6 +46,7 @@ public static class PsychometricCommand
         double lapse = Lapse(o.Get("--lapse"));
         int resamples = Resamples(o.Get("--bootstrap"));
         long seed = Seed(o.Get("--seed"));
+        var interval = Interval(o.Get("--interval"));
         var inputs = new[] { new NamedPath("--trials", trialsPath) };
         OutputFolder.Check("--out", outDir, Owns, createParents: false, inputs);
 
@@ -52,7 +54,7 @@ public static class PsychometricCommand
         bool withoutCatch = o.Flag("--without-catch"), svg = o.Flag("--svg");
         var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters, withoutCatch, out int catchLeftOut);
         var progress = Progress.Writer;
-        var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed, (done, all) => progress.Write($"\rpsychometric: fit and bootstrap {done}/{all}{(done == all ? "\n" : "")}"));
+        var rows = PsychometricAnalysis.Fit(answers, lapse, resamples, seed, interval, (done, all) => progress.Write($"\rpsychometric: fit and bootstrap {done}/{all}{(done == all ? "\n" : "")}"));
         var files = new List<(string Name, byte[] Bytes)>();
         var utf8 = new UTF8Encoding(false);
         files.Add(("fits.csv", utf8.GetBytes(FitsCsv(rows))));
@@ -66,7 +68,7 @@ public static class PsychometricCommand
         }
         if (rows.Count > 0) files.Add(("summary.png", StudyCharts.PsychometricSummary(rows).Png()));
         if (rows.Count > 0 && svg) files.Add(("summary.svg", utf8.GetBytes(StudyCharts.PsychometricSummary(rows).Svg())));
-        files.Add(("report.md", utf8.GetBytes(Report(trialsPath, answers.Count, withoutCatch ? catchLeftOut : -1, rows, lapse, resamples, seed, charts, rows.Count > 0))));
+        files.Add(("report.md", utf8.GetBytes(Report(trialsPath, answers.Count, withoutCatch ? catchLeftOut : -1, rows, lapse, resamples, seed, interval, charts, rows.Count > 0))));
 
         OutputFolder.Begin("--out", outDir, Owns, createParents: false, inputs).Build(temp =>
         {
@@ -105,6 +107,22 @@ public static class PsychometricCommand
         if (n < 0 || n > MaxResamples) throw new CliException($"option --bootstrap: {n} is outside 0 … {MaxResamples}");
         return n;
     }
+
+    /// <summary>--interval: bca (the default) or percentile.</summary>
+    public static BootstrapInterval Interval(string? text)
+    {
+        switch (text?.Trim())
+        {
+            case null: case "bca": return BootstrapInterval.Bca;
+            case "percentile": return BootstrapInterval.Percentile;
+            default: throw new CliException($"option --interval: '{Messages.OneLine(text)}' is neither bca nor percentile");
+        }
+    }
+
+    /// <summary>How report.md names the intervals' kind.</summary>
+    public static string IntervalText(BootstrapInterval interval) => interval == BootstrapInterval.Bca
+        ? "bias-corrected and accelerated percentiles, BCa (Efron 1987): the percentiles moved by the share of refits below the fit and by the skew of the jackknife over trials"
+        : "percentiles 2.5 and 97.5 (--interval percentile)";
 
     static long Seed(string? text)
     {
@@ -161,7 +179,7 @@ public static class PsychometricCommand
     }
 
     /// <param name="catchLeftOut">Catch trials left out (--without-catch), or −1 when catch trials are fitted like the rest.</param>
-    static string Report(string trialsPath, int trials, int catchLeftOut, IReadOnlyList<PsychometricRow> rows, double lapse, int resamples, long seed, List<(string File, string Participant, string Condition)> charts, bool summary)
+    static string Report(string trialsPath, int trials, int catchLeftOut, IReadOnlyList<PsychometricRow> rows, double lapse, int resamples, long seed, BootstrapInterval interval, List<(string File, string Participant, string Condition)> charts, bool summary)
     {
         var md = new StringBuilder();
         md.Append("# Psychometric fits\n\n");
@@ -170,7 +188,7 @@ public static class PsychometricCommand
         md.Append($"γ = λ = {NumberText.Format(lapse)}{(lapse == 0 ? " (no lapses)" : " (fixed, --lapse)")}. PSE = μ; JND = σ·Φ⁻¹(0.75) ≈ 0.6745·σ; Weber fraction = JND / standard; ");
         md.Append("deviance = the binomial deviance over the comparison levels against the saturated model. ");
         md.Append(resamples > 0
-            ? $"95 % intervals of PSE and JND: parametric bootstrap, {resamples} resamples, seed {seed.ToString(CultureInfo.InvariantCulture)} (percentiles 2.5 and 97.5, resamples that cannot be fitted left out).\n\n"
+            ? $"95 % intervals of PSE and JND: parametric bootstrap, {resamples} resamples, seed {seed.ToString(CultureInfo.InvariantCulture)} ({IntervalText(interval)}; resamples that cannot be fitted left out).\n\n"
             : "No bootstrap (--bootstrap 0): no intervals.\n\n");
         md.Append("| participant | condition | standard | n | PSE | 95 % CI | JND | 95 % CI | Weber | σ | deviance | estimable |\n");
         md.Append("|---|---|---:|---:|---:|---|---:|---|---:|---:|---:|---|\n");

@@ -5,8 +5,8 @@ using Kosmos.PseudoHaptic.Evaluation;
 namespace Kosmos.PseudoHaptic.Cli.Commands;
 
 /// <summary>
-/// <c>pseudohaptic tune --trials T.csv --participant P --out USER.json [--condition C] [--masses LIST] [--confidence C]</c>
-/// (issue 31): fits this participant's psychometric function on the cue each comparison renders at s = 1 (the existing
+/// <c>pseudohaptic tune --trials T.csv --participant P --out USER.json [--condition C] [--masses LIST] [--confidence C] [--interval bca|percentile]</c>
+/// (issue 31; --interval added in the twenty-fifth session): fits this participant's psychometric function on the cue each comparison renders at s = 1 (the existing
 /// maximum-likelihood fit, no lapse, on <see cref="CueStrengthTuning.CueDifference"/>), and writes the smallest cue
 /// strength at which the scene's adjacent masses are at least the JND's upper confidence bound apart for this person
 /// (<see cref="CueStrengthTuning"/>; ALGORITHM.md §12, evaluation.md §9).
@@ -26,7 +26,8 @@ public static class TuneCommand
         CliCommand.Value("--out", "USER.json", "where the user's file goes: participant, cueStrength, weber, the fit and the model; replaced whole or not at all", required: true),
         CliCommand.Value("--condition", "C", "the condition to fit (default: the participant's only one; required when they have several)"),
         CliCommand.Value("--masses", "LIST", $"the scene's masses, kg, comma-separated (default Experiment 1's boxes {string.Join(",", CueStrengthTuning.ExperimentOneBoxes)})"),
-        CliCommand.Value("--confidence", "C", "one-sided confidence that the tuned strength puts the adjacent masses at least one JND apart for this person: s is tuned on the upper C bound of the fitted JND (1000 seeded bootstrap refits); in [0.5, 0.999], 0.5 = the fitted JND itself (default 0.95)"));
+        CliCommand.Value("--confidence", "C", "one-sided confidence that the tuned strength puts the adjacent masses at least one JND apart for this person: s is tuned on the upper C bound of the fitted JND (1000 seeded bootstrap refits); in [0.5, 0.999], 0.5 = the fitted JND itself (default 0.95)"),
+        CliCommand.Value("--interval", "KIND", "how the bootstrap makes that bound, as psychometric's --interval: bca (default) or percentile (the only kind up to version 0.4.0)"));
 
     public static int Run(string[] args) => Cli.Run(args.Prepend("tune").ToArray());
 
@@ -36,7 +37,7 @@ public static class TuneCommand
     /// Errors are <see cref="CliException"/>s naming the option or <paramref name="file"/>.
     /// </summary>
     /// <summary>The one-sided confidence with which the tuned strength puts the adjacent masses one JND apart: the strength is
-    /// tuned on the upper <see cref="Confidence"/> bound of the fitted JND (the parametric bootstrap's percentile), so that a
+    /// tuned on the upper <see cref="Confidence"/> bound of the fitted JND (the parametric bootstrap's, BCa by default), so that a
     /// JND the finite trials underestimate does not leave the person below 75 % correct.</summary>
     public const double Confidence = 0.95;
 
@@ -48,7 +49,8 @@ public static class TuneCommand
     /// the standard it means there; the tuning, on the upper <paramref name="confidence"/> bound of Δc*; the trials; the
     /// condition.</returns>
     public static (double Standard, PsychometricFit Fit, double FittedJndKg, CueStrengthTuning Tuning, int Trials, string Condition) Tune(
-        IReadOnlyList<TrialAnswer> answers, string participant, string? condition, double[] masses, string file, double confidence = Confidence)
+        IReadOnlyList<TrialAnswer> answers, string participant, string? condition, double[] masses, string file, double confidence = Confidence,
+        BootstrapInterval interval = BootstrapInterval.Bca)
     {
         var mine = answers.Where(a => a.Participant == participant).ToList();
         if (mine.Count == 0)
@@ -83,13 +85,14 @@ public static class TuneCommand
         var fit = PsychometricFit.Fit(trials.Select(a => cueOf[a.Comparison]).ToList(), trials.Select(a => a.Response).ToList());
         if (!fit.Estimable)
             throw new CliException($"{file}: {Messages.OneLine(participant)}{(condition.Length > 0 ? " " + Messages.OneLine(condition) : "")} standard {NumberText.Format(standard)}: the psychometric fit is not estimable ({fit.Reason}); no cue strength can be derived");
-        // The JND's upper one-sided bound at the confidence (the percentile of 1000 seeded parametric-bootstrap refits, as
-        // psychometric's intervals): the strength that puts the adjacent masses that far apart reaches 75 % for this person
+        // The JND's upper one-sided bound at the confidence (from 1000 seeded parametric-bootstrap refits, BCa by default, as
+        // psychometric's intervals; the plain percentile's bound is too low about twice as often with 84 trials,
+        // evaluation.md §8.3): the strength that puts the adjacent masses that far apart reaches 75 % for this person
         // unless the finite trials overestimated their sensitivity beyond that confidence. 0.5: the fitted JND itself.
         double upper = fit.Jnd;
         if (confidence > 0.5)
         {
-            var boot = PsychometricBootstrap.Run(fit, Resamples, BootstrapSeed, 1 - 2 * (1 - confidence));
+            var boot = PsychometricBootstrap.Run(fit, Resamples, BootstrapSeed, 1 - 2 * (1 - confidence), interval);
             if (!boot.HasIntervals)
                 throw new CliException($"{file}: {Messages.OneLine(participant)}{(condition.Length > 0 ? " " + Messages.OneLine(condition) : "")} standard {NumberText.Format(standard)}: the JND's bootstrap found no refittable resample; no cue strength can be derived");
             upper = Math.Max(fit.Jnd, boot.JndHigh);
@@ -107,11 +110,12 @@ public static class TuneCommand
         string? condition = o.Get("--condition");
         double[] masses = UserFile.Masses(o.Get("--masses"));
         double confidence = ConfidenceOption(o.Get("--confidence"));
+        var interval = PsychometricCommand.Interval(o.Get("--interval"));
         var target = OutputFile.Check("--out", output, new NamedPath("--trials", trialsPath));
 
         // Catch trials are attention checks, not levels of the person's function: one missed would raise their cue strength.
         var answers = TrialsCsv.Read(EvaluationInputs.OpenText("--trials", trialsPath), EvaluationInputs.Name(trialsPath), EvaluationInputs.MaxRows, EvaluationInputs.MaxCharacters, leaveOutCatch: true, out _);
-        var (standard, fit, fittedJndKg, tuning, trials, chosen) = Tune(answers, participant, condition, masses, Messages.OneLine(trialsPath), confidence);
+        var (standard, fit, fittedJndKg, tuning, trials, chosen) = Tune(answers, participant, condition, masses, Messages.OneLine(trialsPath), confidence, interval);
         condition = chosen;
         double weber = fittedJndKg / standard;
         target.Write(w => w.Write(UserFile.Format(participant, condition, standard, fittedJndKg, weber, tuning, trials, fit.Jnd, confidence)));

@@ -17,6 +17,11 @@ namespace Kosmos.PseudoHaptic.Evaluation
 
         /// <param name="progress">Called after each group's fit and bootstrap with (groups done, groups), for long runs.</param>
         public static IReadOnlyList<PsychometricRow> Fit(IReadOnlyList<TrialAnswer> answers, double lapse, int resamples, long seed, Action<int, int> progress)
+            => Fit(answers, lapse, resamples, seed, BootstrapInterval.Bca, progress);
+
+        /// <param name="interval">How the bootstrap's intervals are made (BCa by default).</param>
+        /// <param name="progress">Called after each group's fit and bootstrap with (groups done, groups), for long runs.</param>
+        public static IReadOnlyList<PsychometricRow> Fit(IReadOnlyList<TrialAnswer> answers, double lapse, int resamples, long seed, BootstrapInterval interval, Action<int, int> progress)
         {
             if (answers == null) throw new ArgumentNullException(nameof(answers));
             var conditionOrder = new Dictionary<string, int>(StringComparer.Ordinal);
@@ -51,7 +56,7 @@ namespace Kosmos.PseudoHaptic.Evaluation
                 for (int i = 0; i < list.Count; i++) { x[i] = list[i].Comparison; y[i] = list[i].Response; }
                 var fit = PsychometricFit.Fit(x, y, lapse);
                 long groupSeed = unchecked((long)seeds.NextUInt64());
-                var boot = PsychometricBootstrap.Run(fit, resamples, groupSeed);
+                var boot = PsychometricBootstrap.Run(fit, resamples, groupSeed, 0.95, interval);
                 rows.Add(new PsychometricRow(k.Participant, k.Condition, k.Standard, fit, boot));
                 progress?.Invoke(rows.Count, keys.Count);
             }

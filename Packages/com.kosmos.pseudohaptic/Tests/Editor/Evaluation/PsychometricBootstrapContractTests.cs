@@ -71,8 +71,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                     pses.Sort();
                     jnds.Sort();
                     double a = (1 - confidence) / 2;
-                    var boot = PsychometricBootstrap.Run(fit, resamples, seed * 7, confidence);
+                    var boot = PsychometricBootstrap.Run(fit, resamples, seed * 7, confidence, BootstrapInterval.Percentile);
                     string at = "seed " + seed + ", confidence " + confidence;
+                    Assert.That(boot.Interval, Is.EqualTo(BootstrapInterval.Percentile), at);
                     Assert.That(boot.Resamples, Is.EqualTo(resamples), at);
                     Assert.That(boot.Failed, Is.EqualTo(resamples - pses.Count), at);
                     failures += boot.Failed;
@@ -85,6 +86,118 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 }
             }
             Assert.That(failures, Is.GreaterThan(0), "some resamples of 21 answers could not be fitted");
+        }
+
+        /// <summary>
+        /// The BCa interval rebuilt from its description (Efron and Tibshirani 1993, §14.3) on the same refits: the bias
+        /// correction z₀ = Φ⁻¹(share of refits below the fit), the acceleration a from the jackknife, here made the long way
+        /// (the fit again without each of the trials, one by one, from the raw answers: the code groups the trials that are
+        /// alike), and each end the percentile at Φ(z₀ + (z₀ + z)/(1 − a(z₀ + z))). Seeds 1–3 with twelve answers a level,
+        /// 11–13 with three from a noisier observer, and fifteen answers of which two cannot be left out (the rest would be
+        /// separated by the answer: both leave those out).
+        /// </summary>
+        [Test]
+        public void TheBcaIntervalsAreThoseRefitsPercentilesMovedByTheBiasAndTheJackknifesAcceleration()
+        {
+            var cases = new List<(string Name, double[] X, int[] Y)>();
+            foreach (long seed in new long[] { 1, 2, 3, 11, 12, 13 })
+            {
+                var trials = new ConstantStimuliPlan { Standard = 1, Seed = seed, Repetitions = seed > 10 ? 3 : 12 }.Build("P1");
+                new SimulatedObserver(1.03, seed > 10 ? 0.3 : 0.1, seed + 100).AnswerAll(trials);
+                cases.Add(("seed " + seed, trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray()));
+            }
+            double[] five = { 0.8, 0.9, 1.0, 1.1, 1.2 };
+            cases.Add(("fifteen answers", five.SelectMany(l => new[] { l, l, l }).ToArray(), new[] { 0, 0, 0, 0, 0, 1, 0, 1, 1, 1, 1, 1, 1, 1, 1 }));
+            int leftOut = 0;
+            foreach (var (name, x, y) in cases)
+            {
+                var fit = PsychometricFit.Fit(x, y);
+                Assert.That(fit.Estimable, Is.True, name);
+                const int resamples = 200;
+                var rng = new SeededRandom(7);
+                var pses = new List<double>();
+                var jnds = new List<double>();
+                for (int r = 0; r < resamples; r++)
+                {
+                    var drawn = fit.Levels.Select(l => new StimulusLevel(l.Level, l.Trials, rng.NextBinomial(l.Trials, fit.Psi(l.Level)))).ToArray();
+                    var refit = PsychometricFit.Fit(drawn, fit.Lapse);
+                    if (!refit.Estimable) continue;
+                    pses.Add(refit.Pse);
+                    jnds.Add(refit.Jnd);
+                }
+                pses.Sort();
+                jnds.Sort();
+                var jackPse = new List<double>();
+                var jackJnd = new List<double>();
+                for (int i = 0; i < x.Length; i++)
+                {
+                    var without = PsychometricFit.Fit(x.Where((_, k) => k != i).ToArray(), y.Where((_, k) => k != i).ToArray());
+                    if (!without.Estimable) { leftOut++; continue; }
+                    jackPse.Add(without.Pse);
+                    jackJnd.Add(without.Jnd);
+                }
+                foreach (double confidence in new[] { 0.95, 0.8 })
+                {
+                    var boot = PsychometricBootstrap.Run(fit, resamples, 7, confidence, BootstrapInterval.Bca);
+                    string at = name + ", confidence " + confidence;
+                    Assert.That(boot.Interval, Is.EqualTo(BootstrapInterval.Bca), at);
+                    Assert.That(boot.Failed, Is.EqualTo(resamples - pses.Count), at);
+                    double[] pse = Ends(pses, fit.Pse, jackPse, confidence), jnd = Ends(jnds, fit.Jnd, jackJnd, confidence);
+                    Assert.That(boot.PseLow, Is.EqualTo(pse[0]).Within(1e-9), at);
+                    Assert.That(boot.PseHigh, Is.EqualTo(pse[1]).Within(1e-9), at);
+                    Assert.That(boot.JndLow, Is.EqualTo(jnd[0]).Within(1e-9), at);
+                    Assert.That(boot.JndHigh, Is.EqualTo(jnd[1]).Within(1e-9), at);
+                }
+            }
+            Assert.That(leftOut, Is.EqualTo(2), "the fifteen answers' two trials that cannot be left out, and no other");
+        }
+
+        /// <summary>The BCa ends from their textbook formulas.</summary>
+        static double[] Ends(List<double> sorted, double estimate, List<double> jackknife, double confidence)
+        {
+            double below = sorted.Count(v => v < estimate) + 0.5 * sorted.Count(v => v == estimate);
+            double share = Math.Min(Math.Max(below / sorted.Count, 0.5 / sorted.Count), 1 - 0.5 / sorted.Count);
+            double z0 = Normal.Quantile(share);
+            double mean = jackknife.Average();
+            double a = jackknife.Sum(v => Math.Pow(mean - v, 3)) / (6 * Math.Pow(jackknife.Sum(v => Math.Pow(mean - v, 2)), 1.5));
+            return new[] { -1.0, 1.0 }.Select(side =>
+            {
+                double w = z0 + side * Normal.Quantile(1 - (1 - confidence) / 2);
+                return PsychometricBootstrap.Percentile(sorted, Normal.Cdf(z0 + w / (1 - a * w)));
+            }).ToArray();
+        }
+
+        // Φ(z₀ + (z₀ + z)/(1 − a(z₀ + z))) computed with mpmath at 40 digits; z = ∓Φ⁻¹(0.975).
+        [TestCase(0.0, 0.0, -1.9599639845400543, 0.025)]
+        [TestCase(0.0, 0.0, 1.9599639845400543, 0.975)]
+        [TestCase(0.3, 0.0, -1.9599639845400543, 0.086920660625246215)]
+        [TestCase(0.3, 0.0, 1.9599639845400543, 0.99476584943243136)]
+        [TestCase(0.25, 0.05, -1.9599639845400543, 0.092539091736906026)]
+        [TestCase(0.25, 0.05, 1.9599639845400543, 0.99687621067518305)]
+        [TestCase(-0.4, -0.1, -1.9599639845400543, 0.00024246678794579582)]
+        [TestCase(-0.4, -0.1, 1.9599639845400543, 0.82880512601436196)]
+        public void TheBcaLevelIsItsFormula(double z0, double a, double z, double expected)
+            => Assert.That(PsychometricBootstrap.BcaLevel(z0, a, z), Is.EqualTo(expected).Within(1e-13));
+
+        [Test]
+        public void ABcaLevelPastItsPoleIsTheExtremeRefit()
+        {
+            // 1 − a(z₀ + z) ≤ 0: the formula has run off its end (on its way there the level tends to 1 for a > 0, to 0 for a < 0).
+            Assert.That(PsychometricBootstrap.BcaLevel(0, 0.6, 1.96), Is.EqualTo(1));
+            Assert.That(PsychometricBootstrap.BcaLevel(0, -0.6, -1.96), Is.EqualTo(0));
+            Assert.That(PsychometricBootstrap.BcaLevel(0.5, 0.5, 1.5), Is.EqualTo(1), "exactly at the pole");
+            Assert.That(PsychometricBootstrap.BcaLevel(0, 0.5, 1.9), Is.GreaterThan(0.9999), "just before it");
+        }
+
+        // Φ⁻¹ of the share below (ties half), mpmath at 40 digits; the share kept within half a value of 0 and 1.
+        [TestCase(7.5, 0.52440051270804078)]   // 7 of 10 below
+        [TestCase(4.0, -0.38532046640756762)]  // 3 below, one tie: 3.5 of 10
+        [TestCase(0.0, -1.6448536269514727)]   // none below: 0.5 of 10
+        [TestCase(11.0, 1.6448536269514727)]   // all below: 9.5 of 10
+        public void TheBiasCorrectionIsTheNormalQuantileOfTheShareBelow(double estimate, double expected)
+        {
+            var sorted = Enumerable.Range(1, 10).Select(i => (double)i).ToArray();
+            Assert.That(PsychometricBootstrap.BiasCorrection(sorted, estimate), Is.EqualTo(expected).Within(1e-13));
         }
 
         [Test]
@@ -141,6 +254,10 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 Assert.That(e.ParamName, Is.EqualTo("confidence"), "confidence " + c);
                 Assert.That(e.Message, Does.StartWith("must be in (0, 1)"), "confidence " + c);
             }
+            var kind = Assert.Throws<ArgumentOutOfRangeException>(() => PsychometricBootstrap.Run(fit, 10, 1, 0.95, (BootstrapInterval)7));
+            Assert.That(kind.ParamName, Is.EqualTo("interval"));
+            Assert.That(kind.Message, Does.StartWith("must be Bca or Percentile"));
+            Assert.That(PsychometricBootstrap.Run(fit, 10, 1).Interval, Is.EqualTo(BootstrapInterval.Bca), "the default");
         }
 
         [TestCase(7, 12, 0.95, 0.3195113125495498, 0.8067396863412434)]

@@ -208,7 +208,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
 
         /// <summary>
         /// Issue 11 item 5: over 200 seeded simulated participants (7 levels × 12 repetitions, as Samad et al.),
-        /// the 95 % bootstrap interval of the PSE contains the true PSE for 92–98 % of them.
+        /// the 95 % bootstrap interval of the PSE contains the true PSE for 92–98 % of them. Measured then, and here, on the
+        /// percentile interval; the BCa interval, the default since, covers the PSE as often
+        /// (<see cref="TheBcaIntervalCoversThePseAsOftenAndTheJndMoreOftenThanThePercentileInterval"/>).
         /// </summary>
         [Test]
         public void BootstrapIntervalCoversTheTruePseFor92To98PercentOf200Participants()
@@ -225,7 +227,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 var fit = PsychometricFit.Fit(trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray());
                 if (!fit.Estimable) continue; // counted as not covering
                 estimable++;
-                var boot = PsychometricBootstrap.Run(fit, 1000, 5000 + p);
+                var boot = PsychometricBootstrap.Run(fit, 1000, 5000 + p, 0.95, BootstrapInterval.Percentile);
                 if (boot.PseLow <= pse && pse <= boot.PseHigh) covered++;
             }
             Assert.That(estimable, Is.GreaterThanOrEqualTo(195));
@@ -239,7 +241,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         {
             // The same population as above. With 12 repetitions per level (84 trials) the maximum-likelihood σ is too small
             // (the slope too steep: Wichmann and Hill 2001a), and the percentile interval carries that bias with it: the true
-            // JND lies above the interval for most misses. Leaving the unfittable resamples out is not the cause: they are
+            // JND lies above the interval for most misses (what the BCa interval, the default since, corrects: below). Leaving the unfittable resamples out is not the cause: they are
             // separations, σ → 0, and counting them as JND 0 could only lower the interval's ends. With 24 repetitions the
             // coverage nears the nominal 95 %. evaluation.md §8.3 quotes the numbers printed here.
             foreach (int repetitions in new[] { 12, 24 })
@@ -257,7 +259,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                     var fit = PsychometricFit.Fit(trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray());
                     if (!fit.Estimable) continue; // counted as not covering
                     estimable++;
-                    var boot = PsychometricBootstrap.Run(fit, 1000, 5000 + p);
+                    var boot = PsychometricBootstrap.Run(fit, 1000, 5000 + p, 0.95, BootstrapInterval.Percentile);
                     failed += boot.Failed;
                     if (jnd > boot.JndHigh) above++;
                     else if (jnd < boot.JndLow) below++;
@@ -271,6 +273,83 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 }
                 else Assert.That(covered, Is.InRange(184, 194), "92 to 97 %");
             }
+        }
+
+        /// <summary>The test population above: participant <paramref name="p"/> of <paramref name="population"/>'s draws, with the
+        /// fit of their answers (null when it cannot be fitted) and their true PSE and JND.</summary>
+        static PsychometricFit Participant(SeededRandom population, int p, int repetitions, out double pse, out double jnd)
+        {
+            pse = 1.0 + 0.05 * population.NextGaussian();
+            double sigma = 0.08 + 0.06 * population.NextDouble();
+            jnd = sigma * Normal.Quantile(0.75);
+            var trials = new ConstantStimuliPlan { Standard = 1, Seed = p, Repetitions = repetitions }.Build("P" + p);
+            new SimulatedObserver(pse, sigma, 1000 + p).AnswerAll(trials);
+            var fit = PsychometricFit.Fit(trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray());
+            return fit.Estimable ? fit : null;
+        }
+
+        /// <summary>How often each interval holds the truth over a population: [method, PSE or JND, covered / truth above / below].</summary>
+        static int[,,] Coverage(long populationSeed, int participants, int repetitions)
+        {
+            var counts = new int[2, 2, 3];
+            var population = new SeededRandom(populationSeed);
+            for (int p = 0; p < participants; p++)
+            {
+                var fit = Participant(population, p, repetitions, out double pse, out double jnd);
+                if (fit == null) continue; // counted as not covering
+                var methods = new[] { BootstrapInterval.Percentile, BootstrapInterval.Bca };
+                for (int m = 0; m < 2; m++)
+                {
+                    var boot = PsychometricBootstrap.Run(fit, 1000, 5000 + p, 0.95, methods[m]);
+                    counts[m, 0, pse > boot.PseHigh ? 1 : pse < boot.PseLow ? 2 : 0]++;
+                    counts[m, 1, jnd > boot.JndHigh ? 1 : jnd < boot.JndLow ? 2 : 0]++;
+                }
+            }
+            return counts;
+        }
+
+        static string Describe(int[,,] c, int participants, int repetitions)
+        {
+            var text = new System.Text.StringBuilder();
+            string[] methods = { "percentile", "BCa" }, what = { "PSE", "JND" };
+            for (int m = 0; m < 2; m++)
+                for (int q = 0; q < 2; q++)
+                    text.Append($"{repetitions} repetitions, {methods[m]}: {what[q]} covered {c[m, q, 0]} of {participants} ({100.0 * c[m, q, 0] / participants:F1} %), true {what[q]} above {c[m, q, 1]}, below {c[m, q, 2]}\n");
+            return text.ToString();
+        }
+
+        /// <summary>
+        /// The BCa interval (Efron 1987), the default: on the population above (7 levels × 12 repetitions), it holds the
+        /// true PSE as often as the percentile interval (within three participants of 200: the PSE's fit has next to no bias
+        /// for it to correct), and the true JND far more often, its misses no longer nearly all on one side. Measured: PSE
+        /// 183 and 185 of 200, JND 185 against 174, the true JND above the interval for 12 against 24 (printed). A BCa
+        /// level with the bias correction's sign turned, or without it, covers the JND less often than this asks.
+        /// </summary>
+        [Test]
+        public void TheBcaIntervalCoversThePseAsOftenAndTheJndMoreOftenThanThePercentileInterval()
+        {
+            var c = Coverage(2024, 200, 12);
+            TestContext.WriteLine(Describe(c, 200, 12));
+            Assert.That(Math.Abs(c[1, 0, 0] - c[0, 0, 0]), Is.LessThanOrEqualTo(3), "the PSE: as often");
+            Assert.That(c[1, 1, 0], Is.GreaterThanOrEqualTo(c[0, 1, 0] + 8), "the JND: more often");
+            Assert.That(c[1, 1, 0], Is.InRange(180, 194), "the JND: 90 to 97 %");
+            Assert.That(c[1, 1, 1], Is.LessThanOrEqualTo(16), "the true JND above the interval: at most 8 %");
+        }
+
+        /// <summary>evaluation.md §8.3's coverage over two populations of 1000 participants each, both intervals, 12 and 24
+        /// repetitions a level (about 90 s): <c>dotnet test Tests/Kosmos.PseudoHaptic.Tests -c Release --filter
+        /// Name~CoverageOverTwoThousandParticipants --logger "console;verbosity=detailed"</c>.</summary>
+        [Test, Explicit("about 90 s; prints evaluation.md's coverage figures")]
+        public void CoverageOverTwoThousandParticipants()
+        {
+            foreach (long seed in new long[] { 77, 4242 })
+                foreach (int repetitions in new[] { 12, 24 })
+                {
+                    var c = Coverage(seed, 1000, repetitions);
+                    TestContext.WriteLine($"population seed {seed}:\n" + Describe(c, 1000, repetitions));
+                    Assert.That(Math.Abs(c[1, 0, 0] - c[0, 0, 0]), Is.LessThanOrEqualTo(10), "the PSE: as often");
+                    Assert.That(c[1, 1, 0], Is.GreaterThan(c[0, 1, 0]), "the JND: more often");
+                }
         }
 
         [Test]
