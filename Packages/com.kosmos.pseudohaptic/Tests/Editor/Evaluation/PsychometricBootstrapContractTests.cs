@@ -45,6 +45,25 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
             return PsychometricFit.Fit(trials.Select(t => t.Comparison).ToArray(), trials.Select(t => t.Response).ToArray());
         }
 
+        /// <summary>The bootstrap rebuilt from its description: <paramref name="resamples"/> draws of Binomial(n, Ψ̂(x)) answers at
+        /// every level, each fitted again (from the data, not from the fit), the PSEs and JNDs of those that can be, sorted.</summary>
+        static void Refits(PsychometricFit fit, int resamples, long seed, out List<double> pses, out List<double> jnds)
+        {
+            var rng = new SeededRandom(seed);
+            pses = new List<double>();
+            jnds = new List<double>();
+            for (int r = 0; r < resamples; r++)
+            {
+                var drawn = fit.Levels.Select(l => new StimulusLevel(l.Level, l.Trials, rng.NextBinomial(l.Trials, fit.Psi(l.Level)))).ToArray();
+                var refit = PsychometricFit.Fit(drawn, fit.Lapse);
+                if (!refit.Estimable) continue;
+                pses.Add(refit.Pse);
+                jnds.Add(refit.Jnd);
+            }
+            pses.Sort();
+            jnds.Sort();
+        }
+
         [Test]
         public void TheIntervalsAreThePercentilesOfRefitsOfBinomialDrawsFromTheFit()
         {
@@ -57,19 +76,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 foreach (double confidence in new[] { 0.95, 0.8 })
                 {
                     const int resamples = 200;
-                    var rng = new SeededRandom(seed * 7);
-                    var pses = new List<double>();
-                    var jnds = new List<double>();
-                    for (int r = 0; r < resamples; r++)
-                    {
-                        var drawn = fit.Levels.Select(l => new StimulusLevel(l.Level, l.Trials, rng.NextBinomial(l.Trials, fit.Psi(l.Level)))).ToArray();
-                        var refit = PsychometricFit.Fit(drawn, fit.Lapse);
-                        if (!refit.Estimable) continue;
-                        pses.Add(refit.Pse);
-                        jnds.Add(refit.Jnd);
-                    }
-                    pses.Sort();
-                    jnds.Sort();
+                    Refits(fit, resamples, seed * 7, out var pses, out var jnds);
                     double a = (1 - confidence) / 2;
                     var boot = PsychometricBootstrap.Run(fit, resamples, seed * 7, confidence, BootstrapInterval.Percentile);
                     string at = "seed " + seed + ", confidence " + confidence;
@@ -114,19 +121,7 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
                 var fit = PsychometricFit.Fit(x, y);
                 Assert.That(fit.Estimable, Is.True, name);
                 const int resamples = 200;
-                var rng = new SeededRandom(7);
-                var pses = new List<double>();
-                var jnds = new List<double>();
-                for (int r = 0; r < resamples; r++)
-                {
-                    var drawn = fit.Levels.Select(l => new StimulusLevel(l.Level, l.Trials, rng.NextBinomial(l.Trials, fit.Psi(l.Level)))).ToArray();
-                    var refit = PsychometricFit.Fit(drawn, fit.Lapse);
-                    if (!refit.Estimable) continue;
-                    pses.Add(refit.Pse);
-                    jnds.Add(refit.Jnd);
-                }
-                pses.Sort();
-                jnds.Sort();
+                Refits(fit, resamples, 7, out var pses, out var jnds);
                 var jackPse = new List<double>();
                 var jackJnd = new List<double>();
                 for (int i = 0; i < x.Length; i++)
