@@ -23,12 +23,12 @@ namespace Kosmos.PseudoHaptic
     /// <item>From the grab until the hand has shown it moved, the band is a plain backlash on the grab's pose: a push of at
     /// most half a width drags it, closing nothing, and a larger one closes it the more the larger it is. The weight reads that
     /// backlash moved toward what rule 2 gives (run alongside, fading over <see cref="GrabRestPoses"/>) by how far the hand has
-    /// shown it moved, 0 to 1, the largest yet of three ramps: the backlash dragged half a width to a width from the grab, the
-    /// band closed by a quarter to a half of its width, the steady hand's mean a quarter to a half of a width from its mean
-    /// over the first <see cref="EarlyPoses"/> steady poses. At 1 the rules above carry on. Jitter at rest moves none of them,
-    /// and an unlucky grab pose enters none (its distance from the mean is not motion), so it never turns into a drift toward
-    /// the mean; a slow lift of a few millimetres moves the mean, so it ends where the weight puts it; and nothing switches at
-    /// a threshold.</item>
+    /// shown it moved, 0 to 1, the larger yet of two ramps: the backlash dragged half a width to a width from the grab (a push
+    /// that closes the band drags it at least twice as far as it closes it), the steady hand's mean a quarter to a half of a
+    /// width from its mean over the first <see cref="EarlyPoses"/> steady poses. At 1 the rules above carry on. Jitter at rest
+    /// moves neither, and an unlucky grab pose enters neither (its distance from the mean is not motion), so it never turns
+    /// into a drift toward the mean; a slow lift of a few millimetres moves the mean, so it ends where the weight puts it;
+    /// and nothing switches at a threshold.</item>
     /// </list>
     /// Measured (30 Hz poses over 90 Hz frames, 5 cm lift in 0.4 s): a one-pose glitch of 3 cm at rest, a 0.3 s loss with a
     /// 4 cm snap, a 3 cm heft each leave 1 g and 10 g within 0.1 mm of the clean path in every pipeline profile
@@ -159,12 +159,14 @@ namespace Kosmos.PseudoHaptic
                     rest = RestStep(ref state, rest, frame.SteadyHand, perPose, h - e, h + e);
                     if (state.DeadbandRestCount > GrabRestPoses) state.DeadbandRestCount = GrabRestPoses;
                 }
-                // Whether the hand moved: the reference dragged half a width to a width from the grab's pose, the band closed
-                // by a quarter to a half of its width (only a push beyond half a width closes it here), or the steady hand's
-                // mean since the grab a quarter to a half of a width from its mean over the hold's first EarlyPoses steady
-                // poses (jitter moves that mean by its own noise only, and an unlucky grab pose is in neither: it is the
-                // rest rule's drift toward the mean from such a pose that the grab's rule keeps away). Each ramps from 0 to 1
-                // and the largest yet counts.
+                // Whether the hand moved: the reference dragged half a width to a width from the grab's pose, or the steady
+                // hand's mean since the grab a quarter to a half of a width from its mean over the hold's first EarlyPoses
+                // steady poses (jitter moves that mean by its own noise only, and an unlucky grab pose is in neither: it is
+                // the rest rule's drift toward the mean from such a pose that the grab's rule keeps away). Each ramps from 0
+                // to 1 and the larger yet counts. How far the band has closed is not read: a push closes it by at most what
+                // it drags the reference beyond the band, so while the hand goes one way the reference has been dragged at
+                // least twice what the band closed, and a ramp of the closing (a quarter to a half of a width) never led the
+                // dragged one; only a shake at the grab, out past the band and back past its other side, told them apart.
                 double a = state.DeadbandAnchor, mean = state.DeadbandGrabMean;
                 int k = state.DeadbandGrabCount;
                 if (frame.SteadyTaken)
@@ -176,7 +178,6 @@ namespace Kosmos.PseudoHaptic
                 }
                 double moved = state.DeadbandMoved;
                 moved = Math.Max(moved, Ramp(Math.Abs(r - a), 0.5 * w, w));
-                moved = Math.Max(moved, Ramp(w - e, 0.25 * w, 0.5 * w));
                 if (k >= EarlyPoses) moved = Math.Max(moved, Ramp(Math.Abs(mean - state.DeadbandEarlyMean), 0.25 * w, 0.5 * w));
                 state.DeadbandMoved = moved;
                 state.DeadbandGrabReference = r;
