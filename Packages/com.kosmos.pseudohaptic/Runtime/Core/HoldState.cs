@@ -75,7 +75,7 @@ namespace Kosmos.PseudoHaptic
         public double DeadbandReference;
 
         /// <summary><see cref="MotionDeadband"/>: the band's half-width now, m: closed by sustained motion, regrown at rest
-        /// (at most the width for the object's gain; +∞ at the grab: full width).</summary>
+        /// (at most the width for the object's gain; +∞ at the grab: full width; −∞ while the gain is at most 1: no band).</summary>
         public double DeadbandHalfWidth;
 
         /// <summary><see cref="MotionDeadband"/>: how many steady poses the reference averages at rest (capped; until the hand
@@ -101,8 +101,9 @@ namespace Kosmos.PseudoHaptic
         public double DeadbandGrabMean, DeadbandEarlyMean;
         public int DeadbandGrabCount;
 
-        /// <summary><see cref="MotionDeadband"/>: how far the hand has shown it moved since the grab, 0–1 (never decreasing): the
-        /// share of the way from the grab's backlash reference to the steady hand's mean.</summary>
+        /// <summary><see cref="MotionDeadband"/>: how far the hand has shown it moved since the grab, 0–1 (never decreasing, but
+        /// for 0 again when the gain rises above 1 during the hold with the hand within the band of the grab's pose): the share
+        /// of the way from the grab's backlash reference to the steady hand's mean.</summary>
         public double DeadbandMoved;
 
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>

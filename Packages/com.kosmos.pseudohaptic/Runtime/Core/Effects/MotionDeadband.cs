@@ -96,13 +96,23 @@ namespace Kosmos.PseudoHaptic
             }
             if (w <= 0)
             {
-                // Gain ≤ 1: nothing to suppress, nothing lost. Should the gain rise above 1 during the hold, the band starts
-                // closed at the hand, as at the end of a motion, and regrows.
+                // Gain ≤ 1: nothing to suppress, nothing lost; the reference is the hand. The half-width is negative while
+                // there is no band, so that a gain risen above 1 during the hold is told below.
                 state.DeadbandReference = h;
-                state.DeadbandHalfWidth = 0;
+                state.DeadbandHalfWidth = double.NegativeInfinity;
                 state.DeadbandRestCount = 1;
                 state.DeadbandMoved = 1;
                 return;
+            }
+            if (state.DeadbandHalfWidth < 0)
+            {
+                // The gain has risen above 1 during the hold. With the hand within the band's width of the grab's pose (at rest
+                // where it was grabbed, its poses jittering), the band starts as at the grab, a backlash on the grab's pose
+                // under the grab's rule: were it the rest rule's mean from here, the hand's mean's distance from the grab's
+                // pose (the jitter of that one pose) would turn into a drift of G times it, up to 14.7 mm
+                // (BecomingLightMidHoldTests). Else it starts closed at the hand, as at the end of a motion, and regrows.
+                if (Math.Abs(h - state.DeadbandAnchor) <= w) Reset(ref state, state.DeadbandAnchor);
+                else state.DeadbandHalfWidth = 0;
             }
             double r = state.DeadbandReference, e = state.DeadbandHalfWidth;
             // From the grab until the hand has shown it moved, the band's backlash runs on a reference of its own (the grab's

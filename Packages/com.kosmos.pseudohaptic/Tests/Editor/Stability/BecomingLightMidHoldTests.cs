@@ -1,0 +1,159 @@
+using System;
+using Kosmos.PseudoHaptic.Simulation;
+using NUnit.Framework;
+
+namespace Kosmos.PseudoHaptic.Tests.Stability
+{
+    /// <summary>
+    /// An object that becomes lighter than the standard during a hold: <see cref="WeightSolver.Configure"/> from a mass whose
+    /// gain is at most 1 (heavier than the standard golf ball, 45 g: no band, the object is the hand's) down to 1 g or 10 g,
+    /// where the motion deadband (<see cref="MotionDeadband"/>) opens. What a user expects: the object behaves as a light
+    /// object held from the grab does (jitter at rest moves it no more; a small lift ends where the weight puts it), and
+    /// nothing becomes NaN.
+    /// </summary>
+    public class BecomingLightMidHoldTests
+    {
+        /// <summary>The mass held until the change, kg: heavier than the standard, gain below 1 in every named profile.</summary>
+        const double HeavyMass = 0.1;
+
+        /// <summary>Replays <paramref name="frames"/> as <see cref="TraceReplay"/> does, the object held as
+        /// <paramref name="fromMass"/> until the first frame at or after <paramref name="changeAt"/> (s), then as
+        /// <paramref name="toMass"/> (the same profile and user).</summary>
+        internal static double[] Replay(double fromMass, double toMass, WeightProfile profile, TraceFrame[] frames, double changeAt)
+        {
+            var solver = Run.Solver(fromMass, profile);
+            var y = new double[frames.Length];
+            int first = TraceReplay.FirstUsable(frames);
+            solver.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
+            bool changed = false;
+            for (int i = 0; i < frames.Length; i++)
+            {
+                if (!changed && frames[i].Time >= changeAt - 1e-9)
+                {
+                    solver.Configure(WeightModel.FromMass(toMass), profile, solver.StandardSpeed);
+                    changed = true;
+                }
+                y[i] = i <= first ? solver.ObjectY : solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+            }
+            return y;
+        }
+
+        [Test]
+        public void TheHeavyMassHasNoBand([Values("paper", "paper-experiment", "gain", "xyz")] string p)
+        {
+            var solver = Run.Solver(HeavyMass, NamedProfiles.Get(p));
+            Assert.That(solver.Gain, Is.LessThanOrEqualTo(1));
+            Assert.That(solver.Constants.DeadbandWidth, Is.EqualTo(0));
+        }
+
+        /// <summary>
+        /// P4 after the change: the hand rests with 1.5 mm of jitter (30 Hz poses over 90 Hz frames), held as 100 g for 1 s,
+        /// then as 1 g or 10 g for 10 s more, over 200 seeds; the object's median over the last second is within 1 cm (P4's
+        /// bound) of its median over the half second before the change, as the same light object held from the grab ends
+        /// within 1 cm of where it was grabbed (printed beside: 4.82–7.22 mm). Measured 4.45–7.12 mm; with the band started
+        /// closed at the hand at the change (the rest rule's mean from there), 10.47–14.65 mm.
+        /// </summary>
+        [Test]
+        public void JitterAtRestAfterBecomingLightDoesNotCreep([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
+        {
+            double worst = 0, worstFromGrab = 0;
+            string worstCase = "";
+            for (int seed = 1; seed <= 200; seed++)
+            {
+                var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(HandPath.StartAt(1).Hold(11));
+                var y = Replay(HeavyMass, m, NamedProfiles.Get(p), frames, 1);
+                Assert.That(Run.AllFinite(y), Is.True, $"seed {seed}: finite");
+                double creep = QuestLikeInput.MedianOver(frames, i => y[i], 10, 11) - QuestLikeInput.MedianOver(frames, i => y[i], 0.5, 1);
+                if (Math.Abs(creep) > Math.Abs(worst)) { worst = creep; worstCase = $"seed {seed}"; }
+                var g = Run.Replay(Run.Solver(m, NamedProfiles.Get(p)), frames);
+                double fromGrab = QuestLikeInput.MedianOver(frames, i => g[i], 10, 11) - g[TraceReplay.FirstUsable(frames)];
+                worstFromGrab = Math.Max(worstFromGrab, Math.Abs(fromGrab));
+            }
+            TestContext.Progress.WriteLine($"{m * 1000} g, {p}: jitter at rest after becoming light moves the object at most {Math.Abs(worst) * 1000:F2} mm ({worstCase}); held light from the grab, {worstFromGrab * 1000:F2} mm");
+            Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
+        }
+
+        /// <summary>
+        /// A slow small lift after the change is a lift: held as 100 g for 0.5 s at rest, then as 1 g or 10 g, the hand rises
+        /// 5–20 mm in 0.5–2 s (at once or after 0.3 s) and rests 3 s; the object ends where the weight without a band puts
+        /// it (the same poses and the same change, the profile without <see cref="MotionDeadband"/>), within P1's millimetre
+        /// (measured 0.54–0.59 mm, as from the grab; with the band started closed at the hand at the change, up to 1.02 mm).
+        /// </summary>
+        [Test]
+        public void ASlowSmallLiftAfterBecomingLightEndsWhereTheWeightPutsIt([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
+        {
+            double worst = 0;
+            string worstCase = "";
+            var noBand = NamedProfiles.Get(p).Without<MotionDeadband>(p + "-without-band");
+            foreach (double rest in new[] { 0, 0.3 })
+                foreach (double seconds in new[] { 0.5, 1, 2 })
+                    foreach (double lift in new[] { 0.005, 0.008, 0.012, 0.016, 0.02 })
+                    {
+                        var path = HandPath.StartAt(1).Hold(0.5 + rest).MoveTo(1 + lift, seconds).Hold(3);
+                        var frames = Run.Headset().Render(path);
+                        var y = Replay(HeavyMass, m, NamedProfiles.Get(p), frames, 0.5);
+                        Assert.That(Run.AllFinite(y), Is.True);
+                        double d = Run.Last(y) - Run.Last(Replay(HeavyMass, m, noBand, frames, 0.5));
+                        if (Math.Abs(d) > Math.Abs(worst)) { worst = d; worstCase = $"{lift * 1000} mm in {seconds} s after {rest} s"; }
+                    }
+            TestContext.Progress.WriteLine($"{m * 1000} g, {p}: a slow small lift after becoming light ends at most {Math.Abs(worst) * 1000:F2} mm from where the weight puts it ({worstCase})");
+            Assert.That(worst, Is.EqualTo(0).Within(0.001), worstCase);
+        }
+
+        /// <summary>
+        /// The same on Quest-like input (<see cref="QuestLikeInput"/>), 200 seeds for each profile: held as 100 g for 0.3–1 s,
+        /// then as 1–20 g, a lift of 5–20 mm in 0.5–2 s after 0–0.5 s, then 3 s at rest; the object's median over the last
+        /// second is within 1 cm (the light-object properties' bound) of the median the weight without a band gives
+        /// (measured 3.72 mm in every profile).
+        /// </summary>
+        [Test]
+        public void ASlowSmallLiftAfterBecomingLightEndsWhereTheWeightPutsItOnQuestLikeInput([Values("paper", "paper-experiment", "gain", "xyz")] string profile)
+        {
+            double[] masses = { 0.001, 0.005, 0.01, 0.02 };
+            double worst = 0;
+            string worstCase = "";
+            var noBand = NamedProfiles.Get(profile).Without<MotionDeadband>(profile + "-without-band");
+            for (int seed = 1; seed <= 200; seed++)
+            {
+                var rng = new Random(seed);
+                double mass = masses[seed % 4];
+                double changeAt = QuestLikeInput.Uniform(rng, 0.3, 1), lift = QuestLikeInput.Uniform(rng, 0.005, 0.02);
+                double seconds = QuestLikeInput.Uniform(rng, 0.5, 2), rest = QuestLikeInput.Uniform(rng, 0, 0.5);
+                var path = HandPath.StartAt(1).Hold(changeAt + rest).MoveTo(1 + lift, seconds).Hold(3);
+                var frames = QuestLikeInput.Headset(new Random(seed * 7919), seed).Render(path);
+                var a = Replay(HeavyMass, mass, NamedProfiles.Get(profile), frames, changeAt);
+                var b = Replay(HeavyMass, mass, noBand, frames, changeAt);
+                double d = QuestLikeInput.MedianOver(frames, i => a[i], path.Duration - 1, path.Duration + 1)
+                           - QuestLikeInput.MedianOver(frames, i => b[i], path.Duration - 1, path.Duration + 1);
+                if (Math.Abs(d) > Math.Abs(worst)) { worst = d; worstCase = $"seed {seed}: {mass * 1000} g at {changeAt:F2} s, lift {lift * 1000:F1} mm in {seconds:F2} s after {rest:F2} s"; }
+            }
+            Assert.That(Run.AllFinite(Replay(HeavyMass, 0.001, NamedProfiles.Get(profile), QuestLikeInput.Headset(new Random(7919), 1).Render(HandPath.StartAt(1).Hold(0.5).MoveTo(1.01, 0.5).Hold(1)), 0.5)), Is.True);
+            TestContext.Progress.WriteLine($"{profile}: a slow small lift after becoming light ends at most {Math.Abs(worst) * 1000:F2} mm from where the weight puts it over 200 seeds ({worstCase})");
+            Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
+        }
+
+        /// <summary>
+        /// After a lift, the change moves the object only as the weight does: held as 100 g, the hand lifts 1–5 cm in 0.5 s,
+        /// rests 1 s, and the object becomes 1 g or 10 g (on a tracked pose, or 0.1 s into a 0.2 s loss); over the 2 s after
+        /// the change the object is never more than 1 cm (the light-object properties' bound) from where the weight without a
+        /// band puts it (the same poses and change), every height is finite, and it ends within P1's millimetre of it.
+        /// </summary>
+        [Test]
+        public void AfterALiftTheChangeMovesTheObjectAsTheWeightDoes([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m,
+            [Values(0.01, 0.015, 0.02, 0.03, 0.05, -0.02)] double lift, [Values(false, true)] bool inALoss)
+        {
+            var noBand = NamedProfiles.Get(p).Without<MotionDeadband>(p + "-without-band");
+            var headset = Run.Headset();
+            if (inALoss) headset.Drop(1.7, 0.2);
+            var frames = headset.Render(HandPath.StartAt(1).Hold(0.3).MoveTo(1 + lift, 0.5).Hold(3));
+            var a = Replay(HeavyMass, m, NamedProfiles.Get(p), frames, 1.8);
+            var b = Replay(HeavyMass, m, noBand, frames, 1.8);
+            double largest = 0;
+            for (int i = QuestLikeInput.FrameAt(frames, 1.8); i < frames.Length; i++) largest = Math.Max(largest, Math.Abs(a[i] - b[i]));
+            TestContext.Progress.WriteLine($"{m * 1000} g, {p}, lift {lift * 1000} mm: after the change at most {largest * 1000:F2} mm from the weight without a band, at the end {(Run.Last(a) - Run.Last(b)) * 1000:F2} mm");
+            Assert.That(Run.AllFinite(a), Is.True);
+            Assert.That(largest, Is.LessThanOrEqualTo(0.01), "largest");
+            Assert.That(Run.Last(a) - Run.Last(b), Is.EqualTo(0).Within(0.001), "at the end");
+        }
+    }
+}
