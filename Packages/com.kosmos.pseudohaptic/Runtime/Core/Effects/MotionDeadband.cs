@@ -182,9 +182,9 @@ namespace Kosmos.PseudoHaptic
                 if (frame.SteadyTaken)
                 {
                     if (k < RestPoses) state.DeadbandGrabCount = ++k;
-                    mean += (frame.SteadyHand - mean) / (k < RestPoses ? k + 1 : RestPoses);
+                    mean += FadeStep(mean, frame.SteadyHand, k < RestPoses ? k + 1 : RestPoses);
                     state.DeadbandGrabMean = mean;
-                    if (k <= EarlyPoses) state.DeadbandEarlyMean += (frame.SteadyHand - state.DeadbandEarlyMean) / k;
+                    if (k <= EarlyPoses) state.DeadbandEarlyMean += FadeStep(state.DeadbandEarlyMean, frame.SteadyHand, k);
                 }
                 double moved = state.DeadbandMoved;
                 moved = Math.Max(moved, Ramp(Math.Abs(r - a), 0.5 * w, w));
@@ -208,7 +208,7 @@ namespace Kosmos.PseudoHaptic
             int n = state.DeadbandRestCount;
             n = n < RestPoses ? n + 1 : RestPoses;
             state.DeadbandRestCount = n;
-            double move = (steady - r) / n;
+            double move = FadeStep(r, steady, n);
             if (move > perPose) move = perPose;
             else if (move < -perPose) move = -perPose;
             r += move;
@@ -224,6 +224,10 @@ namespace Kosmos.PseudoHaptic
         /// <summary>How many steady poses the rest rule's reference averages before the hand has shown it moved: a small motion
         /// that pushed nothing ends with it at the hand's mean within a few tenths of a second.</summary>
         internal const int GrabRestPoses = 6;
+
+        /// <summary>The step of a fading mean <paramref name="mean"/> taking in <paramref name="x"/> as its
+        /// <paramref name="n"/>th value (or fading over n): (x − mean) / n.</summary>
+        static double FadeStep(double mean, double x, int n) => (x - mean) / n;
 
         /// <summary>0 at or below <paramref name="from"/>, 1 at or above <paramref name="to"/>, linear between.</summary>
         static double Ramp(double x, double from, double to)
