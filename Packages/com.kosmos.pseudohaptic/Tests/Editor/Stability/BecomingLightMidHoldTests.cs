@@ -74,6 +74,53 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         }
 
         /// <summary>
+        /// The mass switched back and forth during a hold (a study toggling the condition, a scene swapping the object's mass):
+        /// the hand rests with 1.5 mm of jitter, held as 100 g for 1 s, then as 1 g or 10 g and 100 g in turn, half a second
+        /// each, to 11 s (twenty changes), over 200 seeds. Every height is finite, and the object's median over the last light
+        /// half second (10–10.5 s) is within 1 cm (P4's bound) of its median over the half second before the first change:
+        /// the changes add no creep of their own.
+        /// Open, so explicit (a reproducer, ALGORITHM.md §6): measured 2.76 mm under <c>gain</c> at 1 g and 10 g and 6.63 mm
+        /// under <c>paper</c> at 10 g, but 11.81 mm under <c>paper</c> at 1 g (seed 47). There the grab's pose lay 5.6 mm above
+        /// where the hand then rests, and each change to light restarts the band on that pose, so the object goes to G times
+        /// it from the base at once, about 11 mm above where the 100 g object was, each time. Restarting on the steady hand's
+        /// mean instead was tried and measured worse on the single change (14.06 mm, the lowering guard's base being set from
+        /// the same pose): not a fix.
+        /// </summary>
+        [Test, Explicit("open: fails at 1 g under paper, 11.81 mm (seed 47); see the summary")]
+        public void TheMassSwitchedBackAndForthAtRestAddsNoCreep([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
+        {
+            var profile = NamedProfiles.Get(p);
+            double worst = 0;
+            string worstCase = "";
+            for (int seed = 1; seed <= 200; seed++)
+            {
+                var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(HandPath.StartAt(1).Hold(11));
+                var solver = Run.Solver(HeavyMass, profile);
+                var y = new double[frames.Length];
+                int first = TraceReplay.FirstUsable(frames);
+                solver.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
+                int switched = 0;
+                for (int i = 0; i < frames.Length; i++)
+                {
+                    // Light from 1 s to 1.5 s, 2 s to 2.5 s, …, 10 s to 10.5 s; 100 g before and between.
+                    int due = frames[i].Time < 1 - 1e-9 ? 0 : 1 + (int)Math.Floor((frames[i].Time - 1 + 1e-9) / 0.5);
+                    if (due != switched)
+                    {
+                        switched = due;
+                        solver.Configure(WeightModel.FromMass(due % 2 == 1 ? m : HeavyMass), profile, solver.StandardSpeed);
+                    }
+                    y[i] = i <= first ? solver.ObjectY : solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+                }
+                Assert.That(Run.AllFinite(y), Is.True, $"seed {seed}: finite");
+                Assert.That(switched, Is.InRange(20, 21), "ten switches to light and ten back");
+                double creep = QuestLikeInput.MedianOver(frames, i => y[i], 10, 10.5) - QuestLikeInput.MedianOver(frames, i => y[i], 0.5, 1);
+                if (Math.Abs(creep) > Math.Abs(worst)) { worst = creep; worstCase = $"seed {seed}"; }
+            }
+            TestContext.Progress.WriteLine($"{m * 1000} g and 100 g in turn, {p}: the object moved at most {Math.Abs(worst) * 1000:F2} mm ({worstCase})");
+            Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
+        }
+
+        /// <summary>
         /// A slow small lift after the change is a lift: held as 100 g for 0.5 s at rest, then as 1 g or 10 g, the hand rises
         /// 5–20 mm in 0.5–2 s (at once or after 0.3 s) and rests 3 s; the object ends where the weight without a band puts
         /// it (the same poses and the same change, the profile without <see cref="MotionDeadband"/>), within P1's millimetre
