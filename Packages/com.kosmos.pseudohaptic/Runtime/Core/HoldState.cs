@@ -85,7 +85,8 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="MotionDeadband"/>: the hold's clock when the band last saw a steady pose, s.</summary>
         public double DeadbandSteadyTime;
 
-        /// <summary><see cref="MotionDeadband"/>: the hand where the hold began, m (the reference until the hand first moves).</summary>
+        /// <summary><see cref="MotionDeadband"/>: the hand where the hold began, m (the reference until the hand first moves); for a
+        /// band that opened during the hold near that pose, the steady hand's mean where it opened.</summary>
         public double DeadbandAnchor;
 
         /// <summary><see cref="MotionDeadband"/>, from the grab until the hand has moved: the band's backlash reference (the grab's
@@ -96,8 +97,9 @@ namespace Kosmos.PseudoHaptic
         /// (the steady hand's mean since the last push), m.</summary>
         public double DeadbandRestMean;
 
-        /// <summary><see cref="MotionDeadband"/>: the mean of the steady hand since the grab, fading over 30 poses, m; the mean of
-        /// the hold's first steady poses, m; and how many steady poses the hold has seen (capped at 30).</summary>
+        /// <summary><see cref="MotionDeadband"/>: the mean of the steady hand since the grab (while the gain is at most 1: since
+        /// the band went), fading over 30 poses, m; the mean of the hold's first steady poses, m; and how many steady poses the
+        /// mean has taken (capped at 30).</summary>
         public double DeadbandGrabMean, DeadbandEarlyMean;
         public int DeadbandGrabCount;
 

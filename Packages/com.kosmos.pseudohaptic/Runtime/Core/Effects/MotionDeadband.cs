@@ -97,7 +97,14 @@ namespace Kosmos.PseudoHaptic
             if (w <= 0)
             {
                 // Gain ≤ 1: nothing to suppress, nothing lost; the reference is the hand. The half-width is negative while
-                // there is no band, so that a gain risen above 1 during the hold is told below.
+                // there is no band, so that a gain risen above 1 during the hold is told below, and the steady hand's mean
+                // since the band went (fading over RestPoses) is kept for where such a band starts.
+                if (!(state.DeadbandHalfWidth < 0)) state.DeadbandGrabCount = 0;
+                if (frame.SteadyTaken)
+                {
+                    int n = state.DeadbandGrabCount < RestPoses ? ++state.DeadbandGrabCount : RestPoses;
+                    state.DeadbandGrabMean += FadeStep(state.DeadbandGrabMean, frame.SteadyHand, n);
+                }
                 state.DeadbandReference = h;
                 state.DeadbandHalfWidth = double.NegativeInfinity;
                 state.DeadbandRestCount = 1;
@@ -107,11 +114,13 @@ namespace Kosmos.PseudoHaptic
             if (state.DeadbandHalfWidth < 0)
             {
                 // The gain has risen above 1 during the hold. With the hand within the band's width of the grab's pose (at rest
-                // where it was grabbed, its poses jittering), the band starts as at the grab, a backlash on the grab's pose
-                // under the grab's rule: were it the rest rule's mean from here, the hand's mean's distance from the grab's
-                // pose (the jitter of that one pose) would turn into a drift of G times it, up to 14.7 mm
-                // (BecomingLightMidHoldTests). Else it starts closed at the hand, as at the end of a motion, and regrows.
-                if (Math.Abs(h - state.DeadbandAnchor) <= w) Reset(ref state, state.DeadbandAnchor);
+                // where it was grabbed), the band starts as at a grab on the steady hand's mean, a backlash under the grab's
+                // rule (a slow lift right after the change ends within 0.59 mm of where the weight without a band puts it;
+                // started closed at the hand, 1.02 mm; on the grab's own pose, which may lie 5.6 mm from where the hand rests,
+                // the object sat up to 17.1 mm from where that weight puts it: BecomingLightMidHoldTests). Farther from the
+                // grab's pose (after a lift, where that mean still lags) it starts closed at the hand, as at the end of a
+                // motion, and regrows.
+                if (Math.Abs(h - state.DeadbandAnchor) <= w) Reset(ref state, state.DeadbandGrabCount > 0 ? state.DeadbandGrabMean : h);
                 else state.DeadbandHalfWidth = 0;
             }
             double r = state.DeadbandReference, e = state.DeadbandHalfWidth;

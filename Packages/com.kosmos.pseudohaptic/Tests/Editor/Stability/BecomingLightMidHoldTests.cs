@@ -47,47 +47,47 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         }
 
         /// <summary>
-        /// P4 after the change: the hand rests with 1.5 mm of jitter (30 Hz poses over 90 Hz frames), held as 100 g for 1 s,
-        /// then as 1 g or 10 g for 10 s more, over 200 seeds; the object's median over the last second is within 1 cm (P4's
-        /// bound) of its median over the half second before the change, as the same light object held from the grab ends
-        /// within 1 cm of where it was grabbed (printed beside: 4.82–7.22 mm). Measured 4.45–7.12 mm; with the band started
-        /// closed at the hand at the change (the rest rule's mean from there), 10.47–14.65 mm.
+        /// After the change the band adds nothing to where the weight puts the object but the lack of jitter: the hand rests
+        /// with 1.5 mm of jitter (30 Hz poses over 90 Hz frames), held as 100 g for 1 s, then as 1 g or 10 g for 10 s more, over
+        /// 200 seeds; the object's median just after the change (1.1–1.5 s) and over the last second is within 1 cm (P4's
+        /// bound) of the weight's without a band (the profile without <see cref="MotionDeadband"/>, the same poses and change).
+        /// The weight itself moves the object at such a change, by (G_light − G_heavy) × (hand − base), which a comparison
+        /// with where the 100 g object sat would count as creep. Measured at most 5.06 mm (the steady hand's mean is where the
+        /// band restarts); restarted on the grab's own pose, 17.10 mm (seed 47, whose grab pose lay 5.6 mm above where the hand
+        /// rests); started closed at the hand, the rest rule's mean drifting from that one pose, see the print on a mutant.
         /// </summary>
         [Test]
-        public void JitterAtRestAfterBecomingLightDoesNotCreep([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
+        public void AfterBecomingLightAtRestTheBandAddsNoOffsetToWhereTheWeightPutsIt([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
         {
-            double worst = 0, worstFromGrab = 0;
+            var profile = NamedProfiles.Get(p);
+            var without = profile.Without<MotionDeadband>();
+            double worst = 0;
             string worstCase = "";
             for (int seed = 1; seed <= 200; seed++)
             {
                 var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(HandPath.StartAt(1).Hold(11));
-                var y = Replay(HeavyMass, m, NamedProfiles.Get(p), frames, 1);
+                var y = Replay(HeavyMass, m, profile, frames, 1);
+                var n = Replay(HeavyMass, m, without, frames, 1);
                 Assert.That(Run.AllFinite(y), Is.True, $"seed {seed}: finite");
-                double creep = QuestLikeInput.MedianOver(frames, i => y[i], 10, 11) - QuestLikeInput.MedianOver(frames, i => y[i], 0.5, 1);
-                if (Math.Abs(creep) > Math.Abs(worst)) { worst = creep; worstCase = $"seed {seed}"; }
-                var g = Run.Replay(Run.Solver(m, NamedProfiles.Get(p)), frames);
-                double fromGrab = QuestLikeInput.MedianOver(frames, i => g[i], 10, 11) - g[TraceReplay.FirstUsable(frames)];
-                worstFromGrab = Math.Max(worstFromGrab, Math.Abs(fromGrab));
+                foreach (var (from, to) in new[] { (1.1, 1.5), (10.0, 11.0) })
+                {
+                    double added = QuestLikeInput.MedianOver(frames, i => y[i] - n[i], from, to);
+                    if (Math.Abs(added) > Math.Abs(worst)) { worst = added; worstCase = $"seed {seed}, {from}-{to} s"; }
+                }
             }
-            TestContext.Progress.WriteLine($"{m * 1000} g, {p}: jitter at rest after becoming light moves the object at most {Math.Abs(worst) * 1000:F2} mm ({worstCase}); held light from the grab, {worstFromGrab * 1000:F2} mm");
+            TestContext.Progress.WriteLine($"{m * 1000} g, {p}: after becoming light at rest the band puts the object at most {Math.Abs(worst) * 1000:F2} mm from where the weight without a band does ({worstCase})");
             Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
         }
 
         /// <summary>
         /// The mass switched back and forth during a hold (a study toggling the condition, a scene swapping the object's mass):
         /// the hand rests with 1.5 mm of jitter, held as 100 g for 1 s, then as 1 g or 10 g and 100 g in turn, half a second
-        /// each, to 11 s (twenty changes), over 200 seeds. Every height is finite, and the object's median over the last light
-        /// half second (10–10.5 s) is within 1 cm (P4's bound) of its median over the half second before the first change:
-        /// the changes add no creep of their own.
-        /// Open, so explicit (a reproducer, ALGORITHM.md §6): measured 2.76 mm under <c>gain</c> at 1 g and 10 g and 6.63 mm
-        /// under <c>paper</c> at 10 g, but 11.81 mm under <c>paper</c> at 1 g (seed 47). There the grab's pose lay 5.6 mm above
-        /// where the hand then rests, and each change to light restarts the band on that pose, so the object goes to G times
-        /// it from the base at once, about 11 mm above where the 100 g object was, each time. Restarting on the steady hand's
-        /// mean instead was tried and measured worse on the single change (14.06 mm, the lowering guard's base being set from
-        /// the same pose): not a fix.
+        /// each, to 11 s (twenty changes), over 200 seeds. Every height is finite, and over the last light half second
+        /// (10–10.5 s) the object's median is within 1 cm (P4's bound) of the weight's without a band, the same poses and
+        /// changes: the changes leave the band nothing of their own.
         /// </summary>
-        [Test, Explicit("open: fails at 1 g under paper, 11.81 mm (seed 47); see the summary")]
-        public void TheMassSwitchedBackAndForthAtRestAddsNoCreep([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
+        [Test]
+        public void TheMassSwitchedBackAndForthAtRestLeavesTheBandNothing([Values("paper", "gain")] string p, [Values(0.001, 0.01)] double m)
         {
             var profile = NamedProfiles.Get(p);
             double worst = 0;
@@ -95,29 +95,37 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             for (int seed = 1; seed <= 200; seed++)
             {
                 var frames = Run.Headset(jitterSd: 0.0015, seed: seed).Render(HandPath.StartAt(1).Hold(11));
-                var solver = Run.Solver(HeavyMass, profile);
-                var y = new double[frames.Length];
-                int first = TraceReplay.FirstUsable(frames);
-                solver.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
-                int switched = 0;
-                for (int i = 0; i < frames.Length; i++)
-                {
-                    // Light from 1 s to 1.5 s, 2 s to 2.5 s, …, 10 s to 10.5 s; 100 g before and between.
-                    int due = frames[i].Time < 1 - 1e-9 ? 0 : 1 + (int)Math.Floor((frames[i].Time - 1 + 1e-9) / 0.5);
-                    if (due != switched)
-                    {
-                        switched = due;
-                        solver.Configure(WeightModel.FromMass(due % 2 == 1 ? m : HeavyMass), profile, solver.StandardSpeed);
-                    }
-                    y[i] = i <= first ? solver.ObjectY : solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
-                }
+                var y = Toggled(profile, m, frames);
+                var n = Toggled(profile.Without<MotionDeadband>(), m, frames);
                 Assert.That(Run.AllFinite(y), Is.True, $"seed {seed}: finite");
-                Assert.That(switched, Is.InRange(20, 21), "ten switches to light and ten back");
-                double creep = QuestLikeInput.MedianOver(frames, i => y[i], 10, 10.5) - QuestLikeInput.MedianOver(frames, i => y[i], 0.5, 1);
-                if (Math.Abs(creep) > Math.Abs(worst)) { worst = creep; worstCase = $"seed {seed}"; }
+                double added = QuestLikeInput.MedianOver(frames, i => y[i] - n[i], 10, 10.5);
+                if (Math.Abs(added) > Math.Abs(worst)) { worst = added; worstCase = $"seed {seed}"; }
             }
-            TestContext.Progress.WriteLine($"{m * 1000} g and 100 g in turn, {p}: the object moved at most {Math.Abs(worst) * 1000:F2} mm ({worstCase})");
+            TestContext.Progress.WriteLine($"{m * 1000} g and 100 g in turn, {p}: the band puts the object at most {Math.Abs(worst) * 1000:F2} mm from where the weight without a band does ({worstCase})");
             Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
+        }
+
+        /// <summary>Replays <paramref name="frames"/> held as 100 g until 1 s, then as <paramref name="m"/> from 1 s to 1.5 s,
+        /// 2 s to 2.5 s, …, 10 s to 10.5 s and as 100 g between (twenty changes).</summary>
+        static double[] Toggled(WeightProfile profile, double m, TraceFrame[] frames)
+        {
+            var solver = Run.Solver(HeavyMass, profile);
+            var y = new double[frames.Length];
+            int first = TraceReplay.FirstUsable(frames);
+            solver.BeginHold(frames[first].HandY, frames[first].HandY, frames[first].PoseTime);
+            int switched = 0;
+            for (int i = 0; i < frames.Length; i++)
+            {
+                int due = frames[i].Time < 1 - 1e-9 ? 0 : 1 + (int)Math.Floor((frames[i].Time - 1 + 1e-9) / 0.5);
+                if (due != switched)
+                {
+                    switched = due;
+                    solver.Configure(WeightModel.FromMass(due % 2 == 1 ? m : HeavyMass), profile, solver.StandardSpeed);
+                }
+                y[i] = i <= first ? solver.ObjectY : solver.Step(frames[i].ToSample(), frames[i].Time - frames[i - 1].Time);
+            }
+            Assert.That(switched, Is.InRange(20, 21), "ten changes to light and ten back");
+            return y;
         }
 
         /// <summary>
