@@ -337,9 +337,9 @@ namespace Kosmos.PseudoHaptic.Tests.Evaluation
         }
 
         /// <summary>evaluation.md §8.3's coverage over two populations of 1000 participants each, both intervals, 12 and 24
-        /// repetitions a level (about 90 s): <c>dotnet test Tests/Kosmos.PseudoHaptic.Tests -c Release --filter
+        /// repetitions a level (about a minute): <c>dotnet test Tests/Kosmos.PseudoHaptic.Tests -c Release --filter
         /// Name~CoverageOverTwoThousandParticipants --logger "console;verbosity=detailed"</c>.</summary>
-        [Test, Explicit("about 90 s; prints evaluation.md's coverage figures")]
+        [Test, Explicit("about a minute; prints evaluation.md's coverage figures")]
         public void CoverageOverTwoThousandParticipants()
         {
             foreach (long seed in new long[] { 77, 4242 })
