@@ -166,6 +166,22 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(h.Pace, Is.EqualTo(fromBand.Pace).Within(0.05 * fromBand.Pace), "the lift's own pace, not the creep's 0.02 m/s");
         }
 
+        /// <summary>A creep that pauses under <see cref="FasterMovesFurther.MinPacedRise"/> is rest, not a very slow lift: the first
+        /// centimetres of the lift after it read the lift's own pace, not the mean speed since the hand left the band (which
+        /// counts the creep and its pause). A creep of 1.2 cm or 2.8 cm at 2 cm/s, 0.4 s still, then 2 cm at 0.5 m/s: the pace
+        /// is at least twice that mean since the band (measured 13.3 and 16.7 times it; read as a very slow lift, as with the flag set on a creep, 0.89 times).</summary>
+        [TestCase(0.012), TestCase(0.028)]
+        public void TheFirstCentimetresAfterACreepReadTheLiftsOwnPace(double creep)
+        {
+            var h = new Hold().Rest(0.3);
+            double start = h.Time;
+            h.Ramp(creep, 0.02).Rest(0.4).Ramp(creep + 0.02, 0.5);
+            // The steady hand left the 5 mm band a quarter second into the creep; the lift is under MinPacedRise since the pause.
+            double sinceBand = (h.Y - 0.005) / (h.Time - (start + 0.005 / 0.02));
+            TestContext.WriteLine($"creep {creep * 1000} mm: pace {h.Pace:F4} m/s, the mean since the band {sinceBand:F4} m/s ({h.Pace / sinceBand:F2} times)");
+            Assert.That(h.Pace, Is.GreaterThanOrEqualTo(2 * sinceBand));
+        }
+
         [Test]
         public void SeveralCreepsThatPauseLeaveTheLiftAfterThemItsOwnPace([Values(3, 5)] int creeps)
         {
