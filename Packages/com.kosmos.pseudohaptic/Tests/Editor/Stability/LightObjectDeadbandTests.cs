@@ -104,13 +104,8 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         [Test]
         public void ABriskSmallLiftRightAfterTheGrabEndsWhereTheWeightPutsItOnQuestLikeInput([Values("paper", "paper-experiment", "gain", "xyz")] string profile)
         {
-            double worst = 0;
-            string worstCase = "";
-            var noBand = NamedProfiles.Get(profile).Without<MotionDeadband>(profile + "-without-band");
-            for (int seed = 1; seed <= 200; seed++)
+            double worst = BandEndOverSeeds.Worst(profile, (seed, rng, mass) =>
             {
-                var rng = new Random(seed);
-                double mass = Masses[seed % 4];
                 double after = QuestLikeInput.Uniform(rng, 0, 0.07), lift = Sign(rng) * QuestLikeInput.Uniform(rng, 0.013, 0.018);
                 var path = HandPath.StartAt(1);
                 if (after > 0) path.Hold(after);
@@ -118,13 +113,12 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 var headset = QuestLikeInput.Headset(new Random(seed * 7919), seed);
                 headset.Latency = 0;
                 var frames = headset.Render(path);
-                double from = path.Duration - 1;
-                var withBand = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile)), frames);
-                var withoutBand = Run.Replay(Run.Solver(mass, noBand), frames);
-                double d = QuestLikeInput.MedianOver(frames, i => withBand[i], from, path.Duration + 1)
-                           - QuestLikeInput.MedianOver(frames, i => withoutBand[i], from, path.Duration + 1);
-                if (Math.Abs(d) > Math.Abs(worst)) { worst = d; worstCase = $"seed {seed}: {mass * 1000} g, lift {lift * 1000:F1} mm {after * 1000:F0} ms after the grab"; }
-            }
+                return new BandEndOverSeeds.Scene
+                {
+                    Frames = frames, End = path.Duration, Replay = pr => Run.Replay(Run.Solver(mass, pr), frames),
+                    Description = $"{mass * 1000} g, lift {lift * 1000:F1} mm {after * 1000:F0} ms after the grab",
+                };
+            }, out string worstCase);
             TestContext.Progress.WriteLine($"{profile}: a brisk small lift right after the grab ends at most {Math.Abs(worst) * 1000:F2} mm from where the weight puts it over 200 seeds ({worstCase})");
             Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
         }
@@ -240,27 +234,17 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
         [Test]
         public void ASlowSmallLiftFromTheGrabEndsWhereTheWeightPutsItOnQuestLikeInput([Values("paper", "paper-experiment", "gain", "xyz")] string profile)
         {
-            double worst = 0;
-            string worstCase = "";
-            var noBand = NamedProfiles.Get(profile).Without<MotionDeadband>(profile + "-without-band");
-            for (int seed = 1; seed <= 200; seed++)
+            double worst = BandEndOverSeeds.Worst(profile, (seed, rng, mass) =>
             {
-                var rng = new Random(seed);
-                double mass = Masses[seed % 4];
                 double lift = QuestLikeInput.Uniform(rng, 0.005, 0.02), seconds = QuestLikeInput.Uniform(rng, 0.5, 2), rest = QuestLikeInput.Uniform(rng, 0, 0.5);
                 var path = HandPath.StartAt(1).Hold(rest).MoveTo(1 + lift, seconds).Hold(3);
                 var frames = QuestLikeInput.Headset(new Random(seed * 7919), seed).Render(path);
-                double from = path.Duration - 1;
-                var withBand = Run.Replay(Run.Solver(mass, NamedProfiles.Get(profile)), frames);
-                var withoutBand = Run.Replay(Run.Solver(mass, noBand), frames);
-                double band = QuestLikeInput.MedianOver(frames, i => withBand[i], from, path.Duration + 1);
-                double without = QuestLikeInput.MedianOver(frames, i => withoutBand[i], from, path.Duration + 1);
-                if (Math.Abs(band - without) > Math.Abs(worst))
+                return new BandEndOverSeeds.Scene
                 {
-                    worst = band - without;
-                    worstCase = $"seed {seed}: {mass * 1000} g, lift {lift * 1000:F1} mm in {seconds:F2} s after {rest:F2} s";
-                }
-            }
+                    Frames = frames, End = path.Duration, Replay = pr => Run.Replay(Run.Solver(mass, pr), frames),
+                    Description = $"{mass * 1000} g, lift {lift * 1000:F1} mm in {seconds:F2} s after {rest:F2} s",
+                };
+            }, out string worstCase);
             TestContext.Progress.WriteLine($"{profile}: a slow small lift from the grab ends at most {Math.Abs(worst) * 1000:F2} mm from where the weight puts it over 200 seeds ({worstCase})");
             Assert.That(worst, Is.EqualTo(0).Within(0.01), worstCase);
         }
