@@ -108,6 +108,10 @@ namespace Kosmos.PseudoHaptic
         /// of the way from the grab's backlash reference to the steady hand's mean.</summary>
         public double DeadbandMoved;
 
+        /// <summary><see cref="LoweringGuard"/>: the base after each of the last five steady poses, newest first, m (where the hold
+        /// began, or the base at the last gap, until five have been seen since).</summary>
+        public double GuardBase1, GuardBase2, GuardBase3, GuardBase4, GuardBase5;
+
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>
         public double SettleElapsed;
 

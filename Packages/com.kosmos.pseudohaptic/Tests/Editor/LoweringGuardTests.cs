@@ -58,6 +58,79 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.State.Base, Is.EqualTo(1.0).Within(0.0045), "seed " + seed + ": within the jitter of where the hold began");
         }
 
+        /// <summary>
+        /// A glitch that stays for two or more poses passes the median of three: the hand rests, then 1–6 consecutive poses
+        /// are 3 cm low (30 Hz poses over 90 Hz frames, clean), from the hold's third pose or after half a second, then it
+        /// rests again; with and without the offset relaxation (which reads time, so that every frame runs the effects, not
+        /// only those with a new pose). Up to four such poses leave the base where the hold began and a 2 kg object where
+        /// it was; five or more are a lowering (the base follows, a slack above the hand). Before the guard undid a drop the
+        /// hand came back up from within five steady poses, two poses lowered it for the rest of the hold.
+        /// </summary>
+        [Test]
+        public void AHandBelowTheBaseForFewerThanFiveSteadyPosesLowersNothing([Range(1, 6)] int poses, [Values(15, 2)] int fromPose, [Values(false, true)] bool relaxing)
+        {
+            var path = HandPath.StartAt(1.0).Hold(1.5);
+            var frames = Run.Headset(frameRate: 90).Offset((fromPose + 0.5) / 30, poses / 30.0, -0.03).Render(path);
+            WeightSolver Solver() => relaxing ? Heavy(new OffsetRelaxation()) : Heavy();
+            var still = Run.Replay(Solver(), Run.Headset(frameRate: 90).Render(path));
+            var s = Solver();
+            var y = Run.Replay(s, frames);
+            if (poses <= 4)
+            {
+                Assert.That(s.State.Base, Is.EqualTo(1.0).Within(1e-12), "the base where the hold began");
+                Assert.That(Run.Last(y), Is.EqualTo(Run.Last(still)).Within(1e-12), "the object where it was");
+            }
+            else if (!relaxing) Assert.That(s.State.Base, Is.EqualTo(0.975).Within(1e-12), "a lowering: the base a slack above the hand's lowest");
+            else Assert.That(s.State.Base, Is.LessThan(0.999), "a lowering, the relaxation raising the base back toward the hand since");
+        }
+
+        /// <summary>
+        /// A glitch of three poses right after a lowering: the hand lowers 5 cm in 0.5 s, rests 0–3 poses, then three poses
+        /// are 3 cm low, then it rests 0.5 s (clean poses). The base ends a slack above where the hand rests, whichever pose
+        /// the glitch began on: the glitch is not part of the lowering.
+        /// </summary>
+        [Test]
+        public void AGlitchRightAfterALoweringLeavesTheBaseWhereTheHandRests([Range(0, 3)] int restPoses)
+        {
+            var path = HandPath.StartAt(1.0).Hold(0.3).MoveTo(0.95, 0.5);
+            double at = (Math.Round(path.Duration * 30) + restPoses + 0.5) / 30;
+            path.Hold(1);
+            var s = Heavy();
+            Run.Replay(s, Run.Headset(frameRate: 90).Offset(at, 3 / 30.0, -0.03).Render(path));
+            Assert.That(s.State.Base, Is.EqualTo(0.955).Within(1e-9));
+        }
+
+        /// <summary>
+        /// A gap that hides the way back up is no dip: the hand lowers 20 cm in 0.2 s, rests two poses at the bottom, and
+        /// rises back in 0.2 s while tracking is lost (or low-confidence under the tracking-loss hold, whose poses are not
+        /// remembered) for 0.25 s; found again at the top, the lift is weighed from the lowest point the hold saw, as it
+        /// would be had the rise been seen: the base ends a slack above the lowest median of three poses before the gap. (Counted across the gap,
+        /// the base five steady poses before the hand was found again lay on the way down, and the rise undid the lowering:
+        /// 0.85–0.9 m.)
+        /// </summary>
+        [Test]
+        public void AGapThatHidesTheWayBackUpLeavesTheBaseAtTheLowestPointSeen([Values(false, true)] bool lowConfidence)
+        {
+            var path = HandPath.StartAt(1.0).Hold(0.5).MoveTo(0.8, 0.2).Hold(2 / 30.0);
+            double from = path.Duration;
+            path.MoveTo(1.0, 0.2).Hold(1);
+            var headset = Run.Headset(frameRate: 90);
+            if (lowConfidence) headset.LowConfidence(from, 0.25);
+            else headset.Drop(from, 0.25);
+            var frames = headset.Render(path);
+            var s = lowConfidence ? Heavy(new TrackingLossHold()) : Heavy();
+            Run.Replay(s, frames);
+            // The lowest point the hold saw: the lowest median of three consecutive poses before the gap, plus the slack.
+            var poses = new System.Collections.Generic.List<double>();
+            for (int i = 0; i < frames.Length && frames[i].Time < from; i++)
+                if (i == 0 || frames[i].PoseTime != frames[i - 1].PoseTime) poses.Add(frames[i].HandY);
+            double lowest = double.PositiveInfinity;
+            for (int i = 2; i < poses.Count; i++)
+                lowest = Math.Min(lowest, Math.Max(Math.Min(poses[i], poses[i - 1]), Math.Min(Math.Max(poses[i], poses[i - 1]), poses[i - 2])));
+            Assert.That(lowest, Is.LessThan(0.815), "the hold saw the bottom");
+            Assert.That(s.State.Base, Is.EqualTo(lowest + 0.005).Within(1e-9));
+        }
+
         [Test]
         public void TheSlackIsValidatedAndNamed()
         {
