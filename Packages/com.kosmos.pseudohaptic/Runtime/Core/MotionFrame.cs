@@ -67,6 +67,11 @@ namespace Kosmos.PseudoHaptic
         /// <summary><see cref="SteadyHand"/> was taken anew this frame (a new pose, three since the last gap), moved or not.</summary>
         public bool SteadyTaken;
 
+        /// <summary>The lift's base was measured anew this frame from where the hand rests (the solver from a glitched grab pose,
+        /// <see cref="MotionDeadband"/> from the hold's first poses): where the base was before says nothing of a glitch
+        /// (<see cref="LoweringGuard"/>).</summary>
+        public bool BaseMeasured;
+
         /// <summary>How far the hand has lifted the object: <see cref="WeightHand"/> − <see cref="HoldState.Base"/>, m
         /// (base effects may shape it).</summary>
         public double Lift;

@@ -424,7 +424,7 @@ namespace Kosmos.PseudoHaptic
             if (_state.PoseCount < 3) _state.PoseCount++;
             if (_state.PoseCount < 3) return;
             double median = Math.Max(Math.Min(y, a), Math.Min(Math.Max(y, a), b));
-            if (_state.AnchorPending) SettleAnchor(b, median);
+            if (_state.AnchorPending) f.BaseMeasured = SettleAnchor(b, median);
             f.SteadyTaken = true;
             _state.SteadyY = median;
         }
@@ -435,14 +435,16 @@ namespace Kosmos.PseudoHaptic
         /// would otherwise keep the glitch as weight for good). Jitter stays within it, so a grab at rest is measured from its
         /// own pose. The grab offset stays: the object was placed against the hand as it was seen. A hand that moved fast
         /// through the three poses moves the base by a pose's worth of motion; any change of the offset this makes glides.
+        /// Returns whether the base moved.
         /// </summary>
-        void SettleAnchor(double p0, double median)
+        bool SettleAnchor(double p0, double median)
         {
             _state.AnchorPending = false;
             double shift = median - p0;
-            if (!(Math.Abs(shift) > AnchorGlitch)) return;
+            if (!(Math.Abs(shift) > AnchorGlitch)) return false;
             _state.Base += shift;
             _state.StartY += shift;
+            return true;
         }
 
         /// <summary>How far the grab's pose may lie from the median of the first three before the lift is measured from the

@@ -131,6 +131,39 @@ namespace Kosmos.PseudoHaptic.Tests
             Assert.That(s.State.Base, Is.EqualTo(lowest + 0.005).Within(1e-9));
         }
 
+        /// <summary>
+        /// A grab on a pose 6–20 mm above where the hand then rests: the solver measures the lift from the first poses instead
+        /// (a glitched grab pose), and the guard must not take that for a dip that came back. It did: it put the base back
+        /// up within the slack of the grab's pose, 5 mm above the hand, and the next lift was weighed 5 mm short (a light
+        /// object's lead, G − 1 times that, lost for the hold). With and without the light object's deadband, which measures
+        /// the lift from the same poses: the base ends where the hand rests, and a 10 cm lift ends where the same lift from a
+        /// clean grab does (P12's bounds).
+        /// </summary>
+        [Test]
+        public void AGrabOnAGlitchedPoseAboveTheHandLeavesTheBaseWhereTheHandRests([Values(0.006, 0.008, 0.02)] double above,
+            [Values(0.001, PhysicalConstants.StandardMassKg, 1.0)] double mass, [Values("paper", "gain")] string profile)
+        {
+            double Lift(double grabPose, out double baseAtRest)
+            {
+                var solver = new WeightSolver(WeightModel.FromMass(mass), NamedProfiles.Get(profile));
+                double t = 0;
+                solver.BeginHold(grabPose, grabPose, t);
+                double Pose(double hand) { t += 1 / 30.0; return solver.Step(new HandSample(hand, true, true, t), 1 / 30.0); }
+                for (int i = 0; i < 30; i++) Pose(1.0);
+                baseAtRest = solver.State.Base;
+                for (int i = 1; i <= 30; i++) Pose(1.0 + 0.1 * i / 30);
+                double y = 0;
+                for (int i = 0; i < 60; i++) y = Pose(1.1);
+                return y;
+            }
+            double glitched = Lift(1.0 + above, out double glitchedBase), clean = Lift(1.0, out _);
+            TestContext.Progress.WriteLine($"{profile}, {mass * 1000} g, grab {above * 1000} mm above: base {(glitchedBase - 1) * 1000:F2} mm, the lift ends {(glitched - clean) * 1000:F2} mm from the clean grab's");
+            Assert.That(glitchedBase, Is.EqualTo(1.0).Within(1e-9), "the base is where the hand rests");
+            // Placed at the hand in both (no grab offset), the object ends where the clean grab's does.
+            double bound = mass == PhysicalConstants.StandardMassKg ? 0.001 : 0.01;
+            Assert.That(glitched - clean, Is.EqualTo(0).Within(bound), "a lift after it ends where the same lift from a clean grab does");
+        }
+
         [Test]
         public void TheSlackIsValidatedAndNamed()
         {

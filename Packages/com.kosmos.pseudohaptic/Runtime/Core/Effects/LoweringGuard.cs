@@ -8,8 +8,9 @@ namespace Kosmos.PseudoHaptic
     /// starts. The base follows the steady hand (<see cref="MotionFrame.SteadyHand"/>, the median of three poses), so a
     /// one-pose glitch down never moves it; the slack keeps tracking jitter at rest from walking it down. A glitch of two to
     /// four poses passes the median, so a hand back up within the slack of where the base was five steady poses ago undoes
-    /// what took the base down since: such a glitch, or a dip that came straight back, lowers nothing. A motion that goes
-    /// up and comes back never moves the base, so it leaves no trace.
+    /// what took the base down since: such a glitch, or a dip that came straight back, lowers nothing (a base measured anew
+    /// from where the hand rests, <see cref="MotionFrame.BaseMeasured"/>, is no such dip). A motion that goes up and comes
+    /// back never moves the base, so it leaves no trace.
     /// </summary>
     public sealed class LoweringGuard : WeightEffect
     {
@@ -41,7 +42,9 @@ namespace Kosmos.PseudoHaptic
         {
             // After a gap, or poses not remembered (the steady hand's window starts over), where the base was before it says
             // nothing of a glitch after it: a hand found higher after a lowering did not dip, the gap hid its way back up.
-            if (frame.Bridged || frame.Settling) Reset(ref state, state.Base);
+            // Nor does it once the base has been measured anew from where the hand rests (a base taken down from a glitched grab
+            // pose is not a dip to undo).
+            if (frame.Bridged || frame.Settling || frame.BaseMeasured) Reset(ref state, state.Base);
             if (frame.SteadyTaken)
             {
                 double floor = frame.SteadyHand + Slack, ago = state.GuardBase5;
