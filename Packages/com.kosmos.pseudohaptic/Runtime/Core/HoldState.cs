@@ -108,8 +108,15 @@ namespace Kosmos.PseudoHaptic
         /// of the way from the grab's backlash reference to the steady hand's mean.</summary>
         public double DeadbandMoved;
 
+        /// <summary><see cref="MotionDeadband"/>: whether the lift is measured from the mean of the hold's first steady poses:
+        /// not (a band opened during the hold, or the hand moved before they were taken), becoming so, or so.</summary>
+        public int DeadbandSettle;
+
+        /// <summary><see cref="MotionDeadband"/>: the hold's clock at the grab (or where the band began), s.</summary>
+        public double DeadbandGrabTime;
+
         /// <summary><see cref="LoweringGuard"/>: the base after each of the last five steady poses, newest first, m (where the hold
-        /// began, or the base at the last gap, until five have been seen since).</summary>
+        /// began, or the base at the last gap or where it was last measured anew, until five have been seen since).</summary>
         public double GuardBase1, GuardBase2, GuardBase3, GuardBase4, GuardBase5;
 
         /// <summary><see cref="TrackingLossHold"/>: how long tracking has been steady since it came back, s; negative while settled.</summary>

@@ -42,8 +42,16 @@ namespace Kosmos.PseudoHaptic.Tests
             var db = Only(new MotionDeadband(), new WeightGain());
             var solver = new WeightSolver(WeightModel.FromMass(0.01), db, 0.5); // gain 3 (the cap)
             solver.BeginHold(1, 1);
-            for (int i = 0; i < 100; i++) solver.Step(new HandSample(1 + (i % 2 == 0 ? 0.003 : -0.003)), 1 / 30.0);
-            Assert.That(solver.ObjectY, Is.EqualTo(1.0), "±3 mm of jitter moves a gain-3 object not at all");
+            double settled = 0;
+            for (int i = 0; i < 100; i++)
+            {
+                solver.Step(new HandSample(1 + (i % 2 == 0 ? 0.003 : -0.003)), 1 / 30.0);
+                if (i == 10) settled = solver.ObjectY;
+            }
+            // The first steady poses move the lift's base and the band to their mean (where the hand rests): the object moves
+            // there once, by less than the jitter (not G times it), and then not at all.
+            Assert.That(settled, Is.EqualTo(1.0).Within(0.003), "±3 mm of jitter moves a gain-3 object less than the jitter, once");
+            Assert.That(solver.ObjectY, Is.EqualTo(settled), "…and then not at all");
             var y = Lift(db, 0.045);
             Assert.That(Run.Last(y) - y[0], Is.EqualTo(0.3).Within(1e-12), "at gain 1 a lift passes whole: nothing to suppress, nothing lost");
             var heavy = Lift(db, 0.09);
@@ -91,6 +99,66 @@ namespace Kosmos.PseudoHaptic.Tests
             for (int i = 0; i < 60; i++) Pose(1.051);
             Assert.That(solver.ObjectY, Is.EqualTo(before).Within(0.001), "a heft leaves the object where it was");
             Assert.That(new MotionDeadband().Name, Is.EqualTo("motion-deadband"));
+        }
+
+        [Test]
+        public void TheFirstPosesAtRestSetWhereALightObjectsLiftIsMeasuredFrom()
+        {
+            // Gain 3, band 8 mm. The grab's pose is 4 mm above where the hand then rests (jitter, not a glitch: within the
+            // solver's 5 mm). The hold's first six steady poses move the base and the band to their mean: the object moves
+            // there with them (once, 4 mm: not G times it), and a lift is measured from where the hand rests.
+            var solver = new WeightSolver(WeightModel.FromMass(0.01), Only(new MotionDeadband(), new WeightGain()), 0.5);
+            double t = 0;
+            solver.BeginHold(1.004, 1.004, t);
+            double Pose(double hand) { t += 1 / 30.0; return solver.Step(new HandSample(hand, true, true, t), 1 / 30.0); }
+            for (int i = 0; i < 8; i++) Pose(1.0);
+            Assert.That(solver.State.Base, Is.EqualTo(1.0).Within(1e-12), "the base is where the hand rests");
+            Assert.That(solver.ObjectY, Is.EqualTo(1.0).Within(1e-12), "the object moved with it, 1 × the grab pose's error");
+            Assert.That(solver.State.DeadbandMoved, Is.EqualTo(0), "nothing moved");
+            // Settled, a push is motion (or a glitch), not jitter about an unlucky grab pose: the rule after motion takes
+            // over, whose reference goes back to where the hand rests once it does.
+            Pose(1.011);
+            Assert.That(solver.State.DeadbandMoved, Is.EqualTo(1), "a push once the first poses have settled is motion");
+            for (int i = 0; i < 90; i++) Pose(1.0);
+            Assert.That(solver.ObjectY, Is.EqualTo(1.0).Within(0.001), "a one-pose push and back leaves the object where the hand rests");
+            // Measured from the grab's own pose, the same hold would leave it G × 4 mm: 12 mm below the hand after any motion.
+        }
+
+        /// <summary>What ends the settling of the first poses before they are all taken: a steady pose more than 5 mm from
+        /// their mean (a glitch of two or three poses, which the median of three passes), a gap (the hand may have moved
+        /// while unseen), and the settling base more than the lowering guard's slack below the grab's pose is no dip for the
+        /// guard to undo. Gain 3, band 8 mm: none of these hands pushes the band.</summary>
+        [Test]
+        public void TheFirstPosesSetWhereTheHandRestsOnlyFromPosesAtRest([Values("glitch", "gap", "below")] string what)
+        {
+            var profile = what == "below" ? NamedProfiles.Paper : Only(new MotionDeadband(), new WeightGain());
+            var solver = new WeightSolver(WeightModel.FromMass(0.01), profile, 0.5);
+            double t = 0, grab = what == "below" ? 1.0045 : 1.0;
+            solver.BeginHold(grab, grab, t);
+            void Pose(double hand) { t += 1 / 30.0; solver.Step(new HandSample(hand, true, true, t), 1 / 30.0); }
+            void Lost() { t += 1 / 30.0; solver.Step(new HandSample(double.NaN, false, false, double.NaN), 1 / 30.0); }
+            Pose(1.0);
+            Pose(1.0);
+            if (what == "glitch")
+            {
+                Pose(0.9935); // two poses 6.5 mm low: within the band, past 5 mm
+                Pose(0.9935);
+                for (int i = 0; i < 10; i++) Pose(1.0);
+                Assert.That(solver.State.Base, Is.EqualTo(1.0).Within(1e-9), "a glitch of two poses is not where the hand rests");
+            }
+            else if (what == "gap")
+            {
+                for (int i = 0; i < 2; i++) Lost();
+                for (int i = 0; i < 10; i++) Pose(1.004); // the hand 4 mm higher after the gap: within the band and the 5 mm
+                Assert.That(solver.State.Base, Is.EqualTo(1.0).Within(1e-9), "poses after a gap say nothing of where the hand rested");
+            }
+            else
+            {
+                // The grab's pose 4.5 mm above the first poses (within the solver's 5 mm), the hand then resting 2.5 mm lower:
+                // the settling base ends more than the guard's slack below the grab's pose.
+                for (int i = 0; i < 20; i++) Pose(0.9975);
+                Assert.That(solver.State.Base, Is.EqualTo(0.9975).Within(0.001), "the guard leaves the settled base where the hand rests");
+            }
         }
 
         [Test]

@@ -29,6 +29,10 @@ namespace Kosmos.PseudoHaptic
     /// moves neither, and an unlucky grab pose enters neither (its distance from the mean is not motion), so it never turns
     /// into a drift toward the mean; a slow lift of a few millimetres moves the mean, so it ends where the weight puts it;
     /// and nothing switches at a threshold.</item>
+    /// <item>The grab's pose is not where the hand rests (jitter alone puts it up to 5 mm away, and G times that would be
+    /// the object's offset once the hand moves): until the hand shows it moved, the hold's first <see cref="EarlyPoses"/>
+    /// steady poses move the lift's base and the band together to their mean (<see cref="SettleBase"/>). Once they all
+    /// showed a hand at rest, a push is motion or a glitch and the rules after motion take over at once.</item>
     /// </list>
     /// Measured (30 Hz poses over 90 Hz frames, 5 cm lift in 0.4 s): a one-pose glitch of 3 cm at rest, a 0.3 s loss with a
     /// 4 cm snap, a 3 cm heft each leave 1 g and 10 g within 0.1 mm of the clean path in every pipeline profile
@@ -126,7 +130,11 @@ namespace Kosmos.PseudoHaptic
                 // the object sat up to 17.1 mm from where that weight puts it: BecomingLightMidHoldTests). Farther from the
                 // grab's pose (after a lift, where that mean still lags) it starts closed at the hand, as at the end of a
                 // motion, and regrows.
-                if (Math.Abs(h - state.DeadbandAnchor) <= w) Reset(ref state, state.DeadbandGrabCount > 0 ? state.DeadbandGrabMean : h);
+                if (Math.Abs(h - state.DeadbandAnchor) <= w)
+                {
+                    Reset(ref state, state.DeadbandGrabCount > 0 ? state.DeadbandGrabMean : h);
+                    state.DeadbandSettle = NotSettled; // the lift stays measured from the hold's base
+                }
                 else state.DeadbandHalfWidth = 0;
             }
             double r = state.DeadbandReference, e = state.DeadbandHalfWidth;
@@ -144,7 +152,7 @@ namespace Kosmos.PseudoHaptic
             // (the band is open only where the gain is above 1, its width being taken from it).
             double perPose = CloseStep / constants.Gain;
             double spare = frame.AcrossGap ? 0 : perPose;
-            bool pushed = r < low || r > high;
+            bool pushed = r < low || r > high, settledPush = false;
             if (pushed)
             {
                 // The hand pushes the band: motion. The band closes by what the push goes beyond it, so sustained motion closes
@@ -158,11 +166,22 @@ namespace Kosmos.PseudoHaptic
                 // Until the hand has moved, a push jitter could make (up to half a width) drags the band as a plain backlash,
                 // closing nothing; a larger one closes it the more the larger it is (all of it from a whole width), and once
                 // the hand has shown it moved, as after any motion.
+                // Once the hold's first poses have all shown a hand at rest and set where it rests, a push is motion or a glitch,
+                // not jitter about an unlucky grab pose: the rule after motion takes over, whose reference goes back to where
+                // the hand rests (a plain backlash would keep a glitch's drag: G × up to half a width). It starts from where
+                // the push leaves the reference, as after any push, not from the rest rule's run alongside, which may lie a
+                // band width from it (the object jumped G times that under a wide band). Only while nothing has shown motion
+                // yet: a share of the way already taken (the steady hand's mean drifting with jitter) goes on as the grab's
+                // rule has it (taken all the way at the first push, jitter at rest from the grab moved a 10 g object 4.65 mm
+                // after its first second, not 1.17 mm).
+                settledPush = grab && state.DeadbandSettle == Settled && state.DeadbandMoved == 0;
+                if (settledPush) state.DeadbandMoved = 1;
                 if (grab) close *= Math.Max(Ramp(push, 0.5 * w, w), state.DeadbandMoved);
                 e = e > close ? e - close : 0;
                 r = r < low ? h - e : h + e;
+                if (settledPush) state.DeadbandRestMean = r;
                 // A push ends the rest: the next one starts from where the push leaves the reference.
-                if (!grab) state.DeadbandRestCount = 1;
+                if (!grab || settledPush) state.DeadbandRestCount = 1;
             }
             // At rest after a motion: the reference is the mean of the steady hand since the motion ended (and where the motion
             // left it), fading over RestPoses, so where a motion ends does not depend on the path it took there, and jitter
@@ -179,7 +198,7 @@ namespace Kosmos.PseudoHaptic
                     rest = rest < h - e ? h - e : h + e;
                     state.DeadbandRestCount = 1;
                 }
-                else if (frame.SteadyTaken)
+                else if (frame.SteadyTaken && !settledPush) // (a settled push starts the rule after motion where it leaves the reference)
                 {
                     rest = RestStep(ref state, rest, frame.SteadyHand, perPose, h - e, h + e);
                     if (state.DeadbandRestCount > GrabRestPoses) state.DeadbandRestCount = GrabRestPoses;
@@ -194,6 +213,10 @@ namespace Kosmos.PseudoHaptic
                 // dragged one; only a shake at the grab, out past the band and back past its other side, told them apart.
                 double a = state.DeadbandAnchor, mean = state.DeadbandGrabMean;
                 int k = state.DeadbandGrabCount;
+                // A steady pose farther than a glitch from the first poses' mean ends the settling before it is taken in: a glitch
+                // of two or three poses (which the median of three passes) must not become where the hand rests.
+                if (state.DeadbandSettle == Settling && frame.SteadyTaken && k > 0 && Math.Abs(frame.SteadyHand - state.DeadbandEarlyMean) > SettleGlitch)
+                    state.DeadbandSettle = NotSettled;
                 if (frame.SteadyTaken)
                 {
                     if (k < RestPoses) state.DeadbandGrabCount = ++k;
@@ -205,6 +228,16 @@ namespace Kosmos.PseudoHaptic
                 moved = Math.Max(moved, Ramp(Math.Abs(r - a), 0.5 * w, w));
                 if (k >= EarlyPoses) moved = Math.Max(moved, Ramp(Math.Abs(mean - state.DeadbandEarlyMean), 0.25 * w, 0.5 * w));
                 state.DeadbandMoved = moved;
+                if (state.DeadbandSettle == Settling)
+                {
+                    if (moved > 0 || r != a || frame.Bridged || state.Time - state.DeadbandGrabTime > SettleTime) state.DeadbandSettle = NotSettled;
+                    else if (frame.SteadyTaken)
+                    {
+                        SettleBase(ref state, ref r, k);
+                        frame.BaseMeasured = true;
+                        if (k >= EarlyPoses) state.DeadbandSettle = Settled;
+                    }
+                }
                 state.DeadbandGrabReference = r;
                 state.DeadbandRestMean = rest;
                 // The weight reads the backlash moved that share of the way to the rest rule's reference (both within the band):
@@ -232,6 +265,37 @@ namespace Kosmos.PseudoHaptic
             return r;
         }
 
+        /// <summary>
+        /// From a grab, while the hand has not shown it moved, each of the hold's first <see cref="EarlyPoses"/> steady poses
+        /// moves the lift's base, the band's anchor and its backlash reference to the mean of those poses: the lift of a light
+        /// object is measured from where the hand rests at the grab, not from the grab's own pose, which jitter alone puts up
+        /// to 5 mm from it. Measured from that pose, a heft or a glitch right after the grab (anything that shows motion, after
+        /// which the reference goes to where the hand rests) left the object G times that distance from where it rested
+        /// (10.8 mm at 5 g). Base and reference move together, so the object moves with them once, not G times.
+        /// The first such pose sets the base to the mean (the solver may already have moved it there from a glitched grab
+        /// pose, <c>WeightSolver.AnchorGlitch</c>; nothing else moves it before the first steady pose).
+        /// </summary>
+        static void SettleBase(ref HoldState state, ref double reference, int poses)
+        {
+            double mean = state.DeadbandEarlyMean, shift = mean - state.DeadbandAnchor;
+            state.DeadbandAnchor = mean;
+            reference += shift;
+            state.Base = poses == 1 ? mean : state.Base + shift;
+        }
+
+        /// <summary><see cref="HoldState.DeadbandSettle"/>: the first poses' mean is not (or no longer) where the lift is measured
+        /// from; it is becoming so; it is, all of them having shown a hand at rest.</summary>
+        internal const int NotSettled = 0, Settling = 1, Settled = 2;
+
+        /// <summary>How long after the grab its first poses may set where the lift is measured from, s: <see cref="EarlyPoses"/>
+        /// steady poses take 0.23 s at Quest's 30 Hz; poses that repeat (a tracker that freezes, taken again every
+        /// <see cref="SolverLimits.RepeatTime"/>) would stretch them into the hand's first motion.</summary>
+        internal const double SettleTime = 0.3;
+
+        /// <summary>How far a steady pose may lie from the mean of the hold's first poses while they still set where the lift is
+        /// measured from, m: more than Quest's jitter at rest (as the solver's own test of the grab's pose).</summary>
+        internal const double SettleGlitch = 0.005;
+
         /// <summary>How many steady poses from the grab make the hold's first mean, against which the hand's later mean tells
         /// a motion (0.2 s at 30 Hz, from the third pose).</summary>
         internal const int EarlyPoses = 6;
@@ -256,7 +320,8 @@ namespace Kosmos.PseudoHaptic
             state.DeadbandGrabReference = state.DeadbandGrabMean = state.DeadbandEarlyMean = state.DeadbandRestMean = handY;
             state.DeadbandGrabCount = 0;
             state.DeadbandMoved = 0;                           // the grab's pose is the reference until the hand first moves
-            state.DeadbandSteadyTime = state.Time;
+            state.DeadbandSettle = Settling;
+            state.DeadbandSteadyTime = state.DeadbandGrabTime = state.Time;
         }
     }
 }
