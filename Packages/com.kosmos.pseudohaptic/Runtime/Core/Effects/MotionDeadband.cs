@@ -112,8 +112,12 @@ namespace Kosmos.PseudoHaptic
                     // reciprocal instead of dividing (a division here cost a new-pose frame 2.5 ns).
                     double m = state.DeadbandGrabMean;
                     int n = state.DeadbandGrabCount;
-                    if (n < RestPoses) state.DeadbandGrabMean = m + FadeStep(m, frame.SteadyHand, state.DeadbandGrabCount = n + 1);
-                    else state.DeadbandGrabMean = m + (frame.SteadyHand - m) * InverseRestPoses;
+                    if (n < RestPoses)
+                    {
+                        state.DeadbandGrabCount = ++n;
+                        state.DeadbandGrabMean = m + FadeStep(m, frame.SteadyHand, n);
+                    }
+                    else state.DeadbandGrabMean = m + FadeStepByReciprocal(m, frame.SteadyHand, InverseRestPoses);
                 }
                 state.DeadbandReference = h;
                 state.DeadbandHalfWidth = double.NegativeInfinity;
@@ -307,6 +311,10 @@ namespace Kosmos.PseudoHaptic
         /// <summary>The step of a fading mean <paramref name="mean"/> taking in <paramref name="x"/> as its
         /// <paramref name="n"/>th value (or fading over n): (x − mean) / n.</summary>
         static double FadeStep(double mean, double x, int n) => (x - mean) / n;
+
+        /// <summary>The same step with 1/n given: (x − mean) × <paramref name="reciprocal"/> (a multiplication where a division
+        /// would run on every new pose).</summary>
+        static double FadeStepByReciprocal(double mean, double x, double reciprocal) => (x - mean) * reciprocal;
 
         /// <summary>0 at or below <paramref name="from"/>, 1 at or above <paramref name="to"/>, linear between.</summary>
         static double Ramp(double x, double from, double to)

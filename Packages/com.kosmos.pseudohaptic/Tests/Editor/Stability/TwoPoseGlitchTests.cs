@@ -31,6 +31,7 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
             double worst = 0;
             string worstCase = "";
             var worstByMass = new double[Masses.Length];
+            var profileNamed = NamedProfiles.Get(profile);
             for (int seed = 1; seed <= 200; seed++)
             {
                 var rng = new Random(seed);
@@ -46,7 +47,6 @@ namespace Kosmos.PseudoHaptic.Tests.Stability
                 path.Hold(2);
                 var clean = QuestLikeInput.Headset(new Random(seed * 7919), seed).Render(path);
                 var glitched = QuestLikeInput.Headset(new Random(seed * 7919), seed).Offset(at, poses / 30.0, -size).Render(path);
-                var profileNamed = NamedProfiles.Get(profile);
                 var a = Run.Replay(Run.Solver(mass, profileNamed), clean);
                 var b = Run.Replay(Run.Solver(mass, profileNamed), glitched);
                 Assert.That(Run.AllFinite(b), Is.True);
