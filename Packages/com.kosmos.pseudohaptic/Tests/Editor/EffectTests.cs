@@ -102,15 +102,22 @@ namespace Kosmos.PseudoHaptic.Tests
         }
 
         [Test]
-        public void TheFirstPosesAtRestSetWhereALightObjectsLiftIsMeasuredFrom()
+        public void TheFirstPosesAtRestSetWhereALightObjectsLiftIsMeasuredFrom([Values(false, true)] bool begunUntracked)
         {
             // Gain 3, band 8 mm. The grab's pose is 4 mm above where the hand then rests (jitter, not a glitch: within the
             // solver's 5 mm). The hold's first six steady poses move the base and the band to their mean: the object moves
-            // there with them (once, 4 mm: not G times it), and a lift is measured from where the hand rests.
+            // there with them (once, 4 mm: not G times it), and a lift is measured from where the hand rests. A hold begun
+            // untracked starts at its first pose, however long after (the first poses' 0.3 s count from there).
             var solver = new WeightSolver(WeightModel.FromMass(0.01), Only(new MotionDeadband(), new WeightGain()), 0.5);
             double t = 0;
-            solver.BeginHold(1.004, 1.004, t);
             double Pose(double hand) { t += 1 / 30.0; return solver.Step(new HandSample(hand, true, true, t), 1 / 30.0); }
+            if (begunUntracked)
+            {
+                solver.BeginHold(double.NaN, 1.004, double.NaN);
+                for (int i = 0; i < 30; i++) { t += 1 / 30.0; solver.Step(new HandSample(double.NaN, false, false, double.NaN), 1 / 30.0); }
+                Pose(1.004); // the hold's first pose: the grab
+            }
+            else solver.BeginHold(1.004, 1.004, t);
             for (int i = 0; i < 8; i++) Pose(1.0);
             Assert.That(solver.State.Base, Is.EqualTo(1.0).Within(1e-12), "the base is where the hand rests");
             Assert.That(solver.ObjectY, Is.EqualTo(1.0).Within(1e-12), "the object moved with it, 1 × the grab pose's error");
