@@ -277,7 +277,8 @@ namespace Kosmos.PseudoHaptic
         /// which the reference goes to where the hand rests) left the object G times that distance from where it rested
         /// (10.8 mm at 5 g). Base and reference move together, so the object moves with them once, not G times.
         /// The first such pose sets the base to the mean (the solver may already have moved it there from a glitched grab
-        /// pose, <c>WeightSolver.AnchorGlitch</c>; nothing else moves it before the first steady pose).
+        /// pose, <c>WeightSolver.AnchorGlitch</c>; no effect of the named profiles moves it before the first steady pose, and
+        /// a scene's own base effect that did would lose those two poses' change).
         /// </summary>
         static void SettleBase(ref HoldState state, ref double reference, int poses)
         {
